@@ -1,0 +1,293 @@
+// rtamp batch — seeded batches of episodes (exp/runner.hpp) and the summary
+// table of the paper's Table I (exp/summary.hpp); `--shard K/N` runs one
+// slice of the trial list, `--merge CSV...` joins slices (exp/merge.hpp).
+// Options and output: docs/cli.md and docs/experiments.md.
+#include <unistd.h>
+
+#include <algorithm>
+#include <chrono>
+#include <condition_variable>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <mutex>
+#include <thread>
+
+#include "command.hpp"
+#include "rtamp/exp/csv.hpp"
+#include "rtamp/exp/merge.hpp"
+#include "rtamp/exp/progress.hpp"
+#include "rtamp/exp/runner.hpp"
+#include "rtamp/exp/summary.hpp"
+#include "rtamp/exp/trials.hpp"
+#include "rtamp/util/error.hpp"
+#include "rtamp/world/scenario_io.hpp"
+
+namespace {
+
+using namespace rtamp;
+using Clock = std::chrono::steady_clock;
+
+struct BatchArgs {
+  std::string scenario;
+  std::vector<std::string> merge;
+  int trials = 30;
+  std::vector<std::string> changes;
+  std::vector<std::string> algos;
+  std::vector<std::string> bts;
+  std::uint64_t seed = 1;
+  std::string shard;
+  int jobs = 2;
+  std::string output;
+  bool json = false;
+  bool markdown = false;
+  std::string format = "text";
+  std::string group_by = "scenario,change,algorithm,bt";
+  double max_time = 900;
+  std::string cost = "euclid";
+  std::string log_dir;
+  bool scripted = false;
+  bool no_randomize = false;
+  bool quiet = false;
+  CLI::Option* change_opt = nullptr;
+  CLI::Option* algo_opt = nullptr;
+  CLI::Option* bt_opt = nullptr;
+  CLI::Option* output_opt = nullptr;
+};
+
+std::string seconds_text(double s) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.1f", s);
+  return buf;
+}
+
+void print_summary(const BatchArgs& a, const std::vector<exp::EpisodeRecord>& records) {
+  const exp::Summary s = exp::summarize(records, exp::parse_grouping(a.group_by));
+  std::string format = a.json ? "json" : a.markdown ? "markdown" : a.format;
+  if (format == "json") {
+    std::cout << exp::to_json(s).dump(2) << "\n";
+  } else if (format == "markdown") {
+    std::cout << exp::format_markdown(s);
+  } else if (format == "tsv") {
+    std::cout << exp::format_tsv(s);
+  } else {
+    std::cout << exp::format_text(s);
+  }
+  std::cout.flush();
+}
+
+// Replaces `path` atomically with the records in canonical order.
+void write_sorted(const std::string& path, std::vector<exp::EpisodeRecord> records) {
+  exp::sort_canonical(records);
+  const std::string tmp = path + ".tmp";
+  exp::write_csv_file(tmp, records);
+  std::error_code ec;
+  std::filesystem::rename(tmp, path, ec);
+  if (ec) throw Error("cannot replace '" + path + "': " + ec.message());
+}
+
+template <typename E>
+std::vector<E> parse_all(const std::vector<std::string>& names, E (*parse)(std::string_view)) {
+  std::vector<E> out;
+  for (const auto& n : names) out.push_back(parse(n));
+  return out;
+}
+
+int run_merge(const BatchArgs& a) {
+  if (!a.scenario.empty())
+    throw Error("give either a scenario to run or --merge CSV files, not both (scenario '" + a.scenario + "')");
+  auto records = exp::merge_files(a.merge);
+  // Explicit --algo / --bt / --change select rows.
+  auto keep = [&](const exp::EpisodeRecord& r) {
+    auto has = [](const std::vector<std::string>& v, const std::string& x) {
+      return std::find(v.begin(), v.end(), x) != v.end();
+    };
+    if (a.algo_opt->count() && !has(a.algos, r.algorithm)) return false;
+    if (a.bt_opt->count() && !has(a.bts, r.bt)) return false;
+    if (a.change_opt->count() && !has(a.changes, r.change)) return false;
+    return true;
+  };
+  std::erase_if(records, [&](const auto& r) { return !keep(r); });
+  if (!a.output.empty()) {
+    write_sorted(a.output, records);
+    std::cerr << "rtamp batch: merged " << a.merge.size() << " file(s), " << records.size() << " episodes into "
+              << a.output << "\n";
+  }
+  print_summary(a, records);
+  return 0;
+}
+
+int run_batch(const BatchArgs& a) {
+  if (a.scenario.empty()) throw Error("rtamp batch needs a scenario (or --merge CSV files)");
+  const world::Scenario scenario = world::load_scenario(a.scenario);
+  exp::Grid grid;
+  grid.algorithms = parse_all(a.algos, exp::parse_algorithm);
+  grid.changes = parse_all(a.changes, exp::parse_change);
+  grid.bt_variants = parse_all(a.bts, exp::parse_bt_variant);
+  grid.trials = a.trials;
+  grid.base_seed = a.seed;
+  auto trials = exp::make_trials(grid);
+  const std::size_t grid_size = trials.size();
+  if (!a.shard.empty()) trials = exp::select_shard(trials, exp::parse_shard(a.shard));
+  if (a.jobs < 1) throw Error("--jobs must be at least 1 (got " + std::to_string(a.jobs) + ")");
+
+  exp::BatchOptions opt;
+  opt.jobs = a.jobs;
+  opt.max_time = a.max_time;
+  opt.cost = a.cost;
+  opt.randomize_initial = !a.no_randomize;
+  opt.scripted_operator = a.scripted;
+  opt.log_dir = a.log_dir;
+
+  // Rows are appended as episodes finish (so a killed batch keeps what it
+  // did), then the file is rewritten in canonical order at the end.
+  std::ofstream csv;
+  if (!a.output.empty()) {
+    csv.open(a.output, std::ios::binary | std::ios::trunc);
+    if (!csv) throw Error("cannot write '" + a.output + "'");
+    exp::write_header(csv);
+    csv.flush();
+  }
+
+  const bool tty = !a.quiet && ::isatty(STDERR_FILENO);
+  std::cerr << "rtamp batch: " << scenario.name << ", " << trials.size() << " episode(s)";
+  if (!a.shard.empty()) std::cerr << " (shard " << a.shard << " of " << grid_size << ")";
+  std::cerr << " on " << a.jobs << " worker(s)\n";
+
+  const auto t0 = Clock::now();
+  std::mutex mutex;  // guards progress and stderr
+  exp::Progress progress;
+  progress.total = trials.size();
+  auto elapsed = [&] { return std::chrono::duration<double>(Clock::now() - t0).count(); };
+  auto redraw = [&] {  // caller holds the mutex
+    progress.elapsed_s = elapsed();
+    std::cerr << "\r" << exp::progress_bar(progress) << "\x1b[K" << std::flush;
+  };
+  bool finished = false;
+  std::condition_variable cv;
+  std::thread ticker;
+  if (tty) {
+    ticker = std::thread([&] {
+      std::unique_lock lock(mutex);
+      while (!finished) {
+        redraw();
+        cv.wait_for(lock, std::chrono::seconds(1));
+      }
+    });
+  }
+
+  std::vector<exp::EpisodeRecord> records;
+  try {
+    records = exp::run_batch(scenario, trials, opt, [&](const exp::Trial& t, const exp::EpisodeRecord& r) {
+      if (csv.is_open()) {
+        exp::write_record(csv, r);
+        csv.flush();
+      }
+      std::lock_guard lock(mutex);
+      ++progress.done;
+      if (!r.success) ++progress.failures;
+      if (tty) {
+        if (!r.success) {
+          std::cerr << "\r\x1b[K" << "failed: " << exp::describe_key(r) << " (seed " << t.seed << "): " << r.reason
+                    << "\n";
+        }
+        redraw();
+      } else if (!a.quiet) {
+        progress.elapsed_s = elapsed();
+        const double eta = exp::eta_seconds(progress);
+        std::cerr << "[" << progress.done << "/" << progress.total << "] " << r.change << " " << r.algorithm << " "
+                  << r.bt << " trial " << r.trial << ": " << (r.success ? "ok" : "FAILED") << " (" << r.reason
+                  << "), completion " << seconds_text(r.completion_s) << " s, " << r.replans << " replan(s), "
+                  << r.tree_changes << " tree change(s), " << seconds_text(r.wall_s) << " s wall; elapsed "
+                  << exp::format_duration(progress.elapsed_s) << ", ETA "
+                  << (eta < 0 ? std::string("?") : exp::format_duration(eta)) << ", failures " << progress.failures
+                  << "\n";
+      }
+    });
+  } catch (...) {
+    {
+      std::lock_guard lock(mutex);
+      finished = true;
+    }
+    cv.notify_all();
+    if (ticker.joinable()) ticker.join();
+    throw;
+  }
+  {
+    std::lock_guard lock(mutex);
+    finished = true;
+    if (tty) {
+      redraw();
+      std::cerr << "\n";
+    }
+  }
+  cv.notify_all();
+  if (ticker.joinable()) ticker.join();
+
+  if (csv.is_open()) {
+    csv.close();
+    write_sorted(a.output, records);
+  }
+  std::cerr << "rtamp batch: " << records.size() << " episode(s) in " << exp::format_duration(elapsed())
+            << ", " << progress.failures << " failed";
+  if (!a.output.empty()) std::cerr << "; wrote " << a.output;
+  std::cerr << "\n";
+  print_summary(a, records);
+  return progress.failures == 0 ? 0 : 1;
+}
+
+rtamp::cli::Registrar reg{
+    "batch",
+    "Run seeded episodes (algorithms x changes x BT variants x trials) and summarize them like the paper's Table I",
+    [](CLI::App& sub) -> rtamp::cli::Action {
+      auto a = std::make_shared<BatchArgs>();
+      a->changes = {"relocate", "remove", "add"};
+      a->algos = {"astar-exp", "astar", "dijkstra"};
+      a->bts = {"online-action"};
+      sub.add_option("scenario", a->scenario, "Built-in scenario name (3-block, 3-block-tray) or YAML file");
+      sub.add_option("--merge", a->merge, "Join these CSV files (slices of sharded runs) instead of running")
+          ->expected(1, -1);
+      sub.add_option("--trials,-n", a->trials, "Trials per cell (each with its own seed)")->capture_default_str();
+      a->change_opt = sub.add_option("--change", a->changes,
+                                     "Random change per episode: relocate, remove, add, none (repeatable; default: "
+                                     "relocate remove add)")
+                          ->check(CLI::IsMember({"relocate", "remove", "add", "none"}));
+      a->algo_opt = sub.add_option("--algo", a->algos,
+                                   "Search algorithm: astar-exp, astar, dijkstra (repeatable; default: all three)")
+                        ->check(CLI::IsMember({"astar-exp", "astar", "dijkstra"}));
+      a->bt_opt = sub.add_option("--bt", a->bts,
+                                 "BT variant: online-action, online-state, offline (repeatable; default: "
+                                 "online-action)")
+                      ->check(CLI::IsMember({"online-action", "online-state", "offline"}));
+      sub.add_option("--seed", a->seed, "Base seed; trial k's seed is derived from (k, base seed)")
+          ->capture_default_str();
+      sub.add_option("--shard", a->shard, "Run only the K-th of N interleaved slices of the trial list (K/N, 1-based)");
+      sub.add_option("--jobs,-j", a->jobs, "Episodes run in parallel (worker threads)")->capture_default_str();
+      a->output_opt = sub.add_option("--output,-o", a->output,
+                                     "Per-episode CSV (running: default results.csv; merging: none unless given)");
+      sub.add_flag("--json", a->json, "Print the summary as JSON (same as --format json)");
+      sub.add_flag("--markdown", a->markdown, "Print the summary as a Markdown table (same as --format markdown)");
+      sub.add_option("--format", a->format, "Summary format: text, markdown, json, tsv")
+          ->check(CLI::IsMember({"text", "markdown", "json", "tsv"}))
+          ->capture_default_str();
+      sub.add_option("--group-by", a->group_by,
+                     "Summary cells: comma-separated subset of scenario,change,algorithm,bt (others pooled)")
+          ->capture_default_str();
+      sub.add_option("--max-time", a->max_time, "Simulated seconds before an episode gives up")->capture_default_str();
+      sub.add_option("--cost", a->cost, "Planner motion-cost model: euclid, region, unit")
+          ->check(CLI::IsMember({"euclid", "region", "unit"}))
+          ->capture_default_str();
+      sub.add_option("--log-dir", a->log_dir, "Write each episode's JSON Lines log into this directory");
+      sub.add_flag("--scripted", a->scripted, "Also apply the scenario's own operator script in every episode");
+      sub.add_flag("--no-randomize", a->no_randomize, "Keep the scenario's initial object positions");
+      sub.add_flag("--quiet,-q", a->quiet, "No progress on standard error");
+      return [a]() -> int {
+        exp::parse_grouping(a->group_by);  // reject a bad --group-by before running anything
+        if (!a->merge.empty()) return run_merge(*a);
+        if (!a->output_opt->count()) a->output = "results.csv";
+        return run_batch(*a);
+      };
+    }};
+
+}  // namespace

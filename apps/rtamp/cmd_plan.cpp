@@ -1,0 +1,195 @@
+// rtamp plan — plan for a scenario's LTL task (plan/planner.hpp), optionally
+// replanning after scripted changes, and print the plans and search
+// statistics readably or as one JSON object (documented in docs/cli.md).
+#include <cstdio>
+#include <iomanip>
+#include <iostream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "command.hpp"
+#include "rtamp/plan/planner.hpp"
+#include "rtamp/util/error.hpp"
+#include "rtamp/world/scenario_io.hpp"
+
+namespace {
+
+using namespace rtamp;
+
+struct PlanArgs {
+  std::string scenario;
+  std::string algo = "astar-exp";
+  std::string graph = "partial";
+  std::string cost = "euclid";
+  std::vector<std::string> changes;
+  bool json = false;
+  std::size_t max_nodes = 20'000'000;
+  double time_limit = 60;
+};
+
+nlohmann::json steps_json(plan::Planner& p, const std::vector<plan::Step>& steps) {
+  const task::System& ts = p.system();
+  nlohmann::json out = nlohmann::json::array();
+  for (const auto& st : steps) {
+    nlohmann::json j;
+    j["action"] = ts.action_name(st.action);
+    if (!st.action.is_stay()) {
+      j["thing"] = ts.thing_name(st.action.thing);
+      j["from"] = ts.location_name(ts.location(st.from, st.action.thing));
+      j["to"] = ts.location_name(st.action.to);
+    }
+    j["cost"] = st.cost;
+    j["ba_from"] = st.ba_from;
+    j["ba_to"] = st.ba_to;
+    j["state_after"] = ts.to_string(st.to);
+    out.push_back(j);
+  }
+  return out;
+}
+
+nlohmann::json stats_json(const plan::SearchStats& s) {
+  return {{"generated", s.generated},
+          {"expanded", s.expanded},
+          {"successor_generations", s.successor_generations},
+          {"cycle_searches", s.cycle_searches},
+          {"graph_nodes", s.graph_nodes},
+          {"graph_edges", s.graph_edges},
+          {"reused_nodes", s.reused_nodes},
+          {"cache_hits", s.cache_hits},
+          {"cache_misses", s.cache_misses},
+          {"memory_bytes", s.memory_bytes},
+          {"bytes_per_node", s.bytes_per_node()},
+          {"construction_seconds", s.construction_seconds},
+          {"seconds", s.seconds},
+          {"hit_node_limit", s.hit_node_limit},
+          {"hit_time_limit", s.hit_time_limit}};
+}
+
+std::string fmt(double v, int prec = 4) {
+  std::ostringstream o;
+  o << std::fixed << std::setprecision(prec) << v;
+  return o.str();
+}
+
+void print_steps(plan::Planner& p, const std::vector<plan::Step>& steps, std::ostream& out) {
+  const task::System& ts = p.system();
+  int i = 1;
+  for (const auto& st : steps) {
+    std::string a = ts.action_name(st.action);
+    out << "    " << std::setw(3) << i++ << ". " << std::left << std::setw(28) << a << std::right << std::setw(9)
+        << fmt(st.cost) << "   " << ts.to_string(st.to) << "\n";
+  }
+}
+
+void print_result(plan::Planner& p, const plan::PlanResult& r, const std::string& title, std::ostream& out) {
+  out << title << "\n";
+  if (!r.found) {
+    out << "  no plan (" << plan::to_string(r.reason) << "): " << r.message << "\n";
+  } else {
+    out << "  cost " << fmt(r.plan.cost()) << " = prefix " << fmt(r.plan.prefix_cost) << " + cycle "
+        << fmt(r.plan.cycle_cost) << "\n";
+    out << "  prefix (" << r.plan.prefix.size() << " steps):\n";
+    print_steps(p, r.plan.prefix, out);
+    out << "  cycle (" << r.plan.cycle.size() << " steps, repeated forever):\n";
+    print_steps(p, r.plan.cycle, out);
+  }
+  const auto& s = r.stats;
+  out << "  statistics: " << s.generated << " nodes generated, " << s.expanded << " expanded ("
+      << s.successor_generations << " successor generations, " << s.cycle_searches << " cycle searches), "
+      << s.reused_nodes << " reused; graph " << s.graph_nodes << " nodes / " << s.graph_edges << " edges; "
+      << fmt(s.seconds * 1e3, 3) << " ms";
+  if (s.construction_seconds > 0) out << " (construction " << fmt(s.construction_seconds * 1e3, 3) << " ms)";
+  out << "; cache " << s.cache_hits << " hits / " << s.cache_misses << " misses; memory " << s.memory_bytes
+      << " B (" << fmt(s.bytes_per_node(), 1) << " B/node)";
+  if (s.hit_node_limit) out << "; HIT NODE LIMIT";
+  if (s.hit_time_limit) out << "; HIT TIME LIMIT";
+  out << "\n";
+}
+
+plan::Algorithm parse_algo(const std::string& s) {
+  if (s == "dijkstra") return plan::Algorithm::Dijkstra;
+  if (s == "astar") return plan::Algorithm::AStar;
+  return plan::Algorithm::AStarExperience;
+}
+
+rtamp::cli::Registrar reg{
+    "plan", "Plan for a scenario's LTL task (minimum motion cost lasso), optionally replanning after changes",
+    [](CLI::App& sub) -> rtamp::cli::Action {
+      auto a = std::make_shared<PlanArgs>();
+      sub.add_option("scenario", a->scenario, "Built-in scenario name (3-block, 3-block-tray) or YAML file")
+          ->required();
+      sub.add_option("--algo", a->algo, "Search: dijkstra, astar, astar-exp (A* with experience)")
+          ->check(CLI::IsMember({"dijkstra", "astar", "astar-exp"}))
+          ->capture_default_str();
+      sub.add_option("--graph", a->graph, "Product construction: partial (on the fly) or full (before searching)")
+          ->check(CLI::IsMember({"partial", "full"}))
+          ->capture_default_str();
+      sub.add_option("--cost", a->cost, "Motion-cost model: euclid, region, unit")
+          ->check(CLI::IsMember({"euclid", "region", "unit"}))
+          ->capture_default_str();
+      sub.add_option("--change", a->changes,
+                     "A change applied after the previous plan, followed by a replan (repeatable, in order): "
+                     "'move OBJ LOC', 'add OBJ CLASS LOC', 'remove OBJ', 'add-container NAME CLASS REGION [CAP]', "
+                     "'remove-container NAME', 'add-region NAME X Y [CAP]'");
+      sub.add_flag("--json", a->json, "Print one JSON object (fields: docs/cli.md)");
+      sub.add_option("--max-nodes", a->max_nodes, "Node limit of each search")->capture_default_str();
+      sub.add_option("--time-limit", a->time_limit, "Time limit of each search, seconds")->capture_default_str();
+      return [a]() -> int {
+        std::vector<plan::Change> changes;
+        for (const auto& c : a->changes) changes.push_back(plan::Change::parse(c));
+        plan::PlannerOptions opt;
+        opt.algorithm = parse_algo(a->algo);
+        opt.graph = a->graph == "full" ? plan::GraphConstruction::Full : plan::GraphConstruction::Partial;
+        opt.cost = a->cost;
+        opt.limits.max_nodes = a->max_nodes;
+        opt.limits.time_limit = a->time_limit;
+        plan::Planner planner(world::load_scenario(a->scenario), opt);
+
+        nlohmann::json doc;
+        doc["scenario"] = planner.scenario().name;
+        doc["task"] = planner.scenario().task;
+        doc["automaton_states"] = planner.automaton().num_states();
+        doc["algorithm"] = a->algo;
+        doc["graph"] = a->graph;
+        doc["cost_model"] = a->cost;
+        doc["plans"] = nlohmann::json::array();
+        if (!a->json) {
+          std::cout << "scenario " << planner.scenario().name << ": task " << planner.scenario().task << " ("
+                    << planner.automaton().num_states() << "-state Büchi automaton)\n"
+                    << "algorithm " << a->algo << ", graph " << a->graph << ", cost " << a->cost << "\n\n";
+        }
+        bool all_found = true;
+        for (std::size_t i = 0; i <= changes.size(); ++i) {
+          if (i > 0) planner.apply(changes[i - 1]);
+          const plan::PlanResult r = planner.plan();
+          all_found = all_found && r.found;
+          if (a->json) {
+            nlohmann::json j;
+            j["change"] = i == 0 ? nlohmann::json(nullptr) : nlohmann::json(changes[i - 1].to_string());
+            j["start"] = planner.system().to_string(planner.system().initial());
+            j["found"] = r.found;
+            j["reason"] = plan::to_string(r.reason);
+            j["message"] = r.message;
+            if (r.found) {
+              j["cost"] = r.plan.cost();
+              j["prefix_cost"] = r.plan.prefix_cost;
+              j["cycle_cost"] = r.plan.cycle_cost;
+              j["prefix"] = steps_json(planner, r.plan.prefix);
+              j["cycle"] = steps_json(planner, r.plan.cycle);
+            }
+            j["stats"] = stats_json(r.stats);
+            doc["plans"].push_back(j);
+          } else {
+            std::string title = i == 0 ? "plan 1 (initial)" : "plan " + std::to_string(i + 1) + " after '" +
+                                                                  changes[i - 1].to_string() + "'";
+            title += "\n  start: " + planner.system().to_string(planner.system().initial());
+            print_result(planner, r, title, std::cout);
+            std::cout << "\n";
+          }
+        }
+        if (a->json) std::cout << doc.dump(2) << "\n";
+        return all_found ? 0 : 1;
+      };
+    }};
+
+}  // namespace

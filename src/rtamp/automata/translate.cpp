@@ -1,0 +1,122 @@
+#include "rtamp/automata/translate.hpp"
+
+
+#include "rtamp/automata/degeneralize.hpp"
+#include "rtamp/automata/gba.hpp"
+#include "rtamp/automata/reduce.hpp"
+#include "rtamp/automata/shortcuts.hpp"
+#include "rtamp/automata/simulation.hpp"
+#include "rtamp/automata/vwaa.hpp"
+#include "rtamp/ltl/printer.hpp"
+#include "rtamp/ltl/simplify.hpp"
+
+namespace rtamp::automata {
+
+namespace {
+
+using ltl::Formula;
+using ltl::Op;
+
+void reduce_all(Automaton& a, bool saturate) {
+  remove_useless(a);
+  canonicalize_acceptance(a, saturate);
+  merge_parallel_edges(a);
+  for (int round = 0; round < 4; ++round) {
+    bool changed = reduce_direct_simulation(a);
+    canonicalize_acceptance(a, saturate);
+    changed |= reduce_cosimulation(a);
+    if (!changed) break;
+    canonicalize_acceptance(a, saturate);
+    merge_parallel_edges(a);
+  }
+}
+
+// TGBA -> final automaton (reductions, degeneralisation) as described in
+// docs/translation.md.
+Automaton pipeline(Automaton a, const TranslateOptions& opt) {
+  if (!opt.state_based) {
+    if (opt.reduce) {
+      // Saturated marks sometimes let simulation merge more, sometimes
+      // less (they break the symmetry of G F a & G F b): keep the smaller.
+      reduce_all(a, false);
+      Automaton sat = a;
+      reduce_all(sat, true);
+      if (sat.num_states() < a.num_states() ||
+          (sat.num_states() == a.num_states() && sat.num_edges() < a.num_edges()))
+        a = std::move(sat);
+    } else {
+      remove_useless(a);
+    }
+  } else if (!opt.reduce) {
+    remove_useless(a);
+    canonicalize_acceptance(a);
+    a = degeneralize(a);
+    remove_useless(a);
+  } else {
+    // Saturated marks help simulation but put marks on the edges entering a
+    // state, which costs accepting copies in degeneralisation: reduce the
+    // TGBA without saturation, degeneralise, reduce the BA.
+    reduce_all(a, false);
+    a = degeneralize(a);
+    reduce_all(a, false);
+  }
+  return a;
+}
+
+}  // namespace
+
+Automaton translate(const ltl::Formula& input, const TranslateOptions& opt) {
+  const Formula f = opt.simplify ? ltl::simplify(input) : input;
+  const Formula nnf = detail::to_nnf(f);
+  Automaton a;
+  bool done = false;
+  if (opt.shortcuts) done = detail::try_shortcut(nnf, opt.state_based, a);
+  if (!done) {
+    detail::Vwaa v = detail::build_vwaa(nnf);
+    using C = Construction;
+    if (opt.construction == C::MergedDestinations) {
+      a = pipeline(*detail::build_tgba_merged(v), opt);
+    } else {
+      Automaton go = detail::build_tgba(v);
+      const std::size_t go_states = go.num_states();
+      a = pipeline(std::move(go), opt);
+      if (opt.construction == C::Smallest && v.atoms.size() <= detail::kMaxMergedAtoms) {
+        // The merged-destination construction is smaller on some formulas
+        // (F r -> (!p U r): 3 states instead of 4), larger on others: keep
+        // the smaller result. It is abandoned when it grows well beyond the
+        // Gastin–Oddoux automaton (it is a partial subset construction).
+        if (auto merged = detail::build_tgba_merged(v, 2 * go_states + 8)) {
+          Automaton m = pipeline(std::move(*merged), opt);
+          if (m.num_states() < a.num_states() ||
+              (m.num_states() == a.num_states() && m.num_edges() < a.num_edges()))
+            a = std::move(m);
+        }
+      }
+    }
+  }
+  // Atoms: every atom of the input formula, sorted (some may have been
+  // simplified away; they stay so that letters mean the same to every caller).
+  const std::vector<std::string> atoms = detail::atoms_of(input);
+  if (a.atoms != atoms) {
+    // Remap letters: the automaton's atoms are a subset of `atoms`, both sorted.
+    std::vector<std::uint32_t> map(a.atoms.size());
+    for (std::size_t i = 0, j = 0; i < a.atoms.size(); ++i) {
+      while (atoms[j] != a.atoms[i]) ++j;
+      map[i] = static_cast<std::uint32_t>(j);
+    }
+    auto remap = [&](Letter l) {
+      Letter r = 0;
+      for (std::size_t i = 0; i < map.size(); ++i)
+        if ((l >> i) & 1u) r |= Letter{1} << map[i];
+      return r;
+    };
+    for (auto& out : a.edges)
+      for (Edge& e : out) e.guard = Cube{remap(e.guard.pos), remap(e.guard.neg)};
+    a.atoms = atoms;
+  }
+  if (a.state_based) a.num_sets = 1;
+  a.name = ltl::to_string(input);
+  return a;
+}
+
+}  // namespace rtamp::automata

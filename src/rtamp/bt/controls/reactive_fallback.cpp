@@ -1,0 +1,18 @@
+#include "rtamp/bt/controls/reactive_fallback.hpp"
+
+namespace rtamp::bt {
+
+Status ReactiveFallback::on_tick() {
+  const std::size_t n = children_.size();
+  for (std::size_t i = 0; i < n; ++i) {
+    const Status s = children_[i]->tick();
+    note_ticked(i);
+    if (s != Status::Failure) {
+      reset_from(i + 1);
+      return s;
+    }
+  }
+  return Status::Failure;
+}
+
+}  // namespace rtamp::bt

@@ -1,0 +1,128 @@
+#include "rtamp/exp/runner.hpp"
+
+#include <algorithm>
+#include <atomic>
+#include <exception>
+#include <filesystem>
+#include <mutex>
+#include <thread>
+
+#include "rtamp/util/error.hpp"
+
+namespace rtamp::exp {
+
+exec::EpisodeOptions episode_options(const Trial& t, const BatchOptions& o) {
+  exec::EpisodeOptions e;
+  switch (t.algorithm) {
+    case Algorithm::AStarExperience: e.algorithm = plan::Algorithm::AStarExperience; break;
+    case Algorithm::AStar: e.algorithm = plan::Algorithm::AStar; break;
+    case Algorithm::Dijkstra: e.algorithm = plan::Algorithm::Dijkstra; break;
+  }
+  // The paper's three BT variants: online reconfiguration with action or
+  // state conditions, and offline reconstruction with action conditions.
+  switch (t.bt) {
+    case BtVariant::OnlineAction:
+      e.conditions = exec::ConditionMode::Action;
+      e.reconfiguration = exec::Reconfiguration::Online;
+      break;
+    case BtVariant::OnlineState:
+      e.conditions = exec::ConditionMode::State;
+      e.reconfiguration = exec::Reconfiguration::Online;
+      break;
+    case BtVariant::Offline:
+      e.conditions = exec::ConditionMode::Action;
+      e.reconfiguration = exec::Reconfiguration::Offline;
+      break;
+  }
+  switch (t.change) {
+    case Change::Relocate: e.random_change = world::Intervention::Kind::Relocate; break;
+    case Change::Add: e.random_change = world::Intervention::Kind::Add; break;
+    case Change::Remove: e.random_change = world::Intervention::Kind::Remove; break;
+    case Change::None: e.random_change.reset(); break;
+  }
+  e.cost = o.cost;
+  e.seed = t.seed;
+  e.max_time = o.max_time;
+  e.randomize_initial = o.randomize_initial;
+  e.scripted_operator = o.scripted_operator;
+  e.change_window_begin = o.change_window_begin;
+  e.change_window_end = o.change_window_end;
+  if (!o.log_dir.empty()) e.log_path = (std::filesystem::path(o.log_dir) / log_file_name(t)).string();
+  return e;
+}
+
+std::string log_file_name(const Trial& t) {
+  return std::string(to_string(t.change)) + "-" + to_string(t.algorithm) + "-" + to_string(t.bt) + "-" +
+         std::to_string(t.index) + ".jsonl";
+}
+
+EpisodeRecord make_record(const std::string& scenario, const Trial& t, const exec::EpisodeMetrics& m) {
+  EpisodeRecord r;
+  r.scenario = scenario;
+  r.algorithm = to_string(t.algorithm);
+  r.bt = to_string(t.bt);
+  r.change = to_string(t.change);
+  r.trial = t.index;
+  r.seed = t.seed;
+  r.success = m.success;
+  r.reason = m.reason;
+  r.first_plan_s = m.first_plan_seconds;
+  r.replan_s = m.replan_seconds;
+  r.replans = m.replans;
+  r.tree_changes = m.tree_changes;
+  r.completion_s = m.completion_time;
+  r.motion_cost = m.motion_cost;
+  r.interventions = m.interventions;
+  r.wall_s = m.wall_seconds;
+  r.rtf = m.real_time_factor;
+  return r;
+}
+
+std::vector<EpisodeRecord> run_batch(const world::Scenario& scenario, const std::vector<Trial>& trials,
+                                     const BatchOptions& options, const EpisodeDone& on_done) {
+  if (options.jobs < 1) throw Error("--jobs must be at least 1");
+  if (!options.log_dir.empty()) {
+    std::error_code ec;
+    std::filesystem::create_directories(options.log_dir, ec);
+    if (ec) throw Error("cannot create the log directory '" + options.log_dir + "': " + ec.message());
+  }
+  std::vector<EpisodeRecord> out(trials.size());
+  std::atomic<std::size_t> next{0};
+  std::mutex done_mutex;
+  std::exception_ptr callback_error;
+  auto worker = [&] {
+    for (;;) {
+      const std::size_t i = next.fetch_add(1);
+      if (i >= trials.size()) return;
+      const Trial& t = trials[i];
+      EpisodeRecord r;
+      try {
+        r = make_record(scenario.name, t, exec::run_episode(scenario, episode_options(t, options)));
+      } catch (const std::exception& e) {
+        exec::EpisodeMetrics m;
+        m.reason = std::string("error: ") + e.what();
+        r = make_record(scenario.name, t, m);
+      }
+      std::lock_guard lock(done_mutex);
+      out[i] = r;
+      if (on_done && !callback_error) {
+        try {
+          on_done(t, out[i]);
+        } catch (...) {
+          // Stop handing out work; rethrown below on the calling thread.
+          callback_error = std::current_exception();
+          next.store(trials.size());
+        }
+      }
+    }
+  };
+  const int n = std::max(1, std::min<int>(options.jobs, static_cast<int>(std::max<std::size_t>(trials.size(), 1))));
+  std::vector<std::thread> pool;
+  for (int k = 1; k < n; ++k) pool.emplace_back(worker);
+  worker();
+  for (auto& th : pool) th.join();
+  if (callback_error) std::rethrow_exception(callback_error);
+  return out;
+}
+
+}  // namespace rtamp::exp

@@ -1,0 +1,121 @@
+#include "rtamp/exp/trials.hpp"
+
+#include <algorithm>
+#include <charconv>
+
+#include "rtamp/util/error.hpp"
+
+namespace rtamp::exp {
+
+namespace {
+
+constexpr std::string_view kAlgorithms[] = {"astar-exp", "astar", "dijkstra"};
+constexpr std::string_view kChanges[] = {"relocate", "remove", "add", "none"};
+constexpr std::string_view kBtVariants[] = {"online-action", "online-state", "offline"};
+
+template <std::size_t N>
+int rank_in(const std::string_view (&names)[N], std::string_view s) {
+  for (std::size_t i = 0; i < N; ++i)
+    if (names[i] == s) return static_cast<int>(i);
+  return static_cast<int>(N);
+}
+
+template <std::size_t N>
+std::string joined(const std::string_view (&names)[N]) {
+  std::string out;
+  for (std::size_t i = 0; i < N; ++i) {
+    if (i) out += ", ";
+    out += names[i];
+  }
+  return out;
+}
+
+template <typename E, std::size_t N>
+E parse_in(const std::string_view (&names)[N], std::string_view s, const char* what) {
+  const int r = rank_in(names, s);
+  if (r == static_cast<int>(N))
+    throw Error("unknown " + std::string(what) + " '" + std::string(s) + "' (expected one of: " + joined(names) + ")");
+  return static_cast<E>(r);
+}
+
+std::uint64_t splitmix64(std::uint64_t x) {
+  x += 0x9E3779B97F4A7C15ull;
+  x = (x ^ (x >> 30)) * 0xBF58476D1CE4E5B9ull;
+  x = (x ^ (x >> 27)) * 0x94D049BB133111EBull;
+  return x ^ (x >> 31);
+}
+
+template <typename T>
+std::vector<T> unique_kept(const std::vector<T>& v) {
+  std::vector<T> out;
+  for (const T& x : v)
+    if (std::find(out.begin(), out.end(), x) == out.end()) out.push_back(x);
+  return out;
+}
+
+int parse_int(std::string_view s, std::string_view whole) {
+  int v = 0;
+  const auto [p, ec] = std::from_chars(s.data(), s.data() + s.size(), v);
+  if (s.empty() || ec != std::errc() || p != s.data() + s.size())
+    throw Error("bad shard '" + std::string(whole) + "' (expected K/N with 1 <= K <= N, e.g. 2/4)");
+  return v;
+}
+
+}  // namespace
+
+const char* to_string(Algorithm a) { return kAlgorithms[static_cast<int>(a)].data(); }
+const char* to_string(Change c) { return kChanges[static_cast<int>(c)].data(); }
+const char* to_string(BtVariant v) { return kBtVariants[static_cast<int>(v)].data(); }
+
+Algorithm parse_algorithm(std::string_view s) { return parse_in<Algorithm>(kAlgorithms, s, "algorithm"); }
+Change parse_change(std::string_view s) { return parse_in<Change>(kChanges, s, "change kind"); }
+BtVariant parse_bt_variant(std::string_view s) { return parse_in<BtVariant>(kBtVariants, s, "BT variant"); }
+
+int algorithm_rank(std::string_view name) { return rank_in(kAlgorithms, name); }
+int change_rank(std::string_view name) { return rank_in(kChanges, name); }
+int bt_rank(std::string_view name) { return rank_in(kBtVariants, name); }
+
+std::uint64_t trial_seed(int index, std::uint64_t base) {
+  // Two rounds so that neighbouring (index, base) pairs land far apart and
+  // (index, base) != (base, index) in general.
+  return splitmix64(splitmix64(base) ^ (static_cast<std::uint64_t>(static_cast<std::uint32_t>(index)) *
+                                        0xD6E8FEB86659FD93ull));
+}
+
+std::vector<Trial> make_trials(const Grid& grid) {
+  if (grid.trials < 1) throw Error("--trials must be at least 1 (got " + std::to_string(grid.trials) + ")");
+  const auto algos = unique_kept(grid.algorithms);
+  const auto changes = unique_kept(grid.changes);
+  const auto bts = unique_kept(grid.bt_variants);
+  if (algos.empty()) throw Error("no algorithm selected");
+  if (changes.empty()) throw Error("no change kind selected");
+  if (bts.empty()) throw Error("no BT variant selected");
+  std::vector<Trial> out;
+  out.reserve(static_cast<std::size_t>(grid.trials) * algos.size() * changes.size() * bts.size());
+  for (int t = 1; t <= grid.trials; ++t) {
+    const std::uint64_t seed = trial_seed(t, grid.base_seed);
+    for (Change c : changes)
+      for (Algorithm a : algos)
+        for (BtVariant b : bts) out.push_back(Trial{a, c, b, t, seed});
+  }
+  return out;
+}
+
+Shard parse_shard(std::string_view text) {
+  const auto slash = text.find('/');
+  if (slash == std::string_view::npos)
+    throw Error("bad shard '" + std::string(text) + "' (expected K/N with 1 <= K <= N, e.g. 2/4)");
+  Shard s{parse_int(text.substr(0, slash), text), parse_int(text.substr(slash + 1), text)};
+  if (s.n < 1 || s.k < 1 || s.k > s.n)
+    throw Error("bad shard '" + std::string(text) + "' (expected K/N with 1 <= K <= N, e.g. 2/4)");
+  return s;
+}
+
+std::vector<Trial> select_shard(const std::vector<Trial>& trials, Shard shard) {
+  std::vector<Trial> out;
+  for (std::size_t i = static_cast<std::size_t>(shard.k - 1); i < trials.size(); i += static_cast<std::size_t>(shard.n))
+    out.push_back(trials[i]);
+  return out;
+}
+
+}  // namespace rtamp::exp

@@ -1,0 +1,198 @@
+#include "rtamp/plan/heuristic.hpp"
+
+#include <algorithm>
+
+namespace rtamp::plan {
+
+using Kind = world::PropExpr::Kind;
+using Cmp = world::PropExpr::Cmp;
+
+GuardHeuristic::GuardHeuristic(const ProductGraph& g)
+    : ts_(&g.system()), lab_(&g.labeling()), ba_(&g.automaton()), model_(&g.model()) {
+  const std::uint32_t n = ba_->num_states();
+  accepting_.resize(n);
+  exits_.resize(n);
+  useful_.resize(n);
+  for (std::uint32_t q = 0; q < n; ++q) {
+    accepting_[q] = ba_->is_accepting_state(q);
+    useful_[q] = g.useful(q);
+  }
+  for (std::uint32_t q = 0; q < n; ++q)
+    for (const auto& e : ba_->edges[q])
+      if (e.dst != q && useful_[e.dst] && !e.guard.is_false()) exits_[q].push_back(e.guard);
+  scratch_.resize(64);  // per recursion depth; each grows on first use
+  points_.resize(64);
+  nearest_.assign(ts_->num_regions(), kInf);
+  for (unsigned a = 0; a < ts_->num_regions(); ++a)
+    for (unsigned b = 0; b < ts_->num_regions(); ++b)
+      if (a != b) nearest_[a] = std::min(nearest_[a], distance(ts_->region_center(a), ts_->region_center(b)));
+}
+
+double GuardHeuristic::evaluate(const task::State& s, std::uint32_t q) {
+  if (!useful_[q]) return kInf;
+  if (accepting_[q]) return 0;
+  hand_ = ts_->hand_point(s);
+  double best = kInf;
+  for (const auto& cube : exits_[q]) {
+    double lb = 0;
+    for (unsigned i = 0; i < lab_->num_atoms() && lb < best; ++i) {
+      const automata::Letter bit = automata::Letter{1} << i;
+      if (cube.pos & bit) lb = std::max(lb, literal_bound(s, lab_->root(i), true));
+      if (cube.neg & bit) lb = std::max(lb, literal_bound(s, lab_->root(i), false));
+    }
+    best = std::min(best, lb);
+    if (best == 0) break;
+  }
+  return best;
+}
+
+double GuardHeuristic::bound_in(const task::State& s, unsigned thing, int loc) {
+  MotionQuery q;
+  q.thing = ts_->thing_uid(thing);
+  q.container = ts_->is_container(thing);
+  q.hand = hand_;
+  q.from = ts_->thing_point(s, thing);
+  const bool anywhere = ts_->is_container_location(static_cast<unsigned>(loc));
+  if (!anywhere) q.to = ts_->region_center(static_cast<unsigned>(loc));
+  return model_->lower_bound(q, anywhere);
+}
+
+double GuardHeuristic::bound_out(const task::State& s, unsigned thing) {
+  MotionQuery q;
+  q.thing = ts_->thing_uid(thing);
+  q.container = ts_->is_container(thing);
+  q.hand = hand_;
+  q.from = ts_->thing_point(s, thing);
+  return model_->lower_bound(q, true);
+}
+
+double GuardHeuristic::transport(std::size_t m, int loc, bool into) {
+  const auto& pts = points_[depth_];
+  if (m == 0) return 0;
+  if (pts.size() < m) return kInf;
+  TransportQuery t;
+  t.hand = hand_;
+  t.from = pts.data();
+  t.n = pts.size();
+  t.m = m;
+  t.to_known = into && !ts_->is_container_location(static_cast<unsigned>(loc));
+  if (t.to_known) {
+    t.to = ts_->region_center(static_cast<unsigned>(loc));
+    t.nearest = nearest_[static_cast<unsigned>(loc)];
+  }
+  t.one_at_a_time = ts_->num_containers() == 0;
+  t.scratch = &scratch_[depth_];
+  return model_->transport_bound(t);
+}
+
+double GuardHeuristic::literal_bound(const task::State& s, std::uint32_t id, bool want) {
+  const auto& n = lab_->nodes()[id];
+  if (lab_->eval(id, s) == want) return 0;
+  // From here on the node does not have the wanted value in s.
+  switch (n.kind) {
+    case Kind::True:
+    case Kind::False:
+      return kInf;
+    case Kind::In: {
+      if (n.thing < 0 || n.loc < 0) return kInf;  // never true; (never false is caught above)
+      const auto t = static_cast<unsigned>(n.thing);
+      // Containers only stand in regions.
+      if (want && ts_->is_container(t) && ts_->is_container_location(static_cast<unsigned>(n.loc))) return kInf;
+      return want ? bound_in(s, t, n.loc) : bound_out(s, t);
+    }
+    case Kind::All:
+    case Kind::Any:
+    case Kind::Count: {
+      if (n.cls < 0 || n.loc < 0) return kInf;  // the count is always 0 and does not have the wanted value
+      const auto& members = lab_->class_things(n.cls);
+      const int total = static_cast<int>(members.size());
+      const int c = lab_->count(s, n.cls, n.loc);
+      // Target counts c2 in [0, total] for which the atom has the wanted value.
+      auto value_at = [&](int c2) -> bool {
+        switch (n.kind) {
+          case Kind::All: return c2 == total;
+          case Kind::Any: return c2 > 0;
+          default: break;
+        }
+        switch (n.cmp) {
+          case Cmp::Lt: return c2 < n.count;
+          case Cmp::Le: return c2 <= n.count;
+          case Cmp::Eq: return c2 == n.count;
+          case Cmp::Ne: return c2 != n.count;
+          case Cmp::Ge: return c2 >= n.count;
+          case Cmp::Gt: return c2 > n.count;
+        }
+        return false;
+      };
+      int up = -1, down = -1;
+      for (int c2 = c + 1; c2 <= total; ++c2)
+        if (value_at(c2) == want) {
+          up = c2 - c;
+          break;
+        }
+      for (int c2 = c - 1; c2 >= 0; --c2)
+        if (value_at(c2) == want) {
+          down = c - c2;
+          break;
+        }
+      if (depth_ >= scratch_.size()) return 0;  // absurdly deep: give up the bound (still admissible)
+      auto& pts = points_[depth_];
+      double best = kInf;
+      const auto loc = static_cast<std::uint32_t>(n.loc);
+      const bool loc_is_container = ts_->is_container_location(loc);
+      if (up > 0) {
+        pts.clear();
+        for (unsigned t : members)
+          if (ts_->location(s, t) != loc && !(ts_->is_container(t) && loc_is_container)) pts.push_back(ts_->thing_point(s, t));
+        best = std::min(best, transport(static_cast<std::size_t>(up), n.loc, true));
+      }
+      if (down > 0) {
+        pts.clear();
+        for (unsigned t : members)
+          if (ts_->location(s, t) == loc) pts.push_back(ts_->thing_point(s, t));
+        best = std::min(best, transport(static_cast<std::size_t>(down), n.loc, false));
+      }
+      return best;
+    }
+    case Kind::Not:
+      return literal_bound(s, n.children[0], !want);
+    case Kind::And:
+    case Kind::Or: {
+      // want true of And / want false of Or: every child must have the value -> max.
+      const bool all = (n.kind == Kind::And) == want;
+      ++depth_;
+      double r = all ? 0.0 : kInf;
+      for (auto ch : n.children) {
+        const double b = literal_bound(s, ch, want);
+        r = all ? std::max(r, b) : std::min(r, b);
+      }
+      --depth_;
+      return r;
+    }
+  }
+  return 0;
+}
+
+double state_distance_bound(const task::System& ts, const MotionCostModel& model, const task::State& s,
+                            const task::State& target) {
+  double best = 0;
+  const world::Vec3 hand = ts.hand_point(s);
+  for (unsigned t = 0; t < ts.num_things(); ++t) {
+    // Canonical states sort interchangeable objects by location, so a member
+    // may reach its target as another member: no per-member bound for them.
+    if (ts.group_of(t) >= 0) continue;
+    const std::uint32_t want = ts.location(target, t);
+    if (ts.location(s, t) == want) continue;
+    MotionQuery q;
+    q.thing = ts.thing_uid(t);
+    q.container = ts.is_container(t);
+    q.hand = hand;
+    q.from = ts.thing_point(s, t);
+    const bool anywhere = ts.is_container_location(want);
+    if (!anywhere) q.to = ts.region_center(want);
+    best = std::max(best, model.lower_bound(q, anywhere));
+  }
+  return best;
+}
+
+}  // namespace rtamp::plan

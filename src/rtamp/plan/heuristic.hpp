@@ -1,0 +1,110 @@
+// Heuristics for the product search, separate from the search algorithm
+// (Fast Downward style: A* = best-first search + a heuristic; Dijkstra = the
+// same search with ZeroHeuristic).
+//
+// GuardHeuristic, h(s, q), a lower bound on the cost from (s, q) to an
+// accepting product node:
+//   0 if q is accepting; otherwise every path to acceptance must leave q along
+//   some BA edge q -> q' (q' != q, q' useful) whose guard holds in the label of
+//   a TS state on the way, so
+//   h(s, q) = min over those edges of LB(s, guard), and
+//   LB(s, cube) = max over the cube's literals of LB(s, literal).
+// LB(s, proposition wanted true/false) walks the compiled PropExpr: And takes
+// the max (every conjunct must hold), Or the min, Not flips the wanted value;
+// an atom that already has the wanted value costs 0; otherwise the things that
+// must change location are known (`o in L`: o; `all C in L`: every C not in L;
+// `any`: one of them; `count`: the k cheapest), and each contributes the cost
+// model's lower_bound for "the hand reaches the thing, which then reaches L"
+// (motion_cost.hpp); several things that must all (or k of them) arrive
+// combine by the model's transport_bound: at least the k-th smallest single
+// bound, and for systems without containers (every move carries one thing)
+// sums of carried distances and return trips (motion_cost.cpp, docs/planning.md).
+// Unsatisfiable literals give +inf (the node is pruned).
+// Why not "BA distance to acceptance x cheapest action": stay costs 0 and can
+// advance the BA, so that product is 0; the guard bound is never weaker.
+// Admissible by the arguments above; consistent when lower_bound is (the
+// search re-opens nodes anyway, so admissibility is all optimality needs).
+//
+// ExperienceHeuristic = max(GuardHeuristic, the graph's learned bounds).
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "rtamp/plan/product_graph.hpp"
+
+namespace rtamp::plan {
+
+class Heuristic {
+ public:
+  virtual ~Heuristic() = default;
+  virtual std::string name() const = 0;
+  // Lower bound on the cost of the best lasso continuing from node n.
+  virtual double estimate(const ProductGraph& g, NodeId n) = 0;
+};
+
+class ZeroHeuristic final : public Heuristic {
+ public:
+  std::string name() const override { return "zero"; }
+  double estimate(const ProductGraph&, NodeId) override { return 0; }
+};
+
+class GuardHeuristic : public Heuristic {
+ public:
+  explicit GuardHeuristic(const ProductGraph& g);
+  std::string name() const override { return "guard"; }
+  double estimate(const ProductGraph& g, NodeId n) override { return evaluate(g.state(n), g.ba_state(n)); }
+  double evaluate(const task::State& s, std::uint32_t q);
+  // LB(s, proposition node wanted `want`) — exposed for tests.
+  double literal_bound(const task::State& s, std::uint32_t node, bool want);
+
+ private:
+  double bound_in(const task::State& s, unsigned thing, int loc);  // thing must end up directly in loc
+  double bound_out(const task::State& s, unsigned thing);         // thing must leave its location
+  // Bound for m of the candidate things (current points in points_[depth_]) to be moved into
+  // `loc` (into = true) or out of their location (into = false).
+  double transport(std::size_t m, int loc, bool into);
+
+  const task::System* ts_;
+  const task::Labeling* lab_;
+  const automata::Automaton* ba_;
+  const MotionCostModel* model_;
+  std::vector<bool> accepting_;
+  std::vector<std::vector<automata::Cube>> exits_;  // per BA state
+  std::vector<bool> useful_;
+  std::vector<std::vector<double>> scratch_;  // per recursion depth
+  std::vector<std::vector<world::Vec3>> points_;  // per recursion depth
+  std::vector<double> nearest_;  // per region: distance to the nearest other region centre
+  unsigned depth_ = 0;
+  world::Vec3 hand_{};
+};
+
+class ExperienceHeuristic final : public Heuristic {
+ public:
+  explicit ExperienceHeuristic(const ProductGraph& g) : guard_(g) {}
+  std::string name() const override { return "guard+experience"; }
+  // The guard bound is cached per node in the graph (it does not depend on
+  // the start), so replans on the same graph never recompute it.
+  double estimate(const ProductGraph& g, NodeId n) override {
+    double h = g.cached_h(n);
+    if (h < 0) {
+      h = guard_.estimate(g, n);
+      const_cast<ProductGraph&>(g).cache_h(n, h);
+    }
+    const double l = g.learned(n);
+    return h > l ? h : l;
+  }
+
+ private:
+  GuardHeuristic guard_;
+};
+
+// Lower bound on the cost of going from state s to exactly the state `target`
+// (for the cycle search back to an accepting node): the max over things whose
+// location differs of the model's lower_bound (thing -> its target location).
+// Interchangeable objects (task::System::set_symmetry) are skipped: in
+// canonical states a member's target may be reached by a twin.
+double state_distance_bound(const task::System& ts, const MotionCostModel& model, const task::State& s,
+                            const task::State& target);
+
+}  // namespace rtamp::plan

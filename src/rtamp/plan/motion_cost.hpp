@@ -1,0 +1,149 @@
+// Motion-cost models: the edge weight w of the paper's Section III.B (the
+// "skill library" the planner asks for the cost of an action). The search
+// calls a model per product edge; the robot layer implements an inverse-
+// kinematics model ("ik") against this same interface.
+//
+// What a cost may depend on is exactly a MotionQuery: the thing moved (its
+// stable id, class and whether it is a container), the hand's point before
+// the action, the thing's point, and the destination's point (points are
+// defined in task/transition_system.hpp: centres of locations; the hand starts
+// at the robot's home point, base + (0, 0, 0.5 m)). The experience cache
+// (experience.hpp) keys on the query, masked by depends(), so a model must not
+// read anything else. `stay` always costs 0 and is never asked.
+//
+// Built-in models, for move(o, l) with the hand at point h, o at point p and
+// l at point t (Euclidean norms |.|, metres):
+//   euclid : |h - p| + |p - t|   (the hand travels to o, then carries it to l)
+//   region : |p - t|             (centre to centre, hand ignored; the usual
+//                                  edge weight of LTL planners)
+//   unit   : 1
+// Example (euclid): hand at home (0, 0, 0.5), o in r1 centred at (0.4, 0, 0),
+// l = r2 centred at (0.4, 0.5, 0): cost = sqrt(0.16 + 0.25) + 0.5 = 1.1403 m.
+//
+// transport_bound(t) bounds from below the cost of any action sequence after
+// which at least t.m of the things at points t.from[0..n) have each been put
+// at the destination by a move of their own (the heuristics use it for
+// "all/any/count C in L"). The default is the m-th smallest single
+// lower_bound, valid for every model; the built-in models override it with
+// sharper bounds that hold when every move carries exactly one thing
+// (t.one_at_a_time: the system has no containers) — see docs/planning.md.
+//
+// lower_bound(q) must be a lower bound on the total cost of ANY sequence of
+// actions that starts with the hand at q.hand, picks up the thing that is at
+// q.from (the thing itself or a container holding it) and finally brings it
+// to q.to (q.to may be "anywhere": kAnywhere). The A* heuristics combine these
+// per-thing bounds with max/min only, so they stay admissible and consistent
+// as long as lower_bound is consistent (h(q) <= c(a) + h(q') for every action
+// a); returning 0 is always correct.
+#pragma once
+
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "rtamp/task/transition_system.hpp"
+#include "rtamp/world/scenario.hpp"
+
+namespace rtamp::plan {
+
+struct MotionQuery {
+  std::uint64_t thing = 0;   // stable id of the moved thing (task::System::thing_uid)
+  bool container = false;    // the moved thing is a container
+  world::Vec3 hand{};        // hand point before the action
+  world::Vec3 from{};        // the thing's point
+  world::Vec3 to{};          // the destination's point
+};
+
+// Which fields of a MotionQuery a model's cost depends on (bit set).
+enum Depends : unsigned {
+  kDependsThing = 1,
+  kDependsHand = 2,
+  kDependsFrom = 4,
+  kDependsTo = 8,
+  kDependsAll = 15,
+};
+
+inline double distance(const world::Vec3& a, const world::Vec3& b) {
+  const double dx = a[0] - b[0], dy = a[1] - b[1], dz = a[2] - b[2];
+  return std::sqrt(dx * dx + dy * dy + dz * dz);
+}
+
+struct TransportQuery {
+  world::Vec3 hand{};
+  const world::Vec3* from = nullptr;  // current points of the candidate things
+  std::size_t n = 0;                  // number of candidates
+  std::size_t m = 0;                  // how many of them must arrive (1 <= m <= n)
+  bool to_known = false;              // the destination is a region at `to` (else a container)
+  world::Vec3 to{};
+  bool one_at_a_time = false;         // no containers: each move carries exactly one thing
+  double nearest = 0;                 // distance from `to` to the nearest other location point
+  std::vector<double>* scratch = nullptr;  // work space (n entries), owned by the caller
+};
+
+// Sum of the k smallest values of v (reorders v).
+double sum_smallest(std::vector<double>& v, std::size_t k);
+// k-th smallest value of v, 1-based (reorders v); +inf if v has fewer.
+double kth_smallest(std::vector<double>& v, std::size_t k);
+
+class MotionCostModel {
+ public:
+  virtual ~MotionCostModel() = default;
+  virtual std::string name() const = 0;
+  // Cost of moving q.thing from q.from to q.to with the hand at q.hand; >= 0.
+  virtual double cost(const MotionQuery& q) const = 0;
+  // See the header comment. `to_anywhere`: the destination is not known.
+  virtual double lower_bound(const MotionQuery& q, bool to_anywhere) const = 0;
+  // Which MotionQuery fields cost() reads (Depends bits).
+  virtual unsigned depends() const = 0;
+  virtual double transport_bound(const TransportQuery& t) const;
+  // Costs of this model are expensive enough to be worth caching.
+  virtual bool expensive() const { return false; }
+
+  // The query for `a` in state `s` of `ts` (a must be a move).
+  static MotionQuery query(const task::System& ts, const task::State& s, const task::Action& a);
+  // cost(s, a): 0 for stay, else cost(query(ts, s, a)).
+  double cost(const task::System& ts, const task::State& s, const task::Action& a) const {
+    return a.is_stay() ? 0.0 : cost(query(ts, s, a));
+  }
+};
+
+class EuclidCost final : public MotionCostModel {
+ public:
+  std::string name() const override { return "euclid"; }
+  double cost(const MotionQuery& q) const override { return distance(q.hand, q.from) + distance(q.from, q.to); }
+  double lower_bound(const MotionQuery& q, bool to_anywhere) const override {
+    return distance(q.hand, q.from) + (to_anywhere ? 0.0 : distance(q.from, q.to));
+  }
+  unsigned depends() const override { return kDependsHand | kDependsFrom | kDependsTo; }
+  double transport_bound(const TransportQuery& t) const override;
+};
+
+class RegionCost final : public MotionCostModel {
+ public:
+  std::string name() const override { return "region"; }
+  double cost(const MotionQuery& q) const override { return distance(q.from, q.to); }
+  double lower_bound(const MotionQuery& q, bool to_anywhere) const override {
+    return to_anywhere ? 0.0 : distance(q.from, q.to);
+  }
+  unsigned depends() const override { return kDependsFrom | kDependsTo; }
+  double transport_bound(const TransportQuery& t) const override;
+};
+
+class UnitCost final : public MotionCostModel {
+ public:
+  std::string name() const override { return "unit"; }
+  double cost(const MotionQuery&) const override { return 1.0; }
+  // Any sequence that must pick the thing contains at least one move.
+  double lower_bound(const MotionQuery&, bool) const override { return 1.0; }
+  unsigned depends() const override { return 0; }
+  // Every one of the m things needs a move of its own.
+  double transport_bound(const TransportQuery& t) const override { return double(t.m); }
+};
+
+// "euclid", "region" or "unit"; throws rtamp::Error otherwise.
+std::unique_ptr<MotionCostModel> make_cost_model(const std::string& name);
+
+}  // namespace rtamp::plan

@@ -1,0 +1,451 @@
+#include "rtamp/plan/planner.hpp"
+
+#include <algorithm>
+#include <sstream>
+
+#include "rtamp/automata/translate.hpp"
+#include "rtamp/ltl/parser.hpp"
+#include "rtamp/util/error.hpp"
+#include "rtamp/world/geometry.hpp"
+#include "rtamp/world/propositions.hpp"
+
+namespace rtamp::plan {
+
+namespace {
+std::optional<world::PropExpr> parse_atom(const std::string& atom) {
+  try {
+    return world::parse_prop_expr(atom);
+  } catch (const Error&) {
+    return std::nullopt;
+  }
+}
+
+template <class T>
+bool erase_named(std::vector<T>& v, const std::string& name) {
+  auto it = std::find_if(v.begin(), v.end(), [&](const T& x) { return x.name == name; });
+  if (it == v.end()) return false;
+  v.erase(it);
+  return true;
+}
+}  // namespace
+
+// ---- Change ----------------------------------------------------------------
+
+Change Change::relocate(std::string thing, std::string location) {
+  Change c;
+  c.kind = Kind::Relocate;
+  c.name = std::move(thing);
+  c.location = std::move(location);
+  return c;
+}
+Change Change::add_object(std::string object, std::string cls, std::string location) {
+  Change c;
+  c.kind = Kind::AddObject;
+  c.name = std::move(object);
+  c.cls = std::move(cls);
+  c.location = std::move(location);
+  return c;
+}
+Change Change::remove_object(std::string object) {
+  Change c;
+  c.kind = Kind::RemoveObject;
+  c.name = std::move(object);
+  return c;
+}
+Change Change::add_container(std::string container, std::string cls, std::string region, int capacity) {
+  Change c;
+  c.kind = Kind::AddContainer;
+  c.name = std::move(container);
+  c.cls = std::move(cls);
+  c.location = std::move(region);
+  c.capacity = capacity;
+  return c;
+}
+Change Change::remove_container(std::string container) {
+  Change c;
+  c.kind = Kind::RemoveContainer;
+  c.name = std::move(container);
+  return c;
+}
+Change Change::add_region(world::Region region) {
+  Change c;
+  c.kind = Kind::AddRegion;
+  c.name = region.name;
+  c.region = std::move(region);
+  return c;
+}
+
+Change Change::parse(const std::string& text) {
+  std::istringstream in(text);
+  std::vector<std::string> w;
+  for (std::string s; in >> s;) w.push_back(s);
+  auto bad = [&](const std::string& why) {
+    return Error("bad change '" + text + "': " + why,
+                 {}, "expected: move OBJ LOC | add OBJ CLASS LOC | remove OBJ | add-container NAME CLASS REGION "
+                     "[CAPACITY] | remove-container NAME | add-region NAME X Y [CAPACITY]");
+  };
+  auto number = [&](const std::string& s) {
+    try {
+      std::size_t used = 0;
+      const double v = std::stod(s, &used);
+      if (used != s.size()) throw bad("'" + s + "' is not a number");
+      return v;
+    } catch (const std::logic_error&) {
+      throw bad("'" + s + "' is not a number");
+    }
+  };
+  if (w.empty()) throw bad("empty");
+  const std::string& k = w[0];
+  if (k == "move" && w.size() == 3) return relocate(w[1], w[2]);
+  if (k == "add" && w.size() == 4) return add_object(w[1], w[2], w[3]);
+  if (k == "remove" && w.size() == 2) return remove_object(w[1]);
+  if (k == "add-container" && (w.size() == 4 || w.size() == 5))
+    return add_container(w[1], w[2], w[3], w.size() == 5 ? static_cast<int>(number(w[4])) : 4);
+  if (k == "remove-container" && w.size() == 2) return remove_container(w[1]);
+  if (k == "add-region" && (w.size() == 4 || w.size() == 5)) {
+    world::Region r;
+    r.name = w[1];
+    r.center = {number(w[2]), number(w[3]), 0};
+    if (w.size() == 5) r.capacity = static_cast<int>(number(w[4]));
+    return add_region(r);
+  }
+  throw bad("unknown kind or wrong number of words");
+}
+
+std::string Change::to_string() const {
+  switch (kind) {
+    case Kind::Relocate: return "move " + name + " " + location;
+    case Kind::AddObject: return "add " + name + " " + cls + " " + location;
+    case Kind::RemoveObject: return "remove " + name;
+    case Kind::AddContainer: return "add-container " + name + " " + cls + " " + location + " " + std::to_string(capacity);
+    case Kind::RemoveContainer: return "remove-container " + name;
+    case Kind::AddRegion: {
+      std::ostringstream o;
+      o << "add-region " << name << " " << region.center[0] << " " << region.center[1] << " " << region.capacity;
+      return o.str();
+    }
+  }
+  return "?";
+}
+
+// ---- Planner ---------------------------------------------------------------
+
+Planner::Planner(world::Scenario scenario, PlannerOptions options)
+    : scenario_(std::move(scenario)), options_(std::move(options)) {
+  if (scenario_.task.empty()) throw Error("the scenario has no task", scenario_.task_where);
+  formula_ = ltl::parse(scenario_.task, scenario_.task_where);
+  ba_ = automata::translate(formula_);
+  init();
+}
+
+Planner::Planner(world::Scenario scenario, automata::Automaton automaton, PlannerOptions options)
+    : scenario_(std::move(scenario)), options_(std::move(options)), ba_(std::move(automaton)) {
+  init();
+}
+
+Planner::~Planner() = default;
+
+void Planner::init() {
+  model_ = options_.model ? options_.model : std::shared_ptr<MotionCostModel>(make_cost_model(options_.cost));
+  cache_.set_depends(model_->depends());
+  placement_ = world::initial_placement(scenario_);
+  hand_.clear();
+  rebuild();
+}
+
+void Planner::rebuild() {
+  exp_heuristic_.reset();
+  graph_.reset();
+  lab_.reset();
+  ts_ = std::make_unique<task::System>(scenario_, placement_, hand_);
+  lab_ = std::make_unique<task::Labeling>(*ts_, ba_.atoms, parse_atom);
+  if (options_.symmetry && !(model_->depends() & kDependsThing)) ts_->set_symmetry(lab_->symmetry_groups());
+  dirty_ = false;
+}
+
+const task::System& Planner::system() {
+  if (dirty_) rebuild();
+  return *ts_;
+}
+
+const task::Labeling& Planner::labeling() {
+  if (dirty_) rebuild();
+  return *lab_;
+}
+
+task::State Planner::state() {
+  system();
+  return ts_->encode(placement_, hand_);
+}
+
+void Planner::set_placement(world::Placement placement, std::string hand) {
+  // Things added or removed by the new placement change the TS.
+  bool same = placement.things.size() == placement_.things.size();
+  if (same)
+    for (const auto& [name, thing] : placement.things) {
+      auto it = placement_.things.find(name);
+      if (it == placement_.things.end() || it->second.container != thing.container) same = false;
+    }
+  if (!same) throw Error("set_placement: the placement names other things than the scenario (use apply())");
+  placement_ = std::move(placement);
+  hand_ = std::move(hand);
+}
+
+void Planner::execute(const task::Action& a) {
+  system();
+  const task::State next = ts_->successor(ts_->encode(placement_, hand_), a);
+  placement_ = ts_->describe(next);
+  hand_ = ts_->hand_name(next);
+  if (hand_ == "home") hand_.clear();
+}
+
+void Planner::apply(const Change& c) {
+  auto location_exists = [&](const std::string& l) {
+    return scenario_.find_region(l) != nullptr || scenario_.find_container(l) != nullptr;
+  };
+  auto name_taken = [&](const std::string& n) {
+    return scenario_.find_region(n) || scenario_.find_container(n) || scenario_.find_object(n);
+  };
+  auto point_of = [&](const std::string& loc) -> world::Vec3 {
+    if (const auto* r = scenario_.find_region(loc)) return r->center;
+    if (const auto* k = scenario_.find_container(loc)) {
+      const std::string* reg = placement_.location_of(k->name);
+      if (reg)
+        if (const auto* r = scenario_.find_region(*reg)) return r->center;
+      return k->position;
+    }
+    return {0, 0, 0};
+  };
+  switch (c.kind) {
+    case Change::Kind::Relocate: {
+      const bool is_obj = scenario_.find_object(c.name) != nullptr;
+      const bool is_con = scenario_.find_container(c.name) != nullptr;
+      if (!is_obj && !is_con) throw Error("unknown object or container '" + c.name + "'");
+      if (!location_exists(c.location)) throw Error("unknown location '" + c.location + "'");
+      if (is_con && !scenario_.find_region(c.location))
+        throw Error("container '" + c.name + "' can only be placed in a region, not in '" + c.location + "'");
+      if (c.name == c.location) throw Error("'" + c.name + "' cannot be placed in itself");
+      placement_.things[c.name].location = c.location;
+      // The TS is unchanged: the product graph and all experience stay valid.
+      return;
+    }
+    case Change::Kind::AddObject: {
+      if (name_taken(c.name)) throw Error("name '" + c.name + "' is already used");
+      if (!location_exists(c.location)) throw Error("unknown location '" + c.location + "'");
+      world::Object o;
+      o.name = c.name;
+      o.cls = c.cls.empty() ? "block" : c.cls;
+      o.position = point_of(c.location);
+      scenario_.objects.push_back(o);
+      placement_.set(o.name, c.location, o.cls, false);
+      break;
+    }
+    case Change::Kind::RemoveObject: {
+      if (!scenario_.find_object(c.name)) throw Error("unknown object '" + c.name + "'");
+      erase_named(scenario_.objects, c.name);
+      placement_.things.erase(c.name);
+      if (ts_)
+        if (int t = ts_->find_thing(c.name); t >= 0) cache_.forget_thing(ts_->thing_uid(static_cast<unsigned>(t)));
+      break;
+    }
+    case Change::Kind::AddContainer: {
+      if (name_taken(c.name)) throw Error("name '" + c.name + "' is already used");
+      const auto* r = scenario_.find_region(c.location);
+      if (!r) throw Error("unknown region '" + c.location + "' (containers stand in regions)");
+      world::Container k;
+      k.name = c.name;
+      k.cls = c.cls.empty() ? "tray" : c.cls;
+      k.position = r->center;
+      k.capacity = c.capacity;
+      if (k.capacity < 1) throw Error("container capacity must be >= 1");
+      scenario_.containers.push_back(k);
+      placement_.set(k.name, c.location, k.cls, true);
+      break;
+    }
+    case Change::Kind::RemoveContainer: {
+      if (!scenario_.find_container(c.name)) throw Error("unknown container '" + c.name + "'");
+      const std::string region = placement_.things[c.name].location;
+      for (auto& [name, thing] : placement_.things)
+        if (thing.location == c.name) thing.location = region;  // contents fall where it stood
+      if (hand_ == c.name) hand_ = region;
+      erase_named(scenario_.containers, c.name);
+      placement_.things.erase(c.name);
+      if (ts_)
+        if (int t = ts_->find_thing(c.name); t >= 0) cache_.forget_thing(ts_->thing_uid(static_cast<unsigned>(t)));
+      break;
+    }
+    case Change::Kind::AddRegion: {
+      if (c.region.name.empty()) throw Error("a new region needs a name");
+      if (name_taken(c.region.name)) throw Error("name '" + c.region.name + "' is already used");
+      if (c.region.capacity < 1) throw Error("region capacity must be >= 1");
+      scenario_.regions.push_back(c.region);
+      break;
+    }
+  }
+  dirty_ = true;
+}
+
+PlanResult Planner::plan() {
+  if (dirty_) rebuild();
+  ts_->set_initial(ts_->encode(placement_, hand_));
+  return search(*ts_, *lab_, options_.diagnose_capacity);
+}
+
+PlanResult Planner::search(task::System& ts, task::Labeling& lab, bool allow_diagnosis) {
+  PlanResult res;
+  const std::int64_t t0 = steady_now_ns();
+  const bool exp = options_.algorithm == Algorithm::AStarExperience && &ts == ts_.get();
+  std::int64_t deadline = options_.limits.time_limit > 0
+                              ? t0 + static_cast<std::int64_t>(options_.limits.time_limit * 1e9)
+                              : 0;
+  auto finish = [&](NoPlanReason reason, std::string message) {
+    res.reason = reason;
+    res.message = std::move(message);
+    res.stats.seconds = double(steady_now_ns() - t0) * 1e-9;
+    return res;
+  };
+  if (!lab.unknown_atoms().empty())
+    return finish(NoPlanReason::UnknownName, "the task uses '" + lab.unknown_atoms().front() +
+                                                 "', which is neither a proposition of the scenario nor a "
+                                                 "proposition expression");
+  std::unique_ptr<ProductGraph> cold_graph;
+  std::unique_ptr<LassoSearch> cold_search;
+  ProductGraph* g = nullptr;
+  LassoSearch* ls = nullptr;
+  if (exp) {
+    if (!graph_) {
+      graph_ = std::make_unique<ProductGraph>(ts, lab, ba_, *model_, &cache_);
+      exp_heuristic_ = std::make_unique<ExperienceHeuristic>(*graph_);
+    }
+    g = graph_.get();
+    ls = &search_;
+    cache_.reset_counters();
+  } else {
+    cold_graph = std::make_unique<ProductGraph>(ts, lab, ba_, *model_, nullptr);
+    cold_search = std::make_unique<LassoSearch>();
+    g = cold_graph.get();
+    ls = cold_search.get();
+  }
+  if (ba_.num_states() == 0 || !g->useful(ba_.initial))
+    return finish(NoPlanReason::Unsatisfiable, "the task is unsatisfiable: its Büchi automaton accepts no word");
+  const std::size_t before = g->size();
+  const NodeId init = g->find_or_add(ts.canonical(ts.initial()), ba_.initial);
+  res.stats.reused_nodes = before;
+  bool hit_node = false, hit_time = false;
+  if (options_.graph == GraphConstruction::Full) {
+    const std::int64_t c0 = steady_now_ns();
+    if (!g->expand_all(init, options_.limits.max_nodes, deadline)) {
+      if (g->size() >= options_.limits.max_nodes) hit_node = true;
+      else hit_time = true;
+    }
+    res.stats.construction_seconds = double(steady_now_ns() - c0) * 1e-9;
+  }
+  LassoResult r;
+  const std::uint64_t exp0 = g->expansions();
+  if (!hit_node && !hit_time) {
+    std::unique_ptr<Heuristic> h;
+    Heuristic* hp = nullptr;
+    if (exp) {
+      hp = exp_heuristic_.get();
+    } else {
+      switch (options_.algorithm) {
+        case Algorithm::Dijkstra: h = std::make_unique<ZeroHeuristic>(); break;
+        case Algorithm::AStar: h = std::make_unique<GuardHeuristic>(*g); break;
+        case Algorithm::AStarExperience: h = std::make_unique<ExperienceHeuristic>(*g); break;
+      }
+      hp = h.get();
+    }
+    const bool astar = options_.algorithm != Algorithm::Dijkstra;
+    r = ls->run(*g, init, *hp, astar, exp, options_.limits, deadline, res.stats);
+    hit_node = r.hit_node_limit;
+    hit_time = r.hit_time_limit;
+  }
+  res.stats.successor_generations = g->expansions() - exp0 + (options_.graph == GraphConstruction::Full ? 0 : 0);
+  res.stats.generated = g->size() - before;
+  res.stats.graph_nodes = g->size();
+  res.stats.graph_edges = g->num_edges();
+  res.stats.hit_node_limit = hit_node;
+  res.stats.hit_time_limit = hit_time;
+  if (exp) {
+    res.stats.cache_hits = cache_.hits();
+    res.stats.cache_misses = cache_.misses();
+  }
+  res.stats.memory_bytes = g->memory_bytes() + ls->memory_bytes() + (exp ? cache_.bytes() : 0);
+  if (r.found) {
+    res.found = true;
+    Plan& p = res.plan;
+    // Replay the (canonical) path on concrete states: a move of a group
+    // member at location a becomes a move of the lowest-numbered member of
+    // that group that is at a in the concrete state.
+    task::State concrete = ts.initial();
+    auto add_steps = [&](NodeId cur, const std::vector<std::uint32_t>& edges, std::vector<Step>& out) {
+      for (std::uint32_t e : edges) {
+        const ProductEdge& pe = g->edge(e);
+        task::Action a = task::Action::unpack(pe.action);
+        if (!a.is_stay() && ts.group_of(a.thing) >= 0) {
+          const std::uint32_t at = ts.location(g->state(cur), a.thing);
+          for (unsigned t = 0; t < ts.num_things(); ++t)
+            if (ts.group_of(t) == ts.group_of(a.thing) && ts.location(concrete, t) == at) {
+              a.thing = static_cast<std::uint16_t>(t);
+              break;
+            }
+        }
+        Step st;
+        st.action = a;
+        st.from = concrete;
+        concrete = ts.successor(concrete, a);
+        st.to = concrete;
+        st.ba_from = g->ba_state(cur);
+        st.ba_to = g->ba_state(pe.dst);
+        st.cost = pe.cost;
+        st.label = g->label(cur);
+        out.push_back(st);
+        cur = pe.dst;
+      }
+    };
+    add_steps(init, r.prefix_edges, p.prefix);
+    add_steps(r.accepting, r.cycle_edges, p.cycle);
+    p.prefix_cost = r.prefix_cost;
+    p.cycle_cost = r.cycle_cost;
+    res.stats.seconds = double(steady_now_ns() - t0) * 1e-9;
+    return res;
+  }
+  if (hit_node)
+    return finish(NoPlanReason::NodeLimit,
+                  "the search stopped at its node limit (" + std::to_string(options_.limits.max_nodes) + " nodes)");
+  if (hit_time) {
+    std::ostringstream o;
+    o << "the search stopped at its time limit (" << options_.limits.time_limit << " s)";
+    return finish(NoPlanReason::TimeLimit, o.str());
+  }
+  if (allow_diagnosis) {
+    task::System relaxed(scenario_, placement_, hand_, task::System::Options{true});
+    task::Labeling rlab(relaxed, ba_.atoms, parse_atom);
+    if (options_.symmetry && !(model_->depends() & kDependsThing)) relaxed.set_symmetry(rlab.symmetry_groups());
+    PlannerOptions saved = options_;
+    options_.algorithm = Algorithm::AStar;
+    options_.graph = GraphConstruction::Partial;
+    PlanResult rr = search(relaxed, rlab, false);
+    options_ = saved;
+    if (rr.found)
+      return finish(NoPlanReason::Capacity,
+                    "no plan within the capacities of the locations (there is one if capacities are ignored)");
+  }
+  return finish(NoPlanReason::NoAcceptingCycle,
+                "no accepting lasso is reachable from the current state: the task cannot be achieved from here");
+}
+
+const char* to_string(NoPlanReason r) {
+  switch (r) {
+    case NoPlanReason::None: return "none";
+    case NoPlanReason::Unsatisfiable: return "unsatisfiable";
+    case NoPlanReason::NoAcceptingCycle: return "no-accepting-cycle";
+    case NoPlanReason::Capacity: return "capacity";
+    case NoPlanReason::UnknownName: return "unknown-name";
+    case NoPlanReason::NodeLimit: return "node-limit";
+    case NoPlanReason::TimeLimit: return "time-limit";
+  }
+  return "?";
+}
+
+}  // namespace rtamp::plan

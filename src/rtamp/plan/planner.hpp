@@ -1,0 +1,131 @@
+// The planning facade (OMPL SimpleSetup style): everything the paper's
+// high-level layer does (Sections II-III.C, Algorithm 1 lines 9-14) behind a
+// few calls:
+//
+//   rtamp::plan::Planner planner(rtamp::world::load_scenario("3-block-tray"));
+//   auto r = planner.plan();                       // first plan
+//   planner.apply(Change::relocate("b1", "r3"));   // a person moved b1
+//   auto r2 = planner.plan();                      // replan from the observed state
+//   auto tuples = planner.action_tuples(r2.plan);  // for the behavior tree
+//
+// The planner owns the scenario, the current symbolic state (where every thing
+// and the hand are), the Büchi automaton of the task (translated once: the
+// formula never changes during an episode), the TS and labeling (rebuilt when
+// things or regions are added or removed; names stay the identity), and the
+// experience: the motion-cost cache and, while the TS is unchanged, the
+// product graph with its learned bounds and cycle costs. Each plan() starts
+// the automaton afresh at the current state ((s, q_b0), Algorithm 1 line 12).
+// Algorithms dijkstra and astar plan cold every time (new graph, no cache);
+// astar-exp keeps and reuses all experience.
+// Errors a user can cause (unknown names in a change, a bad task) are
+// rtamp::Error; a task that cannot be achieved is a PlanResult with a reason.
+#pragma once
+
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "rtamp/automata/automaton.hpp"
+#include "rtamp/ltl/formula.hpp"
+#include "rtamp/plan/action_tuple.hpp"
+#include "rtamp/plan/experience.hpp"
+#include "rtamp/plan/motion_cost.hpp"
+#include "rtamp/plan/plan.hpp"
+#include "rtamp/plan/product_graph.hpp"
+#include "rtamp/plan/search.hpp"
+#include "rtamp/task/labeling.hpp"
+#include "rtamp/task/transition_system.hpp"
+#include "rtamp/world/placement.hpp"
+#include "rtamp/world/scenario.hpp"
+
+namespace rtamp::plan {
+
+struct PlannerOptions {
+  Algorithm algorithm = Algorithm::AStarExperience;
+  GraphConstruction graph = GraphConstruction::Partial;
+  std::string cost = "euclid";                 // euclid | region | unit (ignored if `model` is set)
+  std::shared_ptr<MotionCostModel> model;      // e.g. the robot layer's ik model
+  SearchLimits limits;
+  bool diagnose_capacity = true;               // on failure, retry without capacities to tell "capacity"
+  bool symmetry = true;                        // search the quotient by interchangeable objects
+                                               // (task::System::set_symmetry; costs are unchanged)
+};
+
+// A change of the world observed between plans (paper Section III.A).
+struct Change {
+  enum class Kind { Relocate, AddObject, RemoveObject, AddContainer, RemoveContainer, AddRegion };
+  Kind kind = Kind::Relocate;
+  std::string name;      // object / container / region
+  std::string cls;       // AddObject / AddContainer
+  std::string location;  // Relocate / AddObject: a region or container; AddContainer: a region
+  int capacity = 4;      // AddContainer
+  world::Region region;  // AddRegion
+
+  static Change relocate(std::string thing, std::string location);
+  static Change add_object(std::string object, std::string cls, std::string location);
+  static Change remove_object(std::string object);
+  static Change add_container(std::string container, std::string cls, std::string region, int capacity = 4);
+  static Change remove_container(std::string container);
+  static Change add_region(world::Region region);
+  // "move OBJ LOC", "add OBJ CLASS LOC", "remove OBJ", "add-container NAME CLASS REGION [CAPACITY]",
+  // "remove-container NAME", "add-region NAME X Y [CAPACITY]". Throws rtamp::Error.
+  static Change parse(const std::string& text);
+  std::string to_string() const;
+};
+
+class Planner {
+ public:
+  // Parses and translates scenario.task. Throws rtamp::Error on a bad task or
+  // a scenario whose initial state cannot be read.
+  explicit Planner(world::Scenario scenario, PlannerOptions options = {});
+  // With an automaton built elsewhere (its atoms name propositions).
+  Planner(world::Scenario scenario, automata::Automaton automaton, PlannerOptions options = {});
+  ~Planner();
+  Planner(const Planner&) = delete;
+  Planner& operator=(const Planner&) = delete;
+
+  PlanResult plan();
+  void apply(const Change& change);
+  // The robot executed `a` (the state advances; experience is kept).
+  void execute(const task::Action& a);
+  // Replace the current state (e.g. from perception).
+  void set_placement(world::Placement placement, std::string hand = {});
+
+  const world::Scenario& scenario() const { return scenario_; }
+  const task::System& system();
+  const task::Labeling& labeling();
+  const automata::Automaton& automaton() const { return ba_; }
+  const ltl::Formula& formula() const { return formula_; }  // null if built from an automaton
+  const world::Placement& placement() const { return placement_; }
+  const std::string& hand() const { return hand_; }
+  task::State state();
+  const PlannerOptions& options() const { return options_; }
+  const MotionCostModel& model() const { return *model_; }
+  std::vector<ActionTuple> action_tuples(const Plan& p) { return to_action_tuples(system(), p); }
+  // "move(o1, r2)" etc.
+  std::string describe(const task::Action& a) { return system().action_name(a); }
+  const MotionCostCache& cache() const { return cache_; }
+
+ private:
+  void init();
+  void rebuild();  // TS, labeling, graph from scenario_ + placement_ + hand_
+  PlanResult search(task::System& ts, task::Labeling& lab, bool allow_diagnosis);
+
+  world::Scenario scenario_;
+  PlannerOptions options_;
+  ltl::Formula formula_;
+  automata::Automaton ba_;
+  std::shared_ptr<MotionCostModel> model_;
+  world::Placement placement_;
+  std::string hand_;
+  bool dirty_ = true;  // TS must be rebuilt
+  std::unique_ptr<task::System> ts_;
+  std::unique_ptr<task::Labeling> lab_;
+  std::unique_ptr<ProductGraph> graph_;  // astar-exp: kept while the TS is unchanged
+  std::unique_ptr<Heuristic> exp_heuristic_;  // astar-exp: lives with graph_
+  MotionCostCache cache_;
+  LassoSearch search_;
+};
+
+}  // namespace rtamp::plan

@@ -1,0 +1,174 @@
+#include "rtamp/plan/product_graph.hpp"
+
+#include <algorithm>
+#include <chrono>
+
+namespace rtamp::plan {
+
+namespace {
+std::int64_t now_ns() {
+  return std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::steady_clock::now().time_since_epoch())
+      .count();
+}
+
+// BA states from which an accepting state lying on a cycle is reachable.
+std::vector<bool> useful_states(const automata::Automaton& ba) {
+  const std::uint32_t n = ba.num_states();
+  std::vector<std::vector<std::uint32_t>> pred(n);
+  for (std::uint32_t q = 0; q < n; ++q)
+    for (const auto& e : ba.edges[q])
+      if (!e.guard.is_false()) pred[e.dst].push_back(q);
+  auto backward = [&](std::vector<std::uint32_t> seeds, bool include_seeds) {
+    std::vector<bool> seen(n, false);
+    std::vector<std::uint32_t> stack;
+    for (auto s : seeds) {
+      if (include_seeds && !seen[s]) {
+        seen[s] = true;
+        stack.push_back(s);
+      } else if (!include_seeds) {
+        stack.push_back(s);
+      }
+    }
+    while (!stack.empty()) {
+      const auto q = stack.back();
+      stack.pop_back();
+      for (auto p : pred[q])
+        if (!seen[p]) {
+          seen[p] = true;
+          stack.push_back(p);
+        }
+    }
+    return seen;
+  };
+  std::vector<std::uint32_t> good;
+  for (std::uint32_t q = 0; q < n; ++q) {
+    if (!ba.is_accepting_state(q)) continue;
+    // q lies on a cycle iff q is a predecessor-closure member of itself (>= 1 step).
+    auto reach_q = backward({q}, false);
+    if (reach_q[q]) good.push_back(q);
+  }
+  return backward(good, true);
+}
+}  // namespace
+
+ProductGraph::ProductGraph(const task::System& ts, const task::Labeling& labeling, const automata::Automaton& ba,
+                           const MotionCostModel& model, MotionCostCache* cache)
+    : ts_(&ts), lab_(&labeling), ba_(&ba), model_(&model), cache_(cache), words_(ts.layout().words) {
+  useful_ = useful_states(ba);
+  table_.assign(1024, 0);
+  succ_q_.reserve(ba.num_states());
+}
+
+std::uint64_t ProductGraph::hash(const std::uint64_t* w, std::uint32_t q) const {
+  return task::hash_words(w, words_, q);
+}
+
+void ProductGraph::grow_table() {
+  table_.assign(table_.size() * 2, 0);
+  const std::size_t mask = table_.size() - 1;
+  for (NodeId n = 0; n < size(); ++n) {
+    std::size_t i = hash(&states_[std::size_t{n} * words_], q_[n]) & mask;
+    while (table_[i]) i = (i + 1) & mask;
+    table_[i] = n + 1;
+  }
+}
+
+NodeId ProductGraph::find(const task::State& s, std::uint32_t q) const {
+  const std::size_t mask = table_.size() - 1;
+  std::size_t i = hash(s.words.data(), q) & mask;
+  while (std::uint32_t id = table_[i]) {
+    const NodeId n = id - 1;
+    if (q_[n] == q && std::equal(s.words.begin(), s.words.begin() + words_, states_.begin() + std::size_t{n} * words_))
+      return n;
+    i = (i + 1) & mask;
+  }
+  return kNoNode;
+}
+
+NodeId ProductGraph::find_or_add(const task::State& s, std::uint32_t q) {
+  if (!useful_[q]) return kNoNode;
+  const std::size_t mask = table_.size() - 1;
+  std::size_t i = hash(s.words.data(), q) & mask;
+  while (std::uint32_t id = table_[i]) {
+    const NodeId n = id - 1;
+    if (q_[n] == q && std::equal(s.words.begin(), s.words.begin() + words_, states_.begin() + std::size_t{n} * words_))
+      return n;
+    i = (i + 1) & mask;
+  }
+  const NodeId n = static_cast<NodeId>(size());
+  states_.insert(states_.end(), s.words.begin(), s.words.begin() + words_);
+  q_.push_back(q);
+  edge_begin_.push_back(kUnexpanded);
+  edge_end_.push_back(kUnexpanded);
+  labels_.push_back(0);
+  table_[i] = n + 1;
+  if (size() * 2 > table_.size()) grow_table();
+  return n;
+}
+
+void ProductGraph::expand(NodeId n) {
+  if (expanded(n)) return;
+  ++expansions_;
+  const task::State s = state(n);
+  const automata::Letter l = lab_->label(s);
+  labels_[n] = l;
+  succ_q_.clear();
+  for (const auto& e : ba_->edges[q_[n]])
+    if (e.guard.matches(l) && useful_[e.dst] &&
+        std::find(succ_q_.begin(), succ_q_.end(), e.dst) == succ_q_.end())
+      succ_q_.push_back(e.dst);
+  const auto begin = static_cast<std::uint32_t>(edges_.size());
+  if (!succ_q_.empty()) {
+    const std::uint32_t stay = task::Action::stay().packed();
+    for (std::uint32_t q2 : succ_q_) edges_.push_back({find_or_add(s, q2), stay, 0.0});
+    ts_->for_each_move(s, [&](const task::Action& a) {
+      const task::State s2 = ts_->canonical_successor(s, a);
+      const MotionQuery mq = MotionCostModel::query(*ts_, s, a);
+      const double c = cache_ ? cache_->lookup(mq, *model_) : model_->cost(mq);
+      for (std::uint32_t q2 : succ_q_) edges_.push_back({find_or_add(s2, q2), a.packed(), c});
+    });
+  }
+  edge_begin_[n] = begin;
+  edge_end_[n] = static_cast<std::uint32_t>(edges_.size());
+}
+
+bool ProductGraph::expand_all(NodeId from, std::size_t max_nodes, std::int64_t deadline_ns) {
+  std::vector<NodeId> queue{from};
+  std::vector<bool> queued;
+  queued.resize(size(), false);
+  queued[from] = true;
+  for (std::size_t head = 0; head < queue.size(); ++head) {
+    const NodeId n = queue[head];
+    expand(n);
+    if (queued.size() < size()) queued.resize(size(), false);
+    for (std::uint32_t e = edge_begin_[n]; e < edge_end_[n]; ++e) {
+      const NodeId d = edges_[e].dst;
+      if (!queued[d]) {
+        queued[d] = true;
+        queue.push_back(d);
+      }
+    }
+    if (size() >= max_nodes) return false;
+    if (deadline_ns && (head & 255) == 0 && now_ns() > deadline_ns) return false;
+  }
+  return true;
+}
+
+void ProductGraph::learn(NodeId n, double v) {
+  if (learned_.size() <= n) learned_.resize(std::max<std::size_t>(size(), n + 1), 0.0);
+  learned_[n] = std::max(learned_[n], v);
+}
+
+void ProductGraph::set_cycle(NodeId n, Cycle c) {
+  if (cycles_.size() <= n) cycles_.resize(std::max<std::size_t>(size(), n + 1));
+  cycles_[n] = c;
+}
+
+std::size_t ProductGraph::memory_bytes() const {
+  return states_.capacity() * sizeof(std::uint64_t) + q_.capacity() * 4 + edge_begin_.capacity() * 4 +
+         edge_end_.capacity() * 4 + labels_.capacity() * sizeof(automata::Letter) +
+         edges_.capacity() * sizeof(ProductEdge) + table_.capacity() * 4 + learned_.capacity() * sizeof(double) +
+         cycles_.capacity() * sizeof(Cycle) + hcache_.capacity() * sizeof(double);
+}
+
+}  // namespace rtamp::plan

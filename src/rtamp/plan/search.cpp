@@ -1,0 +1,242 @@
+#include "rtamp/plan/search.hpp"
+
+#include <algorithm>
+#include <chrono>
+
+namespace rtamp::plan {
+
+namespace {
+constexpr double kEps = 1e-9;
+bool heap_less(const auto& a, const auto& b) {  // max-heap comparator: "a after b"
+  if (a.f != b.f) return a.f > b.f;
+  return a.g < b.g;  // ties: larger g first
+}
+}  // namespace
+
+std::int64_t steady_now_ns() {
+  return std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::steady_clock::now().time_since_epoch())
+      .count();
+}
+
+const char* to_string(Algorithm a) {
+  switch (a) {
+    case Algorithm::Dijkstra: return "dijkstra";
+    case Algorithm::AStar: return "astar";
+    case Algorithm::AStarExperience: return "astar-exp";
+  }
+  return "?";
+}
+
+const char* to_string(GraphConstruction g) { return g == GraphConstruction::Full ? "full" : "partial"; }
+
+void LassoSearch::Space::ensure(std::size_t n) {
+  if (stamp.size() >= n) return;
+  const std::size_t cap = std::max<std::size_t>(n, stamp.size() * 2);
+  g.resize(cap);
+  h.resize(cap);
+  parent.resize(cap);
+  pedge.resize(cap);
+  stamp.resize(cap, 0);
+  closed.resize(cap);
+}
+
+void LassoSearch::Space::begin(std::size_t n) {
+  ensure(std::max<std::size_t>(n, 1024));
+  if (++gen == 0) {  // wrapped: clear the stamps once
+    std::fill(stamp.begin(), stamp.end(), 0);
+    gen = 1;
+  }
+  heap.clear();
+}
+
+void LassoSearch::Space::push(Item it) {
+  heap.push_back(it);
+  std::push_heap(heap.begin(), heap.end(), [](const Item& a, const Item& b) { return heap_less(a, b); });
+}
+
+LassoSearch::Item LassoSearch::Space::pop() {
+  std::pop_heap(heap.begin(), heap.end(), [](const Item& a, const Item& b) { return heap_less(a, b); });
+  Item it = heap.back();
+  heap.pop_back();
+  return it;
+}
+
+std::size_t LassoSearch::Space::bytes() const {
+  return g.capacity() * 8 + h.capacity() * 8 + parent.capacity() * 4 + pedge.capacity() * 4 + stamp.capacity() * 4 +
+         closed.capacity() + heap.capacity() * sizeof(Item);
+}
+
+bool LassoSearch::out_of_budget(const ProductGraph& g, const SearchLimits& limits, std::int64_t deadline_ns,
+                                LassoResult& r) {
+  if (g.size() > limits.max_nodes) {
+    r.hit_node_limit = true;
+    return true;
+  }
+  if (deadline_ns && (++ticks_ & 127) == 0 && steady_now_ns() > deadline_ns) {
+    r.hit_time_limit = true;
+    return true;
+  }
+  return r.hit_time_limit;
+}
+
+double LassoSearch::cycle(ProductGraph& g, NodeId n, double bound, bool heuristic, const SearchLimits& limits,
+                          std::int64_t deadline_ns, SearchStats& stats, LassoResult& r) {
+  const ProductGraph::Cycle known = g.cycle(n);
+  if (known.exact) return known.lower < bound ? known.lower : kInf;
+  if (known.lower >= bound) return kInf;
+  ++stats.cycle_searches;
+  const task::State target = g.state(n);
+  Space& S = cycle_;
+  S.begin(g.size());
+  auto relax = [&](NodeId from, std::uint32_t e) {
+    const ProductEdge& pe = g.edge(e);
+    const NodeId m = pe.dst;
+    const double ng = (from == n ? 0.0 : S.g[from]) + pe.cost;
+    S.ensure(g.size());
+    if (!S.seen(m)) {
+      S.stamp[m] = S.gen;
+      S.closed[m] = 0;
+      S.h[m] = (m == n || !heuristic) ? 0.0 : state_distance_bound(g.system(), g.model(), g.state(m), target);
+    } else if (ng >= S.g[m] - kEps) {
+      return;
+    }
+    S.g[m] = ng;
+    S.parent[m] = from;
+    S.pedge[m] = e;
+    S.closed[m] = 0;
+    if (ng + S.h[m] < bound - kEps) S.push({ng + S.h[m], ng, m});
+  };
+  if (!g.expanded(n)) {
+    g.expand(n);
+    ++stats.successor_generations;
+  }
+  for (std::uint32_t e = g.edge_begin(n); e < g.edge_end(n); ++e) relax(n, e);
+  double found = kInf;
+  while (!S.heap.empty()) {
+    const Item it = S.pop();
+    if (it.g > S.g[it.n] + kEps) continue;  // stale
+    if (it.f >= bound - kEps) break;
+    if (it.n == n) {
+      found = it.g;
+      break;
+    }
+    if (S.closed[it.n]) continue;
+    S.closed[it.n] = 1;
+    ++stats.expanded;
+    if (!g.expanded(it.n)) {
+      g.expand(it.n);
+      ++stats.successor_generations;
+    }
+    for (std::uint32_t e = g.edge_begin(it.n); e < g.edge_end(it.n); ++e) relax(it.n, e);
+    if (out_of_budget(g, limits, deadline_ns, r)) return kInf;
+  }
+  if (found < kInf) {
+    g.set_cycle(n, {found, true});
+    cycle_path_.clear();
+    NodeId cur = n;
+    do {
+      cycle_path_.push_back(S.pedge[cur]);
+      cur = S.parent[cur];
+    } while (cur != n);
+    std::reverse(cycle_path_.begin(), cycle_path_.end());
+  } else {
+    g.set_cycle(n, {std::max(known.lower, bound), false});
+  }
+  return found;
+}
+
+LassoResult LassoSearch::run(ProductGraph& g, NodeId init, Heuristic& h, bool cycle_heuristic, bool learn,
+                             const SearchLimits& limits, std::int64_t deadline_ns, SearchStats& stats) {
+  LassoResult r;
+  Space& S = prefix_;
+  S.begin(g.size());
+  closed_list_.clear();
+  double best = kInf;
+  NodeId best_node = kNoNode;
+  double best_cycle = kInf;
+  std::vector<std::uint32_t> best_cycle_path;
+
+  S.stamp[init] = S.gen;
+  S.g[init] = 0;
+  S.h[init] = h.estimate(g, init);
+  S.parent[init] = kNoNode;
+  S.closed[init] = 0;
+  if (S.h[init] < kInf) S.push({S.h[init], 0.0, init});
+  bool complete = true;
+  while (!S.heap.empty()) {
+    const Item it = S.pop();
+    const NodeId n = it.n;
+    if (it.g > S.g[n] + kEps) continue;  // stale
+    if (it.f >= best - kEps) break;
+    if (S.closed[n]) continue;
+    S.closed[n] = 1;
+    closed_list_.push_back(n);
+    ++stats.expanded;
+    if (g.accepting(n)) {
+      const double c = cycle(g, n, best - S.g[n], cycle_heuristic, limits, deadline_ns, stats, r);
+      if (r.hit_node_limit || r.hit_time_limit) {
+        complete = false;
+        break;
+      }
+      if (S.g[n] + c < best - kEps) {
+        best = S.g[n] + c;
+        best_node = n;
+        best_cycle = c;
+      }
+    }
+    if (!g.expanded(n)) {
+      g.expand(n);
+      ++stats.successor_generations;
+    }
+    S.ensure(g.size());
+    const double gn = S.g[n];
+    for (std::uint32_t e = g.edge_begin(n); e < g.edge_end(n); ++e) {
+      const ProductEdge& pe = g.edge(e);
+      const NodeId m = pe.dst;
+      const double ng = gn + pe.cost;
+      if (!S.seen(m)) {
+        S.stamp[m] = S.gen;
+        S.h[m] = h.estimate(g, m);
+      } else if (ng >= S.g[m] - kEps) {
+        continue;
+      }
+      S.g[m] = ng;
+      S.parent[m] = n;
+      S.pedge[m] = e;
+      S.closed[m] = 0;
+      if (S.h[m] < kInf) S.push({ng + S.h[m], ng, m});
+    }
+    if (out_of_budget(g, limits, deadline_ns, r)) {
+      complete = false;
+      break;
+    }
+  }
+  if (best_node != kNoNode) {
+    r.found = true;
+    r.accepting = best_node;
+    r.prefix_cost = S.g[best_node];
+    r.cycle_cost = best_cycle;
+    for (NodeId cur = best_node; cur != init; cur = S.parent[cur]) r.prefix_edges.push_back(S.pedge[cur]);
+    std::reverse(r.prefix_edges.begin(), r.prefix_edges.end());
+    // The cycle's path: search again through the (now exactly known) best cycle.
+    ProductGraph::Cycle saved = g.cycle(best_node);
+    g.set_cycle(best_node, {0, false});
+    LassoResult scratch;
+    SearchLimits unlimited;
+    unlimited.max_nodes = ~std::size_t{0};
+    const double c = cycle(g, best_node, best_cycle + 1e-7 * (1 + best_cycle), cycle_heuristic, unlimited, 0, stats, scratch);
+    g.set_cycle(best_node, saved);
+    r.cycle_edges = cycle_path_;
+    r.cycle_cost = c;
+  }
+  if (learn && complete && !r.hit_node_limit && !r.hit_time_limit) {
+    const double total = r.found ? r.prefix_cost + r.cycle_cost : kInf;
+    for (NodeId m : closed_list_) g.learn(m, total - S.g[m]);
+  }
+  if (r.found && !complete) {
+    // A lasso was found but not proven optimal; report the limit and keep it.
+  }
+  return r;
+}
+
+}  // namespace rtamp::plan

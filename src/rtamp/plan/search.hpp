@@ -1,0 +1,99 @@
+// Search strategies over the product graph and the lasso search (paper
+// Section III.B: graph search with motion costs; DESIGN.md "Plans are lassos").
+//
+// A lasso plan is a path from the initial node to an accepting node N plus a
+// cycle (>= 1 edge) from N back to N; its cost is prefix + cycle. LassoSearch
+// minimises it exactly:
+//   1. Best-first search from the initial node in order of f = g + h (h = 0:
+//      Dijkstra; h admissible: A*). Nodes are re-opened when a cheaper path is
+//      found, so admissibility suffices for exact g at the end.
+//   2. Whenever an accepting node N is popped, find its cheapest cycle by a
+//      second best-first search from N's successors back to N, pruned at
+//      best - g(N) (only cycles that would improve the incumbent matter; the
+//      heuristic there is state_distance_bound to N's state). Cycle costs do
+//      not depend on the start, so they are kept in the graph (exact, or "none
+//      below b") and reused by later queries.
+//   3. Stop when the smallest f in the open list is >= best.
+// Optimality: let L* = P + C be an optimal lasso through accepting node N*.
+// Every node m on its prefix has f(m) <= g*(m) + V(m) <= L*, where V(m) is the
+// cost of the best lasso continuing from m and h(m) <= V(m) (h bounds the
+// distance to *some* accepting node, and V(m) is at least that). So until N*
+// is popped with g = g*(N*) the open list holds a node with f <= L*, and the
+// search cannot stop with best > L*; when N* is popped its cycle search finds
+// C (the bound best - g(N*) > C unless best is already optimal). Learned
+// values (experience) are C*_old - g_old(m) for nodes m closed by an earlier
+// complete search on the same graph: since g_old(m) >= the true distance and
+// C*_old <= g_old(m) + V(m), they are <= V(m) too.
+// Memory: per-search arrays indexed by node id (g, parent, parent edge,
+// heuristic, generation stamp), a binary heap with lazy deletion (stale
+// entries are skipped), all grown geometrically and reused across queries.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "rtamp/plan/heuristic.hpp"
+#include "rtamp/plan/plan.hpp"
+#include "rtamp/plan/product_graph.hpp"
+
+namespace rtamp::plan {
+
+enum class Algorithm { Dijkstra, AStar, AStarExperience };
+enum class GraphConstruction { Partial, Full };
+const char* to_string(Algorithm a);
+const char* to_string(GraphConstruction g);
+
+struct SearchLimits {
+  std::size_t max_nodes = 20'000'000;  // product nodes in the graph
+  double time_limit = 60;              // seconds; <= 0: none
+};
+
+struct LassoResult {
+  bool found = false;
+  bool hit_node_limit = false, hit_time_limit = false;
+  NodeId accepting = kNoNode;
+  std::vector<std::uint32_t> prefix_edges, cycle_edges;  // edge indices in the graph
+  double prefix_cost = 0, cycle_cost = 0;
+};
+
+class LassoSearch {
+ public:
+  // `learn`: store experience (learned bounds) in the graph after a complete search.
+  // `cycle_heuristic`: use state_distance_bound in cycle searches (else 0).
+  LassoResult run(ProductGraph& g, NodeId init, Heuristic& h, bool cycle_heuristic, bool learn,
+                  const SearchLimits& limits, std::int64_t deadline_ns, SearchStats& stats);
+  std::size_t memory_bytes() const { return prefix_.bytes() + cycle_.bytes(); }
+
+ private:
+  struct Item {
+    double f, g;
+    NodeId n;
+  };
+  struct Space {
+    std::vector<double> g, h;
+    std::vector<NodeId> parent;
+    std::vector<std::uint32_t> pedge, stamp;
+    std::vector<std::uint8_t> closed;
+    std::vector<Item> heap;
+    std::uint32_t gen = 0;
+    void begin(std::size_t n);
+    void ensure(std::size_t n);
+    bool seen(NodeId n) const { return stamp[n] == gen; }
+    void push(Item it);
+    Item pop();
+    std::size_t bytes() const;
+  };
+  // Cheapest cycle through n below `bound`; kInf if none. Fills cycle_path_ when found.
+  double cycle(ProductGraph& g, NodeId n, double bound, bool heuristic, const SearchLimits& limits,
+               std::int64_t deadline_ns, SearchStats& stats, LassoResult& r);
+  bool out_of_budget(const ProductGraph& g, const SearchLimits& limits, std::int64_t deadline_ns, LassoResult& r);
+
+  Space prefix_, cycle_;
+  std::vector<NodeId> closed_list_;
+  std::vector<std::uint32_t> cycle_path_;
+  std::uint64_t ticks_ = 0;
+};
+
+std::int64_t steady_now_ns();
+
+}  // namespace rtamp::plan

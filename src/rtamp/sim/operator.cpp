@@ -1,0 +1,246 @@
+#include "rtamp/sim/operator.hpp"
+
+#include "rtamp/sim/scene.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace rtamp::sim {
+
+namespace {
+
+using Kind = world::Intervention::Kind;
+
+Eigen::Isometry3d at(const world::Vec3& p) {
+  Eigen::Isometry3d t = Eigen::Isometry3d::Identity();
+  t.translation() = Eigen::Vector3d(p[0], p[1], p[2]);
+  return t;
+}
+
+std::string fmt(const world::Vec3& p) {
+  char buf[96];
+  std::snprintf(buf, sizeof buf, "(%.3f, %.3f, %.3f)", p[0], p[1], p[2]);
+  return buf;
+}
+
+}  // namespace
+
+Operator::Operator(Simulation& sim, OperatorOptions options)
+    : sim_(sim), options_(std::move(options)), rng_(options_.seed) {
+  std::stable_sort(options_.script.begin(), options_.script.end(),
+                   [](const auto& a, const auto& b) { return a.time < b.time; });
+  next_random_ = std::numeric_limits<double>::infinity();
+  if (options_.random_rate > 0) {
+    next_random_ = options_.random_start;
+    schedule_random();
+  }
+}
+
+void Operator::schedule_random() {
+  std::exponential_distribution<double> gap(options_.random_rate);
+  next_random_ += gap(rng_);
+}
+
+double Operator::next_time() const {
+  double t = next_random_;
+  if (next_script_ < options_.script.size()) t = std::min(t, options_.script[next_script_].time);
+  return t;
+}
+
+std::vector<OperatorEvent> Operator::update() {
+  std::vector<OperatorEvent> out;
+  const double now = sim_.time();
+  while (next_script_ < options_.script.size() && options_.script[next_script_].time <= now)
+    out.push_back(apply(options_.script[next_script_++]));
+  while (next_random_ <= now) {
+    out.push_back(apply(random_intervention()));
+    schedule_random();
+  }
+  return out;
+}
+
+world::Geometry Operator::current_geometry() const { return sim::current_geometry(sim_); }
+
+std::vector<int> Operator::contents_of(int container) const { return sim::contents_of(sim_, container); }
+
+std::optional<world::Vec3> Operator::spot_in(const std::string& location, const world::Vec3& size,
+                                             const std::vector<int>& exclude) {
+  // Keep clear of the gripper's fingers when the hand is low over the table.
+  std::vector<world::Footprint> keep_clear;
+  const Eigen::Vector3d tool = sim_.tool_pose().translation();
+  if (tool.z() < 0.25) keep_clear.push_back(world::footprint_at({tool.x(), tool.y(), 0}, {0.1, 0.12, 0}));
+  return sim::free_spot(sim_, location, size, exclude, 0.02, keep_clear);
+}
+
+bool Operator::overlaps_anything(const world::Vec3& base, const world::Vec3& size,
+                                 const std::vector<int>& exclude) const {
+  world::Footprint f = world::footprint_at(base, size);
+  for (std::size_t i = 0; i < sim_.things().size(); ++i) {
+    const Thing& t = sim_.things()[i];
+    const int ii = static_cast<int>(i);
+    if (!t.present || t.name.empty() || sim_.held() == ii) continue;
+    if (std::find(exclude.begin(), exclude.end(), ii) != exclude.end()) continue;
+    const Eigen::Vector3d p = sim_.position(ii);
+    // Objects resting inside a container may share its footprint when placed into it.
+    if (t.container && base[2] > p.z() + 1e-3) continue;
+    if (f.overlaps(world::footprint_at({p.x(), p.y(), 0}, t.size))) return true;
+  }
+  return false;
+}
+
+std::string Operator::random_location(const std::string& avoid) {
+  std::vector<std::string> locs;
+  for (const auto& r : sim_.scenario().regions)
+    if (r.name != avoid) locs.push_back(r.name);
+  for (const auto& t : sim_.things())
+    if (t.container && t.present && !t.name.empty() && t.name != avoid) locs.push_back(t.name);
+  if (locs.empty()) return avoid;
+  std::uniform_int_distribution<std::size_t> pick(0, locs.size() - 1);
+  return locs[pick(rng_)];
+}
+
+world::Intervention Operator::random_intervention() {
+  world::Intervention iv;
+  iv.time = sim_.time();
+  std::uniform_int_distribution<std::size_t> kind(0, options_.random_kinds.size() - 1);
+  iv.kind = options_.random_kinds.empty() ? Kind::Relocate : options_.random_kinds[kind(rng_)];
+  std::vector<std::string> objects;
+  for (std::size_t i = 0; i < sim_.things().size(); ++i) {
+    const Thing& t = sim_.things()[i];
+    if (!t.container && t.present && !t.name.empty() && sim_.held() != static_cast<int>(i))
+      objects.push_back(t.name);
+  }
+  auto any_object = [&]() -> std::string {
+    if (objects.empty()) return "";
+    std::uniform_int_distribution<std::size_t> pick(0, objects.size() - 1);
+    return objects[pick(rng_)];
+  };
+  switch (iv.kind) {
+    case Kind::Relocate:
+    case Kind::Remove:
+      iv.subject = any_object();
+      break;
+    case Kind::Add:
+      iv.subject = "added" + std::to_string(++added_);
+      iv.cls = "block";
+      break;
+    case Kind::AddContainer:
+      iv.subject = "tray" + std::to_string(++added_);
+      iv.cls = "tray";
+      break;
+    case Kind::RemoveContainer:
+      for (const auto& t : sim_.things())
+        if (t.container && t.present && !t.name.empty()) iv.subject = t.name;
+      break;
+    case Kind::TakeFromGripper:
+      break;
+  }
+  return iv;
+}
+
+OperatorEvent Operator::apply(const world::Intervention& iv) {
+  OperatorEvent ev;
+  ev.time = sim_.time();
+  ev.what = iv;
+  auto refuse = [&](std::string why) {
+    ev.applied = false;
+    ev.detail = std::move(why);
+    history_.push_back(ev);
+    return ev;
+  };
+  auto done = [&](std::string what) {
+    ev.applied = true;
+    ev.detail = std::move(what);
+    history_.push_back(ev);
+    return ev;
+  };
+  // Where a thing of `size` goes: explicit position (refused if occupied) or a free spot.
+  auto target = [&](const world::Vec3& size, const std::vector<int>& exclude,
+                    const std::string& avoid) -> std::optional<world::Vec3> {
+    if (iv.position) {
+      if (overlaps_anything(*iv.position, size, exclude)) return std::nullopt;
+      return *iv.position;
+    }
+    std::string loc = iv.location.empty() ? random_location(avoid) : iv.location;
+    return spot_in(loc, size, exclude);
+  };
+
+  switch (iv.kind) {
+    case Kind::Relocate: {
+      const int i = sim_.find(iv.subject);
+      if (i < 0 || !sim_.thing(i).present) return refuse("no '" + iv.subject + "' in the scene");
+      const Thing& t = sim_.thing(i);
+      std::vector<int> moved{i};
+      if (t.container) {
+        auto in = contents_of(i);
+        moved.insert(moved.end(), in.begin(), in.end());
+      }
+      world::Geometry g = current_geometry();
+      const Eigen::Vector3d p0 = sim_.position(i);
+      std::string here = t.container ? g.locate_region({p0.x(), p0.y(), p0.z()})
+                                     : g.locate({p0.x(), p0.y(), p0.z() - t.size[2] / 2});
+      if (t.container && iv.location == t.name) return refuse("a container cannot go into itself");
+      auto to = target(t.size, moved, here);
+      if (!to) return refuse("no free spot for '" + iv.subject + "'");
+      if (sim_.held() == i) sim_.detach();
+      const double z = t.container ? (*to)[2] : (*to)[2] + t.size[2] / 2 + 0.001;
+      const Eigen::Vector3d delta = Eigen::Vector3d((*to)[0], (*to)[1], z) - p0;
+      for (int k : moved) {
+        auto p = sim_.pose(k);
+        if (k == i) p = at({(*to)[0], (*to)[1], z});
+        else p.translation() += delta;
+        sim_.set_pose(k, p);
+      }
+      return done("to " + fmt(*to));
+    }
+    case Kind::Add:
+    case Kind::AddContainer: {
+      const bool container = iv.kind == Kind::AddContainer;
+      if (iv.subject.empty()) return refuse("no name for the added thing");
+      int existing = sim_.find(iv.subject);
+      if (existing >= 0 && sim_.thing(existing).present) return refuse("'" + iv.subject + "' is already there");
+      world::Vec3 size = container ? sim_.options().mjcf.spare_tray_size : sim_.options().mjcf.spare_block_size;
+      if (existing >= 0) size = sim_.thing(existing).size;
+      auto to = target(size, {}, "");
+      if (!to) return refuse("no free spot for '" + iv.subject + "'");
+      const double z = container ? (*to)[2] : (*to)[2] + size[2] / 2 + 0.001;
+      try {
+        sim_.add(iv.subject, iv.cls.empty() ? (container ? "tray" : "block") : iv.cls, container,
+                 at({(*to)[0], (*to)[1], z}), size);
+      } catch (const Error& e) {
+        return refuse(e.message());
+      }
+      return done("at " + fmt(*to));
+    }
+    case Kind::Remove:
+    case Kind::RemoveContainer: {
+      const int i = sim_.find(iv.subject);
+      if (i < 0 || !sim_.thing(i).present) return refuse("no '" + iv.subject + "' in the scene");
+      sim_.hide(i);
+      return done("removed");
+    }
+    case Kind::TakeFromGripper: {
+      const int i = sim_.held();
+      if (i < 0) return refuse("the gripper holds nothing");
+      ev.what.subject = sim_.thing(i).name;
+      sim_.detach();
+      if (iv.location.empty() && !iv.position) {
+        sim_.hide(i);
+        return done("took '" + sim_.thing(i).name + "' away");
+      }
+      const Thing& t = sim_.thing(i);
+      auto to = target(t.size, {i}, "");
+      if (!to) {
+        sim_.hide(i);
+        return done("took '" + t.name + "' away (no free spot in " + iv.location + ")");
+      }
+      const double z = t.container ? (*to)[2] : (*to)[2] + t.size[2] / 2 + 0.001;
+      sim_.set_pose(i, at({(*to)[0], (*to)[1], z}));
+      return done("took '" + t.name + "' to " + fmt(*to));
+    }
+  }
+  return refuse("unknown intervention");
+}
+
+}  // namespace rtamp::sim

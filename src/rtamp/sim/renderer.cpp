@@ -1,0 +1,186 @@
+#include "rtamp/sim/renderer.hpp"
+
+#include <EGL/egl.h>
+#include <EGL/eglext.h>
+#include <png.h>
+
+#include <cstring>
+
+#include "rtamp/util/error.hpp"
+
+namespace rtamp::sim {
+
+struct Renderer::Impl {
+  EGLDisplay display = EGL_NO_DISPLAY;
+  EGLContext context = EGL_NO_CONTEXT;
+  EGLSurface surface = EGL_NO_SURFACE;
+  mjvScene scene;
+  mjvOption option;
+  mjvCamera camera;
+  mjrContext con;
+  bool scene_made = false, con_made = false;
+};
+
+namespace {
+
+EGLDisplay surfaceless_display() {
+  auto get_platform_display =
+      reinterpret_cast<PFNEGLGETPLATFORMDISPLAYEXTPROC>(eglGetProcAddress("eglGetPlatformDisplayEXT"));
+  if (get_platform_display) {
+    EGLDisplay d = get_platform_display(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr);
+    if (d != EGL_NO_DISPLAY) return d;
+  }
+  return eglGetDisplay(EGL_DEFAULT_DISPLAY);
+}
+
+}  // namespace
+
+Renderer::Renderer(const Simulation& sim, RenderOptions options) : impl_(new Impl), sim_(sim), options_(options) {
+  Impl& r = *impl_;
+  auto fail = [&](const std::string& what) {
+    this->~Renderer();
+    throw Error("offscreen rendering unavailable: " + what);
+  };
+  r.display = surfaceless_display();
+  if (r.display == EGL_NO_DISPLAY) fail("no EGL display (need Mesa's EGL: libegl-mesa0)");
+  EGLint major = 0, minor = 0;
+  if (!eglInitialize(r.display, &major, &minor)) fail("eglInitialize failed");
+  const EGLint config_attribs[] = {EGL_SURFACE_TYPE, EGL_PBUFFER_BIT, EGL_RED_SIZE, 8, EGL_GREEN_SIZE, 8,
+                                   EGL_BLUE_SIZE, 8, EGL_ALPHA_SIZE, 8, EGL_DEPTH_SIZE, 24,
+                                   EGL_RENDERABLE_TYPE, EGL_OPENGL_BIT, EGL_NONE};
+  EGLConfig config;
+  EGLint nconfig = 0;
+  if (!eglChooseConfig(r.display, config_attribs, &config, 1, &nconfig) || nconfig < 1) fail("no EGL config");
+  const EGLint pbuffer_attribs[] = {EGL_WIDTH, options_.width, EGL_HEIGHT, options_.height, EGL_NONE};
+  r.surface = eglCreatePbufferSurface(r.display, config, pbuffer_attribs);
+  if (r.surface == EGL_NO_SURFACE) fail("no pbuffer surface");
+  if (!eglBindAPI(EGL_OPENGL_API)) fail("eglBindAPI(OpenGL) failed");
+  r.context = eglCreateContext(r.display, config, EGL_NO_CONTEXT, nullptr);
+  if (r.context == EGL_NO_CONTEXT) fail("no OpenGL context");
+  if (!eglMakeCurrent(r.display, r.surface, r.surface, r.context)) fail("eglMakeCurrent failed");
+
+  const mjModel* m = sim_.model();
+  mjv_defaultScene(&r.scene);
+  mjv_defaultOption(&r.option);
+  mjv_defaultCamera(&r.camera);
+  mjr_defaultContext(&r.con);
+  mjv_makeScene(m, &r.scene, 2000);
+  r.scene_made = true;
+  // The model's offscreen buffer must hold the image.
+  mjModel* mm = const_cast<mjModel*>(m);
+  mm->vis.global.offwidth = std::max(mm->vis.global.offwidth, options_.width);
+  mm->vis.global.offheight = std::max(mm->vis.global.offheight, options_.height);
+  mjr_makeContext(m, &r.con, mjFONTSCALE_100);
+  r.con_made = true;
+  mjr_setBuffer(mjFB_OFFSCREEN, &r.con);
+  if (r.con.currentBuffer != mjFB_OFFSCREEN) fail("MuJoCo has no offscreen buffer");
+  r.scene.flags[mjRND_SHADOW] = 0;
+  r.scene.flags[mjRND_REFLECTION] = 0;
+  r.scene.flags[mjRND_SKYBOX] = 0;
+  r.camera.type = mjCAMERA_FIXED;
+  r.camera.fixedcamid = mj_name2id(m, mjOBJ_CAMERA, "overview");
+  if (options_.labels) r.option.label = mjLABEL_BODY;
+  (void)major, (void)minor;
+}
+
+Renderer::~Renderer() {
+  if (!impl_) return;
+  Impl& r = *impl_;
+  if (r.con_made) mjr_freeContext(&r.con);
+  if (r.scene_made) mjv_freeScene(&r.scene);
+  if (r.display != EGL_NO_DISPLAY) {
+    eglMakeCurrent(r.display, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
+    if (r.context != EGL_NO_CONTEXT) eglDestroyContext(r.display, r.context);
+    if (r.surface != EGL_NO_SURFACE) eglDestroySurface(r.display, r.surface);
+    eglTerminate(r.display);
+  }
+  delete impl_;
+  impl_ = nullptr;
+}
+
+void Renderer::render(std::vector<std::uint8_t>& rgb) {
+  Impl& r = *impl_;
+  const int w = options_.width, h = options_.height;
+  mjv_updateScene(sim_.model(), const_cast<mjData*>(sim_.data()), &r.option, nullptr, &r.camera, mjCAT_ALL,
+                  &r.scene);
+  mjrRect viewport{0, 0, w, h};
+  mjr_render(viewport, &r.scene, &r.con);
+  flip_.resize(static_cast<std::size_t>(w) * h * 3);
+  mjr_readPixels(flip_.data(), nullptr, viewport, &r.con);
+  rgb.resize(flip_.size());
+  const std::size_t row = static_cast<std::size_t>(w) * 3;
+  for (int y = 0; y < h; ++y)
+    std::memcpy(rgb.data() + row * y, flip_.data() + row * (h - 1 - y), row);
+}
+
+bool Renderer::project(const Eigen::Vector3d& p, double& x, double& y) const {
+  const mjModel* m = sim_.model();
+  const mjData* d = sim_.data();
+  const int cam = impl_->camera.fixedcamid;
+  const mjtNum* cp = d->cam_xpos + 3 * cam;
+  const mjtNum* cr = d->cam_xmat + 9 * cam;  // columns: camera x, y, z in world
+  const Eigen::Vector3d v = p - Eigen::Vector3d(cp[0], cp[1], cp[2]);
+  // Camera frame: x right, y up, looking along -z.
+  const double cx = cr[0] * v.x() + cr[3] * v.y() + cr[6] * v.z();
+  const double cy = cr[1] * v.x() + cr[4] * v.y() + cr[7] * v.z();
+  const double cz = cr[2] * v.x() + cr[5] * v.y() + cr[8] * v.z();
+  if (cz >= 0) return false;
+  const double fovy = m->cam_fovy[cam] * 3.14159265358979323846 / 180.0;
+  const double f = 0.5 * options_.height / std::tan(fovy / 2);
+  x = 0.5 * options_.width + f * cx / -cz;
+  y = 0.5 * options_.height - f * cy / -cz;
+  return true;
+}
+
+void write_png(const std::string& path, const std::vector<std::uint8_t>& rgb, int width, int height) {
+  std::FILE* f = std::fopen(path.c_str(), "wb");
+  if (!f) throw Error("cannot write '" + path + "': " + std::strerror(errno));
+  png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, nullptr, nullptr, nullptr);
+  png_infop info = png ? png_create_info_struct(png) : nullptr;
+  if (!png || !info || setjmp(png_jmpbuf(png))) {
+    png_destroy_write_struct(&png, &info);
+    std::fclose(f);
+    throw Error("cannot write PNG '" + path + "'");
+  }
+  png_init_io(png, f);
+  png_set_IHDR(png, info, static_cast<png_uint_32>(width), static_cast<png_uint_32>(height), 8, PNG_COLOR_TYPE_RGB,
+               PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
+  png_write_info(png, info);
+  for (int y = 0; y < height; ++y)
+    png_write_row(png, const_cast<png_bytep>(rgb.data() + static_cast<std::size_t>(y) * width * 3));
+  png_write_end(png, nullptr);
+  png_destroy_write_struct(&png, &info);
+  if (std::fclose(f) != 0) throw Error("cannot write '" + path + "'");
+}
+
+VideoWriter::VideoWriter(const std::string& path, int width, int height, int fps)
+    : path_(path), width_(width), height_(height) {
+  // The path is passed single-quoted; a quote inside it is escaped for the shell.
+  std::string quoted = "'";
+  for (char c : path) quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  quoted += "'";
+  const std::string cmd = "ffmpeg -y -loglevel error -f rawvideo -pix_fmt rgb24 -s " + std::to_string(width) + "x" +
+                          std::to_string(height) + " -r " + std::to_string(fps) +
+                          " -i - -c:v libx264 -pix_fmt yuv420p " + quoted;
+  pipe_ = popen(cmd.c_str(), "w");
+  if (!pipe_) throw Error("cannot start ffmpeg for '" + path + "'");
+}
+
+VideoWriter::~VideoWriter() {
+  if (pipe_) pclose(pipe_);
+}
+
+void VideoWriter::add(const std::vector<std::uint8_t>& rgb) {
+  if (!pipe_) return;
+  std::fwrite(rgb.data(), 1, rgb.size(), pipe_);
+  ++frames_;
+}
+
+void VideoWriter::close() {
+  if (!pipe_) return;
+  const int status = pclose(pipe_);
+  pipe_ = nullptr;
+  if (status != 0) throw Error("ffmpeg failed writing '" + path_ + "' (is ffmpeg installed?)");
+}
+
+}  // namespace rtamp::sim

@@ -1,0 +1,121 @@
+#include "rtamp/sim/scene.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <optional>
+
+namespace rtamp::sim {
+
+world::Geometry current_geometry(const Simulation& sim) {
+  std::vector<world::Container> cs;
+  for (std::size_t i = 0; i < sim.things().size(); ++i) {
+    const Thing& t = sim.things()[i];
+    if (!t.container || !t.present || t.name.empty() || sim.held() == static_cast<int>(i)) continue;
+    const Eigen::Vector3d p = sim.position(static_cast<int>(i));
+    int capacity = 8;
+    if (const auto* c = sim.scenario().find_container(t.name)) capacity = c->capacity;
+    cs.push_back({t.name, t.cls, {p.x(), p.y(), p.z()}, t.size, capacity, {}});
+  }
+  return world::Geometry(sim.scenario().regions, std::move(cs));
+}
+
+Eigen::Vector3d base_point(const Simulation& sim, int i) {
+  const Thing& t = sim.thing(i);
+  Eigen::Vector3d p = sim.position(i);
+  if (!t.container) p.z() -= t.size[2] / 2;
+  return p;
+}
+
+robot::ThingPose thing_pose(const Simulation& sim, int i) {
+  const Eigen::Isometry3d pose = sim.pose(i);
+  robot::ThingPose tp;
+  tp.position = base_point(sim, i);
+  tp.yaw = std::atan2(pose.linear()(1, 0), pose.linear()(0, 0));
+  return tp;
+}
+
+std::string location_of(const Simulation& sim, const world::Geometry& g, int i) {
+  const Eigen::Vector3d p = base_point(sim, i);
+  if (sim.thing(i).container) return g.locate_region({p.x(), p.y(), p.z()});
+  return g.locate({p.x(), p.y(), p.z()});
+}
+
+std::vector<int> contents_of(const Simulation& sim, int container) {
+  std::vector<int> in;
+  const world::Geometry g = current_geometry(sim);
+  const std::string& cname = sim.thing(container).name;
+  for (std::size_t i = 0; i < sim.things().size(); ++i) {
+    const Thing& t = sim.things()[i];
+    if (t.container || !t.present || t.name.empty() || sim.held() == static_cast<int>(i)) continue;
+    if (location_of(sim, g, static_cast<int>(i)) == cname) in.push_back(static_cast<int>(i));
+  }
+  return in;
+}
+
+std::optional<world::Vec3> free_spot(const Simulation& sim, const std::string& location, const world::Vec3& size,
+                                     const std::vector<int>& exclude, double gap,
+                                     const std::vector<world::Footprint>& keep_clear) {
+  const world::Geometry g = current_geometry(sim);
+  const int target = sim.find(location);
+  const bool into_container = target >= 0 && sim.thing(target).container;
+  std::vector<world::Footprint> occupied = keep_clear;
+  for (std::size_t i = 0; i < sim.things().size(); ++i) {
+    const Thing& t = sim.things()[i];
+    const int ii = static_cast<int>(i);
+    if (!t.present || t.name.empty() || sim.held() == ii) continue;
+    if (std::find(exclude.begin(), exclude.end(), ii) != exclude.end()) continue;
+    if (into_container && ii == target) continue;  // the tray itself is the area
+    const Eigen::Vector3d p = sim.position(ii);
+    // Things keep `gap` from each other (their footprints grow by it on every side);
+    // from a tray standing in the area, at most 1.5 cm (only its rim is in the way).
+    const double gg = t.container ? std::min(gap, 0.015) : gap;
+    occupied.push_back(world::footprint_at({p.x(), p.y(), 0}, {t.size[0] + 2 * gg, t.size[1] + 2 * gg, 0}));
+  }
+  if (into_container) {
+    // The rims are not floor: a thing must not overlap them.
+    const Thing& c = sim.thing(target);
+    const Eigen::Isometry3d cp = sim.pose(target);
+    const double hx = c.size[0] / 2, hy = c.size[1] / 2, r = kTrayRim;
+    const std::array<std::array<double, 4>, 4> rims{{{hx - r / 2, 0, r, c.size[1]},
+                                                     {-hx + r / 2, 0, r, c.size[1]},
+                                                     {0, hy - r / 2, c.size[0], r},
+                                                     {0, -hy + r / 2, c.size[0], r}}};
+    for (const auto& rim : rims) {
+      const Eigen::Vector3d w = cp * Eigen::Vector3d(rim[0], rim[1], 0);
+      const Eigen::Vector3d ext = (cp.linear() * Eigen::Vector3d(rim[2], rim[3], 0)).cwiseAbs();
+      occupied.push_back(world::footprint_at({w.x(), w.y(), 0}, {ext.x(), ext.y(), 0}));
+    }
+  }
+  const auto area = g.footprint_of(location);
+  const auto surface = g.surface_z(location);
+  if (!area || !surface) return std::nullopt;
+  // Candidates on a 5 mm grid over the area, the one nearest the area's centre first
+  // (ties: smaller x, then smaller y), so that greedy filling packs from the middle.
+  const double step = 0.005;
+  const double hx = (area->sx - size[0]) / 2, hy = (area->sy - size[1]) / 2;
+  if (hx < 0 || hy < 0) return std::nullopt;
+  const int nx = static_cast<int>(std::floor(hx / step + 1e-9)), ny = static_cast<int>(std::floor(hy / step + 1e-9));
+  std::optional<world::Vec3> best;
+  double best_d = 0;
+  for (int i = -nx; i <= nx; ++i) {
+    for (int j = -ny; j <= ny; ++j) {
+      const double x = area->x + i * step, y = area->y + j * step;
+      const double d = std::hypot(x - area->x, y - area->y);
+      if (best && d >= best_d - 1e-12) continue;
+      const world::Footprint f = world::footprint_at({x, y, 0}, size);
+      bool free = true;
+      for (const auto& o : occupied)
+        if (f.overlaps(o)) {
+          free = false;
+          break;
+        }
+      if (!free) continue;
+      best = world::Vec3{x, y, *surface};
+      best_d = d;
+    }
+  }
+  return best;
+}
+
+}  // namespace rtamp::sim

@@ -1,0 +1,41 @@
+// Questions about the current scene that perception, the operator and the skill runner
+// share: the symbolic geometry with the containers where they are NOW, which things a
+// container holds, and free spots that overlap nothing (a 5 mm grid search over the
+// location, nearest its centre, against the footprints of every present thing).
+// Invariant: a spot returned by free_spot() keeps `gap` from every present thing's
+// footprint except the excluded ones and the target container itself.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "rtamp/robot/skills.hpp"
+#include "rtamp/sim/simulation.hpp"
+#include "rtamp/world/geometry.hpp"
+
+namespace rtamp::sim {
+
+// Regions of the scenario and every present, not-held container at its current pose.
+world::Geometry current_geometry(const Simulation& sim);
+
+// Centre of a thing's base (a block's body origin is its centre, a tray's its base).
+Eigen::Vector3d base_point(const Simulation& sim, int thing);
+// Base point and yaw about world z.
+robot::ThingPose thing_pose(const Simulation& sim, int thing);
+
+// Location of a present thing by the geometric abstraction ("hand" is not considered).
+std::string location_of(const Simulation& sim, const world::Geometry& g, int thing);
+
+// Present objects (not containers, not held) whose base lies in `container`.
+std::vector<int> contents_of(const Simulation& sim, int container);
+
+// A free spot (centre of the base) for a thing of `size` in `location`: inside its
+// footprint, keeping `gap` from every present thing (except `exclude`) and not
+// overlapping `keep_clear` (or a target tray's rims); of all such spots on a 5 mm grid,
+// the one nearest the location's centre. nullopt if the location is unknown or full.
+std::optional<world::Vec3> free_spot(const Simulation& sim, const std::string& location, const world::Vec3& size,
+                                     const std::vector<int>& exclude, double gap = 0.02,
+                                     const std::vector<world::Footprint>& keep_clear = {});
+
+}  // namespace rtamp::sim

@@ -1,0 +1,103 @@
+// A simulated episode driven by an explicit action list — what `rtamp sim SCENARIO
+// --do "move o1 r3; move r3 r2"` runs, and a facade bundling simulation, controller,
+// skill runner, perception and operator for callers (tests, benchmarks, the exec layer).
+//
+// Action list syntax: actions separated by ';' (blank ones ignored), words by spaces:
+//   move THING LOCATION   pick THING, place it in LOCATION (region or tray)
+//   pick THING            place LOCATION (the held thing)
+//   wait SECONDS          let the simulation run (the operator acts meanwhile)
+// Errors in the list are rtamp::Error with the 1-based column in the list text.
+// Each action runs to SUCCESS or FAILURE; a failed action does not stop the list (the
+// next one starts from whatever state the world is in), so outcomes are reported per
+// action. Operator interventions (scripted and random) are applied between physics
+// steps whenever they are due. Rendering happens only when a video is being recorded.
+// Determinism: the same scenario, options and seed give the same episode.
+#pragma once
+
+#include <chrono>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "rtamp/sim/controller.hpp"
+#include "rtamp/sim/operator.hpp"
+#include "rtamp/sim/perception.hpp"
+#include "rtamp/sim/renderer.hpp"
+#include "rtamp/sim/skill_runner.hpp"
+
+namespace rtamp::sim {
+
+struct SimAction {
+  enum class Kind { Move, Pick, Place, Wait };
+  Kind kind = Kind::Move;
+  std::string thing;     // Move, Pick
+  std::string location;  // Move, Place
+  double seconds = 0;    // Wait
+  std::string text;      // as written
+  int column = 1;        // where it starts in the list (1-based)
+};
+
+std::vector<SimAction> parse_actions(const std::string& text);
+
+struct SessionOptions {
+  SimOptions sim;
+  SkillRunnerOptions skills;
+  ControllerOptions controller;
+  PerceptionOptions perception;
+  OperatorOptions op;
+  bool scripted_operator = false;  // apply the scenario's interventions
+  std::uint64_t seed = 1;          // seeds perception and operator (overrides theirs)
+  std::string video_path;          // record the run when set
+  int video_fps = 30;
+  RenderOptions render;
+};
+
+struct SessionReport {
+  std::vector<ActionResult> actions;
+  std::vector<OperatorEvent> interventions;
+  Percept final_percept;
+  double sim_time = 0;   // s of simulated time
+  double wall_time = 0;  // s of wall-clock time for the actions
+  double real_time_factor() const { return wall_time > 0 ? sim_time / wall_time : 0; }
+  Warnings warnings;
+  int video_frames = 0;
+};
+
+class Session {
+ public:
+  Session(const world::Scenario& scenario, SessionOptions options = {});
+  ~Session();
+
+  Simulation& sim() { return sim_; }
+  Controller& controller() { return controller_; }
+  SkillRunner& skills() { return runner_; }
+  Perception& perception() { return perception_; }
+  Operator& op() { return operator_; }
+
+  // Runs one action to completion.
+  ActionResult execute(const SimAction& a);
+  // Runs a list and reports; `on_action` (optional) sees each result as it finishes.
+  SessionReport run(const std::vector<SimAction>& actions,
+                    const std::function<void(const ActionResult&)>& on_action = {});
+  // Renders the current scene to a PNG (makes a renderer if none is open).
+  void snapshot(const std::string& png_path);
+
+ private:
+  void after_step();
+
+  SessionOptions options_;
+  Simulation sim_;
+  Controller controller_;
+  SkillRunner runner_;
+  Perception perception_;
+  Operator operator_;
+  std::vector<OperatorEvent> events_;
+  std::unique_ptr<Renderer> renderer_;
+  std::unique_ptr<VideoWriter> video_;
+  std::vector<std::uint8_t> frame_;
+  double next_frame_ = 0;
+  std::function<void()> on_step_;
+};
+
+}  // namespace rtamp::sim

@@ -1,0 +1,155 @@
+#include "rtamp/sim/skill_runner.hpp"
+
+#include <cmath>
+
+namespace rtamp::sim {
+
+SkillRunner::SkillRunner(Simulation& sim, Controller& controller, SkillRunnerOptions options)
+    : sim_(sim), controller_(controller), options_(std::move(options)) {
+  robot::Ur5Kinematics::Config cfg;
+  cfg.base = robot::Ur5Kinematics::base_pose(sim.scenario().robot);
+  cfg.tool_offset = sim.options().mjcf.arm.tool_offset;
+  arm_ = robot::Ur5Kinematics(cfg);
+}
+
+robot::Grasp SkillRunner::grasp_for(int i) const {
+  const Thing& t = sim_.thing(i);
+  if (!t.container) return robot::Grasp::block(t.size);
+  // A long rim (+y side; 2-fold: or the -y side), fingers closing across it (tool y
+  // along the tray's y), tool point 1 cm below the rim top.
+  robot::Grasp g;
+  const double h = std::max(t.size[2], kTrayPlate + 0.005);
+  g.offset = Eigen::Vector3d(0, t.size[1] / 2 - kTrayRim / 2, std::max(kTrayPlate + 0.006, h - 0.01));
+  g.yaw = 0;
+  g.yaw_symmetry = 2;
+  return g;
+}
+
+std::optional<world::Vec3> SkillRunner::place_spot(int i, const std::string& location) const {
+  const Thing& t = sim_.thing(i);
+  std::vector<int> exclude{i};
+  exclude.insert(exclude.end(), carried_.begin(), carried_.end());
+  // Keep the fingers' room by the long rims of a target tray free (they grasp there).
+  std::vector<world::Footprint> keep_clear;
+  const int target = sim_.find(location);
+  if (target >= 0 && sim_.thing(target).container && sim_.thing(target).present) {
+    const Thing& c = sim_.thing(target);
+    const Eigen::Isometry3d cp = sim_.pose(target);
+    for (int s : {-1, 1}) {
+      const double inner = c.size[1] / 2 - kTrayRim / 2 - sim_.finger_max() - kFingerPad / 2;
+      const Eigen::Vector3d z = cp * Eigen::Vector3d(0, s * inner, 0);
+      keep_clear.push_back(world::footprint_at({z.x(), z.y(), 0}, {0.026, kFingerPad + 0.002, 0}));
+    }
+  }
+  return free_spot(sim_, location, t.size, exclude, options_.place_gap, keep_clear);
+}
+
+bool SkillRunner::start_pick(const std::string& object) {
+  const int i = sim_.find(object);
+  if (i < 0 || !sim_.thing(i).present) {
+    controller_.fail("'" + object + "' is not in the scene");
+    return false;
+  }
+  if (sim_.held() >= 0) {
+    controller_.fail("the gripper already holds '" + sim_.thing(sim_.held()).name + "'");
+    return false;
+  }
+  carried_.clear();
+  if (sim_.thing(i).container) carried_ = contents_of(sim_, i);
+  const robot::Grasp g = grasp_for(i);
+  SimCollisionChecker checker(sim_, carried_);
+  robot::SkillPlan p = robot::plan_pick(arm_, sim_.arm_q(), thing_pose(sim_, i), g, options_.skill,
+                                        options_.collision_checking ? &checker : nullptr);
+  if (!p.ok) {
+    controller_.fail("cannot pick '" + object + "': " + p.why);
+    return false;
+  }
+  grasp_yaw_ = p.grasp_yaw;
+  MotionPlan m;
+  m.trajectory = std::move(p.trajectory);
+  for (const auto& e : p.events) m.events.push_back({e.time, e.kind == robot::GripperEvent::Kind::Close});
+  m.object = object;
+  m.cost = p.cost;
+  m.skill = "pick";
+  controller_.start(std::move(m));
+  return controller_.status() == Status::Running;
+}
+
+bool SkillRunner::start_place(const std::string& location) {
+  const int i = sim_.held();
+  if (i < 0) {
+    controller_.fail("nothing in the gripper to place");
+    return false;
+  }
+  const std::string object = sim_.thing(i).name;
+  if (location == object) {
+    controller_.fail("cannot place '" + object + "' into itself");
+    return false;
+  }
+  auto spot = place_spot(i, location);
+  if (!spot) {
+    controller_.fail("no free spot for '" + object + "' in '" + location + "'");
+    return false;
+  }
+  robot::ThingPose target;
+  target.position = Eigen::Vector3d((*spot)[0], (*spot)[1], (*spot)[2] + options_.drop_height);
+  target.yaw = thing_pose(sim_, i).yaw;
+  robot::Grasp g = grasp_for(i);
+  g.yaw = grasp_yaw_;
+  std::vector<int> ignore = carried_;
+  SimCollisionChecker checker(sim_, ignore);
+  robot::SkillPlan p = robot::plan_place(arm_, sim_.arm_q(), target, g, options_.skill,
+                                         options_.collision_checking ? &checker : nullptr);
+  if (!p.ok) {
+    controller_.fail("cannot place '" + object + "' in '" + location + "': " + p.why);
+    return false;
+  }
+  MotionPlan m;
+  m.trajectory = std::move(p.trajectory);
+  for (const auto& e : p.events) m.events.push_back({e.time, e.kind == robot::GripperEvent::Kind::Close});
+  m.object = object;
+  m.cost = p.cost;
+  m.skill = "place";
+  controller_.start(std::move(m));
+  return controller_.status() == Status::Running;
+}
+
+Status SkillRunner::run_controller(const std::function<void()>& on_step, double max_time) {
+  const double until = sim_.time() + max_time;
+  while (controller_.status() == Status::Running) {
+    if (sim_.time() >= until) {
+      controller_.halt();
+      controller_.fail("timed out");
+      break;
+    }
+    controller_.step();
+    if (on_step) on_step();
+  }
+  return controller_.status();
+}
+
+ActionResult SkillRunner::move(const std::string& object, const std::string& location,
+                               const std::function<void()>& on_step) {
+  ActionResult r;
+  r.action = "move " + object + " " + location;
+  r.start = sim_.time();
+  auto finish = [&] {
+    r.status = controller_.status();
+    r.reason = controller_.reason();
+    r.duration = sim_.time() - r.start;
+    return r;
+  };
+  if (start_pick(object)) {
+    r.cost += controller_.plan().cost;
+    run_controller(on_step);
+  }
+  if (controller_.status() != Status::Success) return finish();
+  if (start_place(location)) {
+    r.cost += controller_.plan().cost;
+    run_controller(on_step);
+  }
+  carried_.clear();
+  return finish();
+}
+
+}  // namespace rtamp::sim

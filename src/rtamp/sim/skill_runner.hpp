@@ -1,0 +1,87 @@
+// Skills executed in the simulation: the bridge between the robot layer's skill plans
+// (robot/skills.hpp: pick(o), place(o, spot) as trajectories + gripper events) and the
+// controller. It reads where things are from the simulation, chooses a free spot in the
+// target location (scene.hpp), plans with a MuJoCo collision checker on a scratch
+// mjData, and starts the controller — the paper's "skill library" of Fig. 2 running on
+// the simulated UR5. A tray is moved like a block (grasped on a long rim); its contents
+// ride along physically.
+//
+// Non-blocking use (a BT action node): start_pick / start_place, then Controller::step()
+// until it is not RUNNING. Blocking use (CLI, tests): move(o, l) = pick + place.
+// Invariants: a failed plan leaves the controller in FAILURE with the planner's reason
+// (e.g. "unreachable"); a place is only started while the object is held.
+#pragma once
+
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "rtamp/robot/skills.hpp"
+#include "rtamp/sim/controller.hpp"
+#include "rtamp/sim/scene.hpp"
+
+namespace rtamp::sim {
+
+// robot::CollisionChecker on the simulation's scratch data.
+class SimCollisionChecker final : public robot::CollisionChecker {
+ public:
+  SimCollisionChecker(const Simulation& sim, std::vector<int> ignore = {}) : sim_(sim), ignore_(std::move(ignore)) {}
+  bool config_collides(const robot::Joints& q) override {
+    ++calls_;
+    return sim_.config_collides(q, ignore_);
+  }
+  long calls() const { return calls_; }
+
+ private:
+  const Simulation& sim_;
+  std::vector<int> ignore_;
+  long calls_ = 0;
+};
+
+struct ActionResult {
+  std::string action;  // "move o1 r2"
+  Status status = Status::Idle;
+  std::string reason;  // failure reason
+  double cost = 0;     // motion cost: tool path length of the executed plans (m)
+  double start = 0;    // sim time at start
+  double duration = 0; // sim time it took
+};
+
+struct SkillRunnerOptions {
+  robot::SkillOptions skill;
+  double place_gap = 0.035;   // clearance between placed things (room for the fingers)
+  double drop_height = 0.003; // place a thing this far above its support
+  bool collision_checking = true;
+};
+
+class SkillRunner {
+ public:
+  SkillRunner(Simulation& sim, Controller& controller, SkillRunnerOptions options = {});
+
+  const robot::Ur5Kinematics& arm() const { return arm_; }
+  // The grasp used for a thing (blocks: around the middle; trays: a long rim).
+  robot::Grasp grasp_for(int thing) const;
+
+  // Plan and start a pick of `object`. False (controller in FAILURE) if planning failed.
+  bool start_pick(const std::string& object);
+  // Plan and start placing the held object into `location` (region or container).
+  bool start_place(const std::string& location);
+  // The spot a place into `location` would use for thing `i` (centre of its base).
+  std::optional<world::Vec3> place_spot(int thing, const std::string& location) const;
+
+  // Blocking pick + place; `on_step` runs after every physics step (operator, video).
+  ActionResult move(const std::string& object, const std::string& location,
+                    const std::function<void()>& on_step = {});
+  // Runs the controller to completion, calling on_step after each physics step.
+  Status run_controller(const std::function<void()>& on_step, double max_time = 120);
+
+ private:
+  Simulation& sim_;
+  Controller& controller_;
+  SkillRunnerOptions options_;
+  robot::Ur5Kinematics arm_;
+  double grasp_yaw_ = 0;       // relative tool yaw chosen by the last pick
+  std::vector<int> carried_;   // contents of a picked tray
+};
+
+}  // namespace rtamp::sim

@@ -1,0 +1,239 @@
+#include "rtamp/task/transition_system.hpp"
+
+#include <algorithm>
+#include <bit>
+#include <cmath>
+
+#include "rtamp/util/error.hpp"
+#include "rtamp/world/geometry.hpp"
+
+namespace rtamp::task {
+
+namespace {
+std::uint64_t fnv1a(const std::string& s) {
+  std::uint64_t h = 1469598103934665603ull;
+  for (unsigned char c : s) {
+    h ^= c;
+    h *= 1099511628211ull;
+  }
+  return h;
+}
+
+}  // namespace
+
+System::System(const world::Scenario& scenario) : System(scenario, world::initial_placement(scenario)) {}
+
+System::System(const world::Scenario& scenario, const world::Placement& placement, const std::string& hand,
+               Options options)
+    : scenario_(scenario), options_(options) {
+  n_objects_ = static_cast<unsigned>(scenario_.objects.size());
+  n_containers_ = static_cast<unsigned>(scenario_.containers.size());
+  n_regions_ = static_cast<unsigned>(scenario_.regions.size());
+  if (n_regions_ == 0) throw Error("the scenario has no regions");
+  if (num_locations() > kMaxLocations)
+    throw Error("too many locations (" + std::to_string(num_locations()) + "; at most " +
+                std::to_string(kMaxLocations) + ")");
+  for (const auto& o : scenario_.objects) {
+    thing_names_.push_back(o.name);
+    thing_classes_.push_back(o.cls);
+  }
+  for (const auto& c : scenario_.containers) {
+    thing_names_.push_back(c.name);
+    thing_classes_.push_back(c.cls);
+  }
+  for (const auto& n : thing_names_) uids_.push_back(fnv1a(n));
+  for (const auto& r : scenario_.regions) capacities_.push_back(r.capacity);
+  for (const auto& c : scenario_.containers) capacities_.push_back(c.capacity);
+
+  // Field width: values 0..num_locations() (home included).
+  layout_.bits = std::max(1u, static_cast<unsigned>(std::bit_width(num_locations())));
+  layout_.per_word = 64 / layout_.bits;
+  layout_.num_fields = num_things() + 1;
+  layout_.words = (layout_.num_fields + layout_.per_word - 1) / layout_.per_word;
+  if (layout_.words > kStateWords)
+    throw Error("too many objects and containers for the packed state (" + std::to_string(num_things()) +
+                " things with " + std::to_string(layout_.bits) + "-bit fields; at most " +
+                std::to_string(kStateWords * layout_.per_word - 1) + ")");
+  const auto& base = scenario_.robot.base;
+  home_point_ = {base[0], base[1], base[2] + kHomeHeight};
+  initial_ = encode(placement, hand);
+  group_.assign(num_things(), -1);
+  prev_.assign(num_things(), -1);
+  next_.assign(num_things(), -1);
+}
+
+void System::set_symmetry(const std::vector<std::vector<unsigned>>& groups) {
+  group_.assign(num_things(), -1);
+  prev_.assign(num_things(), -1);
+  next_.assign(num_things(), -1);
+  groups_.clear();
+  for (auto g : groups) {
+    std::sort(g.begin(), g.end());
+    g.erase(std::unique(g.begin(), g.end()), g.end());
+    if (g.size() < 2) continue;
+    for (unsigned t : g)
+      if (t >= num_things() || is_container(t) || group_[t] >= 0)
+        throw Error("bad symmetry group (containers and overlapping groups are not allowed)");
+    const int id = static_cast<int>(groups_.size());
+    for (std::size_t i = 0; i < g.size(); ++i) {
+      group_[g[i]] = id;
+      if (i > 0) prev_[g[i]] = static_cast<int>(g[i - 1]);
+      if (i + 1 < g.size()) next_[g[i]] = static_cast<int>(g[i + 1]);
+    }
+    groups_.push_back(std::move(g));
+  }
+  has_symmetry_ = !groups_.empty();
+}
+
+void System::canonicalize(State& s) const {
+  if (!has_symmetry_) return;
+  std::uint32_t vals[kStateWords * 64];
+  for (const auto& g : groups_) {
+    for (std::size_t i = 0; i < g.size(); ++i) vals[i] = location(s, g[i]);
+    std::sort(vals, vals + g.size());
+    for (std::size_t i = 0; i < g.size(); ++i) layout_.set(s, g[i], vals[i]);
+  }
+}
+
+State System::canonical_successor(const State& s, const Action& a) const {
+  State r = successor(s, a);
+  if (!has_symmetry_ || a.is_stay() || group_[a.thing] < 0) return r;
+  // Bubble the moved member to its place; the others stay sorted.
+  unsigned t = a.thing;
+  const std::uint32_t v = a.to;
+  while (prev_[t] >= 0 && location(r, static_cast<unsigned>(prev_[t])) > v) {
+    const auto p = static_cast<unsigned>(prev_[t]);
+    layout_.set(r, t, location(r, p));
+    layout_.set(r, p, v);
+    t = p;
+  }
+  while (next_[t] >= 0 && location(r, static_cast<unsigned>(next_[t])) < v) {
+    const auto n = static_cast<unsigned>(next_[t]);
+    layout_.set(r, t, location(r, n));
+    layout_.set(r, n, v);
+    t = n;
+  }
+  return r;
+}
+
+const std::string& System::location_name(unsigned l) const {
+  static const std::string home_name = "home";
+  if (l < n_regions_) return scenario_.regions[l].name;
+  if (l < num_locations()) return scenario_.containers[l - n_regions_].name;
+  return home_name;
+}
+
+int System::find_thing(const std::string& name) const {
+  for (unsigned t = 0; t < num_things(); ++t)
+    if (thing_names_[t] == name) return static_cast<int>(t);
+  return -1;
+}
+
+int System::find_location(const std::string& name) const {
+  for (unsigned l = 0; l < num_locations(); ++l)
+    if (location_name(l) == name) return static_cast<int>(l);
+  return -1;
+}
+
+void System::occupancy(const State& s, int* counts) const {
+  std::fill(counts, counts + num_locations(), 0);
+  for (unsigned t = 0; t < num_things(); ++t) ++counts[location(s, t)];
+}
+
+bool System::enabled(const State& s, const Action& a) const {
+  if (a.is_stay()) return true;
+  if (a.thing >= num_things() || a.to >= num_locations()) return false;
+  const std::uint32_t at = location(s, a.thing);
+  if (a.to == at) return false;
+  if (is_container(a.thing) && a.to >= n_regions_) return false;
+  if (options_.ignore_capacity) return true;
+  int n = 0;
+  for (unsigned t = 0; t < num_things(); ++t) n += location(s, t) == a.to;
+  return n < capacities_[a.to];
+}
+
+State System::successor(const State& s, const Action& a) const {
+  if (a.is_stay()) return s;
+  State r = s;
+  layout_.set(r, a.thing, a.to);
+  layout_.set(r, hand_field(), a.to);
+  return r;
+}
+
+bool System::valid(const State& s) const {
+  int counts[kMaxLocations + 1];
+  for (unsigned t = 0; t < num_things(); ++t) {
+    const std::uint32_t l = location(s, t);
+    if (l >= num_locations()) return false;
+    if (is_container(t) && l >= n_regions_) return false;
+  }
+  if (hand(s) > num_locations()) return false;
+  if (options_.ignore_capacity) return true;
+  occupancy(s, counts);
+  for (unsigned l = 0; l < num_locations(); ++l)
+    if (counts[l] > capacities_[l]) return false;
+  return true;
+}
+
+world::Placement System::describe(const State& s) const {
+  world::Placement p;
+  for (unsigned t = 0; t < num_things(); ++t)
+    p.set(thing_names_[t], location_name(location(s, t)), thing_classes_[t], is_container(t));
+  return p;
+}
+
+State System::encode(const world::Placement& p, const std::string& hand_location) const {
+  State s;
+  std::vector<bool> seen(num_things(), false);
+  for (const auto& [thing, info] : p.things) {
+    const std::string& loc = info.location;
+    const int t = find_thing(thing);
+    if (t < 0) throw Error("unknown object or container '" + thing + "'");
+    if (loc == "none") throw Error("'" + thing + "' is not in any region or container");
+    const int l = find_location(loc);
+    if (l < 0) throw Error("unknown location '" + loc + "' (for '" + thing + "')");
+    if (is_container(static_cast<unsigned>(t)) && l >= static_cast<int>(n_regions_))
+      throw Error("container '" + thing + "' cannot be placed in '" + loc + "' (containers do not nest)");
+    layout_.set(s, static_cast<unsigned>(t), static_cast<std::uint32_t>(l));
+    seen[static_cast<unsigned>(t)] = true;
+  }
+  for (unsigned t = 0; t < num_things(); ++t)
+    if (!seen[t]) throw Error("no location given for '" + thing_names_[t] + "'");
+  if (hand_location.empty() || hand_location == "home") {
+    layout_.set(s, hand_field(), home());
+  } else {
+    const int l = find_location(hand_location);
+    if (l < 0) throw Error("unknown hand location '" + hand_location + "'");
+    layout_.set(s, hand_field(), static_cast<std::uint32_t>(l));
+  }
+  return s;
+}
+
+std::string System::to_string(const State& s) const {
+  std::string out;
+  for (unsigned t = 0; t < num_things(); ++t) {
+    if (!out.empty()) out += ' ';
+    out += thing_names_[t] + "@" + location_name(location(s, t));
+  }
+  if (!out.empty()) out += ' ';
+  out += "hand@" + location_name(hand(s));
+  return out;
+}
+
+std::string System::action_name(const Action& a) const {
+  if (a.is_stay()) return "stay";
+  return "move(" + thing_names_[a.thing] + ", " + location_name(a.to) + ")";
+}
+
+world::Vec3 System::location_point(const State& s, unsigned loc) const {
+  if (loc < n_regions_) return scenario_.regions[loc].center;
+  if (loc < num_locations()) {
+    const std::uint32_t r = location(s, thing_of_location(loc));
+    return scenario_.regions[r < n_regions_ ? r : 0].center;
+  }
+  return home_point_;
+}
+
+world::Vec3 System::hand_point(const State& s) const { return location_point(s, hand(s)); }
+
+}  // namespace rtamp::task

@@ -1,0 +1,170 @@
+// The transition system TS = (S, s0, A, δ_t, Π, L) of the paper's Definition 1,
+// for one set of regions, containers and objects (DESIGN.md "Symbolic state",
+// "Containers are objects and locations at once").
+//
+// Indexing (fixed for the lifetime of a System; names are the stable identity
+// across rebuilds):
+//   things    : objects 0..n-1, then containers n..n+C-1
+//   locations : regions 0..R-1, then containers R..R+C-1 (container k is both
+//               thing n+k and location R+k); location index R+C means "home"
+//               and only occurs as the hand's location.
+// Actions: move(t, l) picks thing t wherever it is and places it at l. It is
+// enabled iff l is not t's current location, l is not t itself, a container is
+// only placed in a region (containers do not nest), and l has room
+// (things directly at l < capacity(l); a container counts 1 in its region, its
+// contents count only in the container). Moving a container carries its
+// contents: their location stays the container. After move(t, l) the hand is
+// at l. stay is always enabled and changes nothing. δ_t is deterministic.
+//
+// Geometry used by motion-cost models (plan/motion_cost.hpp): the *point* of a
+// region is its centre; of a container, the point of the region it stands in;
+// of a thing, the point of its location; the hand's point is the point of its
+// location, or the robot's home point (base + (0, 0, kHomeHeight)) before the
+// first action. Positions inside a region are abstracted away, exactly as the
+// TS abstracts them.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "rtamp/task/state.hpp"
+#include "rtamp/world/placement.hpp"
+#include "rtamp/world/scenario.hpp"
+
+namespace rtamp::task {
+
+inline constexpr double kHomeHeight = 0.5;  // metres above the robot base
+inline constexpr unsigned kMaxLocations = 254;  // regions + containers (fields of at most 8 bits)
+
+class System {
+ public:
+  struct Options {
+    bool ignore_capacity = false;  // used to diagnose "capacity" failures
+  };
+
+  // Things and locations from the scenario; the initial state from
+  // `placement` (every thing must be listed) and the hand's location `hand`
+  // ("" or "home": home). Throws rtamp::Error on unknown names, things in no
+  // location ("none") and containers inside containers. An over-full location
+  // is accepted (a person may have over-filled it): nothing more can be put
+  // there until things are taken out; valid() reports it.
+  System(const world::Scenario& scenario, const world::Placement& placement, const std::string& hand, Options options);
+  System(const world::Scenario& scenario, const world::Placement& placement, const std::string& hand = {})
+      : System(scenario, placement, hand, Options{}) {}
+  // Initial placement from the scenario's positions (world::initial_placement), hand at home.
+  explicit System(const world::Scenario& scenario);
+
+  const world::Scenario& scenario() const { return scenario_; }
+  const Layout& layout() const { return layout_; }
+  const Options& options() const { return options_; }
+
+  unsigned num_objects() const { return n_objects_; }
+  unsigned num_containers() const { return n_containers_; }
+  unsigned num_things() const { return n_objects_ + n_containers_; }
+  unsigned num_regions() const { return n_regions_; }
+  unsigned num_locations() const { return n_regions_ + n_containers_; }
+  unsigned home() const { return num_locations(); }  // hand location before any action
+  unsigned hand_field() const { return num_things(); }
+
+  bool is_container(unsigned thing) const { return thing >= n_objects_; }
+  unsigned location_of_container(unsigned thing) const { return n_regions_ + (thing - n_objects_); }
+  bool is_container_location(unsigned loc) const { return loc >= n_regions_ && loc < num_locations(); }
+  unsigned thing_of_location(unsigned loc) const { return n_objects_ + (loc - n_regions_); }
+
+  const std::string& thing_name(unsigned t) const { return thing_names_[t]; }
+  const std::string& thing_class(unsigned t) const { return thing_classes_[t]; }
+  const std::string& location_name(unsigned l) const;  // "home" for home()
+  std::uint64_t thing_uid(unsigned t) const { return uids_[t]; }  // hash of the name
+  int find_thing(const std::string& name) const;
+  int find_location(const std::string& name) const;  // regions and containers
+  int capacity(unsigned loc) const { return capacities_[loc]; }
+
+  std::uint32_t location(const State& s, unsigned thing) const { return layout_.get(s, thing); }
+  std::uint32_t hand(const State& s) const { return layout_.get(s, hand_field()); }
+
+  const State& initial() const { return initial_; }
+  void set_initial(const State& s) { initial_ = s; }
+
+  // Things directly at each location; `counts` has num_locations() entries.
+  void occupancy(const State& s, int* counts) const;
+  bool enabled(const State& s, const Action& a) const;
+  State successor(const State& s, const Action& a) const;
+  // Calls f(Action) for every enabled move (not stay), in a fixed order.
+  template <class F>
+  void for_each_move(const State& s, F&& f) const;
+  // Symmetry (interchangeable objects): each group lists objects (not
+  // containers) that nothing tells apart — same class, never named by a
+  // proposition, and a cost model that ignores which thing it moves. The
+  // planner searches the quotient: a *canonical* state has the locations of
+  // each group's members in ascending order of member index, and
+  // for_each_move skips a member whose predecessor in its group is at the same
+  // location (its move would give the same canonical successor). Costs and
+  // labels are invariant under permuting a group, so optimal costs are kept.
+  void set_symmetry(const std::vector<std::vector<unsigned>>& groups);
+  bool has_symmetry() const { return has_symmetry_; }
+  int group_of(unsigned thing) const { return group_[thing]; }
+  void canonicalize(State& s) const;
+  State canonical(const State& s) const {
+    State c = s;
+    canonicalize(c);
+    return c;
+  }
+  // successor() followed by canonicalisation (cheap: one member moved).
+  State canonical_successor(const State& s, const Action& a) const;
+
+  // Capacities respected, no container in a container, fields in range.
+  bool valid(const State& s) const;
+
+  // Where every thing is, by name (the hand is hand_name(s)).
+  world::Placement describe(const State& s) const;
+  std::string hand_name(const State& s) const { return location_name(hand(s)); }
+  // Throws rtamp::Error on unknown / missing names (capacities: see the constructor).
+  State encode(const world::Placement& p, const std::string& hand = {}) const;
+  std::string to_string(const State& s) const;      // "o1@r1 o2@tray hand@r2"
+  std::string action_name(const Action& a) const;   // "move(o1, r2)" / "stay"
+
+  // Geometry (see header comment).
+  const world::Vec3& region_center(unsigned r) const { return scenario_.regions[r].center; }
+  world::Vec3 location_point(const State& s, unsigned loc) const;
+  world::Vec3 thing_point(const State& s, unsigned thing) const { return location_point(s, location(s, thing)); }
+  world::Vec3 hand_point(const State& s) const;
+  const world::Vec3& home_point() const { return home_point_; }
+
+ private:
+  world::Scenario scenario_;
+  Options options_;
+  Layout layout_;
+  unsigned n_objects_ = 0, n_containers_ = 0, n_regions_ = 0;
+  std::vector<std::string> thing_names_, thing_classes_;
+  std::vector<std::uint64_t> uids_;
+  std::vector<int> capacities_;  // per location
+  world::Vec3 home_point_{0, 0, 0};
+  State initial_;
+  bool has_symmetry_ = false;
+  std::vector<int> group_;                  // per thing: group index or -1
+  std::vector<int> prev_, next_;            // per thing: neighbour in its group or -1
+  std::vector<std::vector<unsigned>> groups_;
+};
+
+template <class F>
+void System::for_each_move(const State& s, F&& f) const {
+  int counts[kMaxLocations + 1];
+  occupancy(s, counts);
+  const unsigned L = num_locations();
+  for (unsigned t = 0; t < num_things(); ++t) {
+    const std::uint32_t at = location(s, t);
+    // An interchangeable twin at the same place gives the same canonical successors.
+    if (has_symmetry_ && prev_[t] >= 0 && location(s, static_cast<unsigned>(prev_[t])) == at) continue;
+    const bool container = is_container(t);
+    const unsigned limit = container ? n_regions_ : L;
+    for (unsigned l = 0; l < limit; ++l) {
+      if (l == at) continue;
+      if (!options_.ignore_capacity && counts[l] >= capacities_[l]) continue;
+      f(Action::move(static_cast<std::uint16_t>(t), static_cast<std::uint16_t>(l)));
+    }
+  }
+}
+
+}  // namespace rtamp::task

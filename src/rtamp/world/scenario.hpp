@@ -1,0 +1,130 @@
+// The scenario: everything rtamp knows about a workspace before it runs
+// (DESIGN.md "Files users touch"; paper Section II: regions R, objects O, the
+// LTL task φ, and Section V's scripted interventions).
+//
+// Plain value types, loaded from YAML by scenario_io.hpp and written back by it.
+// Geometry is in metres in the world frame (z up, table top at z = 0).
+// Invariants (checked by validate()): names are unique across regions,
+// containers and objects; sizes are positive; capacities >= 1; every name a
+// proposition or intervention uses exists (objects named by `add` interventions
+// count from the time they are added).
+// validate.hpp lists every check in full; docs/scenario.md documents the YAML.
+#pragma once
+
+#include <array>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "rtamp/util/error.hpp"
+
+namespace rtamp::world {
+
+using Vec3 = std::array<double, 3>;
+
+// A fixed region of the table: an axis-aligned box footprint [center ± size/2] in x, y.
+struct Region {
+  std::string name;
+  Vec3 center{0, 0, 0};
+  Vec3 size{0.2, 0.2, 0};  // x, y extents used; z ignored
+  int capacity = 8;        // how many movable things fit
+  SourceLocation where;    // where it was defined (for messages)
+};
+
+// A movable region (a tray): both an object that can be moved and a location
+// that holds objects. Moving it carries its contents. Containers do not nest.
+struct Container {
+  std::string name;
+  std::string cls = "tray";
+  Vec3 position{0, 0, 0};  // centre of its footprint on the table
+  Vec3 size{0.24, 0.16, 0.03};
+  int capacity = 4;
+  SourceLocation where;
+};
+
+// A movable object (a block).
+struct Object {
+  std::string name;
+  std::string cls = "block";
+  Vec3 position{0, 0, 0};  // centre of its base on the table (or in a container)
+  Vec3 size{0.04, 0.04, 0.04};
+  SourceLocation where;
+};
+
+struct Robot {
+  std::string model = "ur5";
+  Vec3 base{0, 0, 0};
+  double yaw = 0;  // rotation about z, radians
+};
+
+// Proposition expressions, defined over the world (DESIGN.md "Propositions are
+// defined over the world"). Grammar (propositions.hpp parses it):
+//   expr   := term ('|' term)*          term := factor ('&' factor)*
+//   factor := '!' factor | '(' expr ')' | atom
+//   atom   := NAME 'in' LOC                  (object or container NAME is in location LOC)
+//           | 'all' CLASS 'in' LOC           (every thing of CLASS; true if there is none)
+//           | 'any' CLASS 'in' LOC           (at least one thing of CLASS)
+//           | 'count' CLASS 'in' LOC CMP INT (CMP one of < <= == != >= >)
+//           | 'true' | 'false'
+// CLASS is an object or container class ("block", "tray"), or "object" for every
+// movable object that is not a container. LOC is a region or container name.
+struct PropExpr {
+  enum class Kind { True, False, In, All, Any, Count, Not, And, Or };
+  enum class Cmp { Lt, Le, Eq, Ne, Ge, Gt };
+  Kind kind = Kind::True;
+  std::string subject;   // In: object/container name; All/Any/Count: class
+  std::string location;  // In/All/Any/Count: region or container name
+  Cmp cmp = Cmp::Ge;     // Count
+  int count = 0;         // Count
+  std::vector<PropExpr> children;  // Not: 1; And/Or: >= 2
+
+  bool operator==(const PropExpr&) const = default;  // structural equality
+};
+
+struct Proposition {
+  std::string name;  // the atom used in the LTL task, e.g. "all_in_r2"
+  std::string text;  // the expression as written, e.g. "all block in r2"
+  PropExpr expr;
+  SourceLocation where;
+};
+
+// A scripted operator action (the paper's "human intervention").
+struct Intervention {
+  enum class Kind {
+    Relocate,         // move `subject` to `location` (a region or container); `position` optional
+    Add,              // add object `subject` of class `cls` at `location` (or `position`)
+    Remove,           // remove object `subject`
+    AddContainer,     // add container `subject` (class `cls`, e.g. tray) at `location` / `position`
+    RemoveContainer,  // remove container `subject` (its contents fall to where it stood)
+    TakeFromGripper,  // take whatever the gripper holds; put it at `location` if given, else remove it
+  };
+  double time = 0;  // seconds of simulated time from the start of the episode
+  Kind kind = Kind::Relocate;
+  std::string subject;
+  std::string cls;
+  std::string location;
+  std::optional<Vec3> position;
+  SourceLocation where;
+};
+
+struct Scenario {
+  std::string name;
+  std::string description;
+  std::vector<Region> regions;
+  std::vector<Container> containers;
+  std::vector<Object> objects;
+  Robot robot;
+  std::vector<Proposition> propositions;
+  std::string task;  // LTL formula over proposition names, e.g. "F G all_in_r2"
+  SourceLocation task_where;
+  std::vector<Intervention> interventions;  // sorted by time
+  std::string source;                       // file it was loaded from ("" if generated)
+
+  const Region* find_region(const std::string& n) const;
+  const Container* find_container(const std::string& n) const;
+  const Object* find_object(const std::string& n) const;
+  const Proposition* find_proposition(const std::string& n) const;
+};
+
+}  // namespace rtamp::world

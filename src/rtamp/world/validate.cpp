@@ -1,0 +1,462 @@
+#include "rtamp/world/validate.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <map>
+#include <set>
+#include <sstream>
+
+#include "rtamp/world/geometry.hpp"
+#include "rtamp/world/propositions.hpp"
+#include "rtamp/world/suggest.hpp"
+
+namespace rtamp::world {
+
+namespace {
+
+bool ident_start(char c) { return std::isalpha(static_cast<unsigned char>(c)) || c == '_'; }
+bool ident_char(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; }
+
+bool is_identifier(std::string_view s) {
+  if (s.empty() || s.size() > kMaxNameLength || !ident_start(s[0])) return false;
+  return std::all_of(s.begin(), s.end(), ident_char);
+}
+
+std::string quote(const std::string& s) {
+  std::string out;  // (not "'" + s + "'": GCC 12 warns -Wrestrict on that falsely)
+  out.reserve(s.size() + 2);
+  out += '\'';
+  out += s;
+  out += '\'';
+  return out;
+}
+
+std::string fmt(double v) {
+  std::ostringstream os;
+  os << v;
+  return os.str();
+}
+
+std::string fmt(const Vec3& v) { return "[" + fmt(v[0]) + ", " + fmt(v[1]) + ", " + fmt(v[2]) + "]"; }
+
+const char* action_name(Intervention::Kind k) {
+  switch (k) {
+    case Intervention::Kind::Relocate:
+      return "relocate";
+    case Intervention::Kind::Add:
+      return "add";
+    case Intervention::Kind::Remove:
+      return "remove";
+    case Intervention::Kind::AddContainer:
+      return "add_container";
+    case Intervention::Kind::RemoveContainer:
+      return "remove_container";
+    case Intervention::Kind::TakeFromGripper:
+      return "take_from_gripper";
+  }
+  return "?";
+}
+
+class Validator {
+ public:
+  Validator(const Scenario& s, const detail::FieldLocator& locate) : s_(s), locate_(locate) {}
+
+  void run() {
+    if (s_.name.empty()) fail(at({}, "name"), "the scenario has no name");
+    check_robot();
+    check_regions();
+    check_containers();
+    check_objects();
+    check_unique_names();
+    check_classes();
+    check_geometry();
+    collect_intervention_names();
+    check_propositions();
+    if (std::all_of(s_.task.begin(), s_.task.end(), [](char c) { return std::isspace(static_cast<unsigned char>(c)); }))
+      fail(s_.task_where, "the task is empty (write an LTL formula over the propositions, e.g. \"F G all_in_r2\")");
+    check_interventions();
+  }
+
+ private:
+  [[noreturn]] void fail(const SourceLocation& where, const std::string& what, const std::string& detail = {}) const {
+    throw Error(what, where, detail);
+  }
+
+  SourceLocation at(const SourceLocation& element, std::string_view field) const {
+    if (locate_) return locate_(element, field);
+    return element;
+  }
+
+  void check_name(const std::string& name, const char* kind, const SourceLocation& where) const {
+    const SourceLocation loc = at(where, "name");
+    if (name.empty()) fail(loc, std::string(kind) + " has no name");
+    if (!is_valid_name(name)) {
+      if (name == kNoLocation || is_prop_keyword(name))
+        fail(loc, std::string(kind) + " name " + quote(name) + " is a reserved word");
+      fail(loc, std::string(kind) + " name " + quote(name) +
+                    " is not an identifier (letters, digits and '_', not starting with a digit, at most 64 characters)");
+    }
+  }
+
+  void check_class(const std::string& cls, const std::string& owner, const SourceLocation& where) const {
+    const SourceLocation loc = at(where, "class");
+    if (cls == "object")
+      fail(loc, owner + ": class 'object' is reserved (in propositions it means every object that is not a container)");
+    if (!is_valid_name(cls))
+      fail(loc, owner + ": class " + quote(cls) + " is not an identifier (letters, digits and '_')");
+  }
+
+  void check_vec(const Vec3& v, const std::string& owner, const char* field, const SourceLocation& where) const {
+    std::string shown(field);
+    if (const auto dot = shown.rfind('.'); dot != std::string::npos) shown = shown.substr(dot + 1);
+    for (double x : v)
+      if (!std::isfinite(x) || std::abs(x) > kMaxCoordinate)
+        fail(at(where, field), owner + ": " + shown + " " + fmt(v) + " is out of range (coordinates are finite, within ±1000 m)");
+  }
+
+  void check_size(const Vec3& size, int dims, const std::string& owner, const SourceLocation& where) const {
+    for (int i = 0; i < dims; ++i)
+      if (!(size[i] > 0) || !(size[i] <= kMaxSize))
+        fail(at(where, "size"), owner + ": size " + fmt(size) + " must be positive (and at most 100 m) in x, y" +
+                                    (dims == 3 ? ", z" : ""));
+    if (dims == 2 && (!std::isfinite(size[2]) || size[2] < 0 || size[2] > kMaxSize))
+      fail(at(where, "size"), owner + ": size z " + fmt(size[2]) + " must be between 0 and 100 m");
+  }
+
+  void check_capacity(int capacity, const std::string& owner, const SourceLocation& where) const {
+    if (capacity < 1) fail(at(where, "capacity"), owner + ": capacity must be at least 1 (got " + std::to_string(capacity) + ")");
+  }
+
+  void check_robot() const {
+    if (s_.robot.model != "ur5")
+      fail(at({}, "robot.model"), "unknown robot model " + quote(s_.robot.model) + " (rtamp knows: ur5)");
+    check_vec(s_.robot.base, "robot", "robot.base", {});
+    if (!std::isfinite(s_.robot.yaw)) fail(at({}, "robot.yaw"), "robot: yaw must be a finite number of radians");
+  }
+
+  void check_regions() const {
+    if (s_.regions.empty()) fail(at({}, "regions"), "the scenario has no regions (at least one is needed)");
+    for (const Region& r : s_.regions) {
+      check_name(r.name, "region", r.where);
+      const std::string owner = "region " + quote(r.name);
+      check_vec(r.center, owner, "center", r.where);
+      check_size(r.size, 2, owner, r.where);
+      check_capacity(r.capacity, owner, r.where);
+    }
+  }
+
+  void check_containers() const {
+    for (const Container& c : s_.containers) {
+      check_name(c.name, "container", c.where);
+      const std::string owner = "container " + quote(c.name);
+      check_class(c.cls, owner, c.where);
+      check_vec(c.position, owner, "position", c.where);
+      check_size(c.size, 3, owner, c.where);
+      check_capacity(c.capacity, owner, c.where);
+    }
+  }
+
+  void check_objects() const {
+    for (const Object& o : s_.objects) {
+      check_name(o.name, "object", o.where);
+      const std::string owner = "object " + quote(o.name);
+      check_class(o.cls, owner, o.where);
+      check_vec(o.position, owner, "position", o.where);
+      check_size(o.size, 3, owner, o.where);
+    }
+  }
+
+  void check_unique_names() {
+    auto add = [&](const std::string& name, const char* kind, const SourceLocation& where) {
+      auto [it, inserted] = defined_.emplace(name, std::make_pair(std::string(kind), where));
+      if (!inserted) {
+        const std::string prev = format_location(it->second.second);
+        fail(at(where, "name"), "duplicate name " + quote(name) + ": already used by " + it->second.first +
+                                    (prev.empty() ? "" : " at " + prev.substr(0, prev.size() - 2)));
+      }
+    };
+    for (const Region& r : s_.regions) add(r.name, "a region", r.where);
+    for (const Container& c : s_.containers) add(c.name, "a container", c.where);
+    for (const Object& o : s_.objects) add(o.name, "an object", o.where);
+  }
+
+  void check_classes() {
+    for (const Object& o : s_.objects) object_classes_.insert(o.cls);
+    for (const Container& c : s_.containers) {
+      container_classes_.insert(c.cls);
+      if (object_classes_.count(c.cls))
+        fail(at(c.where, "class"), "container " + quote(c.name) + ": class " + quote(c.cls) +
+                                       " is also the class of objects (a class names either objects or containers)");
+    }
+  }
+
+  void check_geometry() {
+    for (std::size_t i = 0; i < s_.regions.size(); ++i)
+      for (std::size_t j = 0; j < i; ++j)
+        if (footprint(s_.regions[i]).overlaps(footprint(s_.regions[j])))
+          fail(s_.regions[i].where, "region " + quote(s_.regions[i].name) + " overlaps region " + quote(s_.regions[j].name) +
+                                        " (regions must be disjoint)");
+    for (std::size_t i = 0; i < s_.containers.size(); ++i)
+      for (std::size_t j = 0; j < i; ++j)
+        if (footprint(s_.containers[i]).overlaps(footprint(s_.containers[j])))
+          fail(s_.containers[i].where, "container " + quote(s_.containers[i].name) + " overlaps container " +
+                                           quote(s_.containers[j].name));
+    const Geometry g(s_);
+    std::map<std::string, int> load;
+    for (const Container& c : s_.containers) {
+      const std::string loc = g.locate_region(c.position);
+      if (loc == kNoLocation)
+        fail(at(c.where, "position"), "container " + quote(c.name) + " at " + fmt(c.position) +
+                                          " is not in any region (a container must stand in a region)");
+      ++load[loc];
+    }
+    for (const Object& o : s_.objects) {
+      const std::string loc = g.locate(o.position);
+      if (loc == kNoLocation)
+        fail(at(o.where, "position"), "object " + quote(o.name) + " at " + fmt(o.position) +
+                                          " is outside every region and container");
+      ++load[loc];
+    }
+    for (const Region& r : s_.regions)
+      if (load[r.name] > r.capacity)
+        fail(at(r.where, "capacity"), "region " + quote(r.name) + " initially holds " + std::to_string(load[r.name]) +
+                                          " things but its capacity is " + std::to_string(r.capacity));
+    for (const Container& c : s_.containers)
+      if (load[c.name] > c.capacity)
+        fail(at(c.where, "capacity"), "container " + quote(c.name) + " initially holds " + std::to_string(load[c.name]) +
+                                          " objects but its capacity is " + std::to_string(c.capacity));
+  }
+
+  // Names that interventions add, so that propositions may mention them.
+  void collect_intervention_names() {
+    for (const Intervention& iv : s_.interventions) {
+      if (iv.kind == Intervention::Kind::Add) {
+        added_objects_.insert(iv.subject);
+        added_object_classes_.insert(iv.cls);
+      } else if (iv.kind == Intervention::Kind::AddContainer) {
+        added_containers_.insert(iv.subject);
+        added_container_classes_.insert(iv.cls);
+      }
+    }
+  }
+
+  // Where `word` first appears as a whole word in a proposition's text.
+  SourceLocation word_location(const Proposition& p, const std::string& word) const {
+    SourceLocation loc = p.where;
+    if (loc.line <= 0 || loc.column <= 0) return loc;
+    std::size_t pos = 0;
+    while ((pos = p.text.find(word, pos)) != std::string::npos) {
+      const bool left = pos == 0 || !ident_char(p.text[pos - 1]);
+      const bool right = pos + word.size() >= p.text.size() || !ident_char(p.text[pos + word.size()]);
+      if (left && right) {
+        loc.column += static_cast<int>(pos);
+        return loc;
+      }
+      pos += word.size();
+    }
+    return loc;
+  }
+
+  std::string caret(const Proposition& p, const std::string& word) const {
+    const SourceLocation loc = word_location(p, word);
+    if (p.where.column <= 0 || p.text.find('\n') != std::string::npos) return {};
+    return caret_line(p.text, loc.column - p.where.column + 1);
+  }
+
+  void check_propositions() const {
+    std::set<std::string> seen;
+    std::vector<std::string> things, locations, classes{"object"};
+    for (const Region& r : s_.regions) locations.push_back(r.name);
+    for (const Container& c : s_.containers) {
+      locations.push_back(c.name);
+      things.push_back(c.name);
+    }
+    for (const std::string& c : added_containers_) {
+      locations.push_back(c);
+      things.push_back(c);
+    }
+    for (const Object& o : s_.objects) things.push_back(o.name);
+    for (const std::string& o : added_objects_) things.push_back(o);
+    for (const auto* set : {&object_classes_, &container_classes_, &added_object_classes_, &added_container_classes_})
+      for (const std::string& c : *set) classes.push_back(c);
+    std::sort(classes.begin(), classes.end());
+    classes.erase(std::unique(classes.begin(), classes.end()), classes.end());
+    auto known = [](const std::vector<std::string>& v, const std::string& n) {
+      return std::find(v.begin(), v.end(), n) != v.end();
+    };
+    for (const Proposition& p : s_.propositions) {
+      const SourceLocation name_loc = at(p.where, "name");
+      if (!is_valid_proposition_name(p.name))
+        fail(name_loc, "proposition name " + quote(p.name) +
+                           " is not a valid atom (lower-case letter or '_' first, then letters, digits, '_'; not true/false)");
+      if (!seen.insert(p.name).second) fail(name_loc, "duplicate proposition " + quote(p.name));
+      if (defined_.count(p.name))
+        fail(name_loc, "proposition " + quote(p.name) + " has the name of " + defined_.at(p.name).first);
+      PropNames names;
+      collect_names(p.expr, names);
+      const std::string owner = "proposition " + quote(p.name) + ": ";
+      for (const std::string& t : names.things)
+        if (!known(things, t)) {
+          std::string what = owner + "unknown object " + quote(t);
+          if (known(locations, t)) what = owner + quote(t) + " is a region; 'X in L' needs an object or container X";
+          fail(word_location(p, t), what + (known(locations, t) ? "" : suggestion(t, things)), caret(p, t));
+        }
+      for (const std::string& l : names.locations)
+        if (!known(locations, l)) {
+          const std::string what = known(things, l) ? owner + quote(l) + " is an object, not a location"
+                                                    : owner + "unknown location " + quote(l) + suggestion(l, locations);
+          fail(word_location(p, l), what, caret(p, l));
+        }
+      for (const std::string& c : names.classes)
+        if (!known(classes, c))
+          fail(word_location(p, c), owner + "unknown class " + quote(c) + suggestion(c, classes), caret(p, c));
+    }
+  }
+
+  void check_interventions() const {
+    std::map<std::string, std::string> objects, containers;  // name -> class, at the current time
+    for (const Object& o : s_.objects) objects[o.name] = o.cls;
+    for (const Container& c : s_.containers) containers[c.name] = c.cls;
+    std::set<std::string> ever;  // every thing name used so far
+    for (const auto& [n, d] : defined_) ever.insert(n);
+    double prev_time = 0;
+    const Geometry g(s_);
+    for (const Intervention& iv : s_.interventions) {
+      const std::string owner = std::string("operator action '") + action_name(iv.kind) + "' at t=" + fmt(iv.time) + ": ";
+      if (!std::isfinite(iv.time) || iv.time < 0)
+        fail(at(iv.where, "time"), owner + "time must be a finite number of seconds >= 0");
+      if (iv.time < prev_time)
+        fail(at(iv.where, "time"), owner + "operator actions must be sorted by time (previous one at t=" + fmt(prev_time) + ")");
+      prev_time = iv.time;
+      if (iv.position) check_vec(*iv.position, owner.substr(0, owner.size() - 2), "position", iv.where);
+
+      const bool adds = iv.kind == Intervention::Kind::Add || iv.kind == Intervention::Kind::AddContainer;
+      if (!adds && !iv.cls.empty()) fail(iv.where, owner + "a class is only given to add and add_container");
+      if (iv.kind == Intervention::Kind::TakeFromGripper && !iv.subject.empty())
+        fail(iv.where, owner + "take_from_gripper names no object (it takes whatever the gripper holds)");
+      auto need_object = [&](const char* field) {
+        if (iv.subject.empty()) fail(iv.where, owner + "names no object (give " + field + ": NAME)");
+      };
+      auto check_target = [&](bool subject_is_container) {
+        if (iv.location.empty()) {
+          if (!iv.position && iv.kind != Intervention::Kind::TakeFromGripper)
+            fail(iv.where, owner + "needs a target: 'to: LOCATION' or 'position: [x, y, z]'");
+          return;
+        }
+        const SourceLocation loc = at(iv.where, "to");
+        const Region* region = s_.find_region(iv.location);
+        if (!region) {
+          if (containers.count(iv.location)) {
+            if (subject_is_container)
+              fail(loc, owner + "cannot put container " + quote(iv.subject) + " into container " + quote(iv.location) +
+                            " (containers do not nest)");
+            return;
+          }
+          std::vector<std::string> locs;
+          for (const Region& r : s_.regions) locs.push_back(r.name);
+          for (const auto& [n, c] : containers) locs.push_back(n);
+          fail(loc, owner + "unknown location " + quote(iv.location) + " at this time" + suggestion(iv.location, locs));
+        }
+        if (iv.position && !footprint(*region).contains_point((*iv.position)[0], (*iv.position)[1]))
+          fail(at(iv.where, "position"), owner + "position " + fmt(*iv.position) + " is not inside region " +
+                                             quote(iv.location));
+      };
+      auto names_of = [](const std::map<std::string, std::string>& m) {
+        std::vector<std::string> v;
+        for (const auto& [n, c] : m) v.push_back(n);
+        return v;
+      };
+
+      switch (iv.kind) {
+        case Intervention::Kind::Relocate: {
+          need_object("object");
+          const bool is_obj = objects.count(iv.subject) > 0, is_cont = containers.count(iv.subject) > 0;
+          if (!is_obj && !is_cont) {
+            std::vector<std::string> all = names_of(objects);
+            for (const auto& n : names_of(containers)) all.push_back(n);
+            fail(at(iv.where, "object"), owner + "unknown object or container " + quote(iv.subject) + " at this time" +
+                                             suggestion(iv.subject, all));
+          }
+          check_target(is_cont);
+          break;
+        }
+        case Intervention::Kind::Add:
+        case Intervention::Kind::AddContainer: {
+          const bool cont = iv.kind == Intervention::Kind::AddContainer;
+          const char* field = cont ? "container" : "object";
+          need_object(field);
+          if (!is_valid_name(iv.subject))
+            fail(at(iv.where, field), owner + "name " + quote(iv.subject) + " is not a valid name");
+          if (s_.find_region(iv.subject) || objects.count(iv.subject) || containers.count(iv.subject))
+            fail(at(iv.where, field), owner + quote(iv.subject) + " already exists at this time");
+          if (ever.count(iv.subject) && (cont ? !containers_were(iv.subject) : !objects_were(iv.subject)))
+            fail(at(iv.where, field), owner + quote(iv.subject) + " was a " + (cont ? "an object" : "a container") +
+                                          " earlier; use a new name");
+          check_class(iv.cls, owner.substr(0, owner.size() - 2), iv.where);
+          const bool cls_clash = cont ? (object_classes_.count(iv.cls) || added_object_classes_.count(iv.cls))
+                                      : (container_classes_.count(iv.cls) || added_container_classes_.count(iv.cls));
+          if (cls_clash)
+            fail(at(iv.where, "class"), owner + "class " + quote(iv.cls) + " is already the class of " +
+                                            (cont ? "objects" : "containers"));
+          check_target(cont);
+          (cont ? containers : objects)[iv.subject] = iv.cls;
+          ever.insert(iv.subject);
+          break;
+        }
+        case Intervention::Kind::Remove:
+          need_object("object");
+          if (!objects.count(iv.subject)) {
+            const std::string hint = containers.count(iv.subject) ? " (it is a container: use remove_container)"
+                                                                  : suggestion(iv.subject, names_of(objects));
+            fail(at(iv.where, "object"), owner + "unknown object " + quote(iv.subject) + " at this time" + hint);
+          }
+          objects.erase(iv.subject);
+          break;
+        case Intervention::Kind::RemoveContainer:
+          need_object("container");
+          if (!containers.count(iv.subject)) {
+            const std::string hint = objects.count(iv.subject) ? " (it is an object: use remove)"
+                                                               : suggestion(iv.subject, names_of(containers));
+            fail(at(iv.where, "container"), owner + "unknown container " + quote(iv.subject) + " at this time" + hint);
+          }
+          containers.erase(iv.subject);
+          break;
+        case Intervention::Kind::TakeFromGripper:
+          check_target(false);
+          break;
+      }
+    }
+  }
+
+  bool containers_were(const std::string& n) const {
+    return s_.find_container(n) != nullptr || added_containers_.count(n) > 0;
+  }
+  bool objects_were(const std::string& n) const { return s_.find_object(n) != nullptr || added_objects_.count(n) > 0; }
+
+  const Scenario& s_;
+  const detail::FieldLocator& locate_;
+  std::map<std::string, std::pair<std::string, SourceLocation>> defined_;  // name -> (kind, where)
+  std::set<std::string> object_classes_, container_classes_;
+  std::set<std::string> added_objects_, added_containers_, added_object_classes_, added_container_classes_;
+};
+
+}  // namespace
+
+bool is_valid_name(std::string_view name) {
+  return is_identifier(name) && !is_prop_keyword(name) && name != kNoLocation;
+}
+
+bool is_valid_proposition_name(std::string_view name) {
+  if (!is_identifier(name) || name == "true" || name == "false") return false;
+  return std::islower(static_cast<unsigned char>(name[0])) || name[0] == '_';
+}
+
+void validate(const Scenario& s) {
+  const detail::FieldLocator none;
+  Validator(s, none).run();
+}
+
+void detail::validate(const Scenario& s, const FieldLocator& locate_field) { Validator(s, locate_field).run(); }
+
+}  // namespace rtamp::world

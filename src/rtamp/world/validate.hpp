@@ -1,0 +1,48 @@
+// validate(): the invariants of a Scenario (scenario.hpp), checked for
+// scenarios loaded from YAML (scenario_io.hpp calls it) and for scenarios built
+// in code (generator.hpp, tests, other layers). Throws the first violation as
+// rtamp::Error at the offending element's source location.
+//
+// Checked: a name; a robot model rtamp knows (ur5); at least one region;
+// names are identifiers [A-Za-z_][A-Za-z0-9_]* (at most 64 characters, not a
+// keyword of the proposition grammar, not "none"), unique across regions,
+// containers, objects and things added by interventions; classes are
+// identifiers other than "object", and no class names both objects and
+// containers; coordinates are finite and within ±1000 m; sizes are positive
+// (regions: x and y) and at most 100 m; capacities are >= 1; regions do not
+// overlap; containers do not overlap each other and each stands in a region;
+// every object lies in a container or a region (geometry.hpp); no location
+// initially holds more things than its capacity (a region counts the objects
+// directly in it and the containers standing in it); proposition names are
+// [a-z_][A-Za-z0-9_]* and not true/false, and every name their expressions
+// use exists (things and containers present at the start or added by an
+// intervention; classes of such things, or "object"); the task is not blank;
+// interventions are sorted by time, times are finite and >= 0, and each names
+// things that exist at its time, a target location that exists then (a
+// container only for objects), and a position inside its target region.
+#pragma once
+
+#include <functional>
+#include <string_view>
+
+#include "rtamp/world/scenario.hpp"
+
+namespace rtamp::world {
+
+void validate(const Scenario& s);
+
+bool is_valid_name(std::string_view name);              // regions, containers, objects, classes
+bool is_valid_proposition_name(std::string_view name);  // atoms of the LTL task
+
+inline constexpr double kMaxCoordinate = 1000.0;  // m
+inline constexpr double kMaxSize = 100.0;         // m
+inline constexpr std::size_t kMaxNameLength = 64;
+
+namespace detail {
+// Maps (an element's `where`, a field name such as "size") to the field's own
+// location; the YAML loader passes one so errors point at the exact field.
+using FieldLocator = std::function<SourceLocation(const SourceLocation& element, std::string_view field)>;
+void validate(const Scenario& s, const FieldLocator& locate_field);
+}  // namespace detail
+
+}  // namespace rtamp::world

@@ -1,0 +1,82 @@
+// The 55 Dwyer et al. specification patterns (tests/data/dac-patterns.ltl) and
+// the robot formulas (tests/data/robot-patterns.ltl): translation checked
+// against ltl::holds on random lassos, and the size table of the state-based
+// BA printed (sizes are asserted as a total bound, never times).
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <cstdio>
+#include <fstream>
+#include <random>
+
+#include "oracle.hpp"
+#include "rtamp/automata/translate.hpp"
+#include "rtamp/ltl/lasso.hpp"
+#include "rtamp/ltl/parser.hpp"
+#include "rtamp/ltl/random.hpp"
+
+namespace rtamp::automata {
+namespace {
+
+std::vector<std::string> read_formulas(const std::string& file) {
+  std::ifstream in(std::string(RTAMP_SOURCE_DIR) + "/tests/data/" + file);
+  std::vector<std::string> out;
+  std::string line;
+  while (std::getline(in, line)) {
+    const auto p = line.find_first_not_of(" \t");
+    if (p == std::string::npos || line[p] == '#') continue;
+    out.push_back(line);
+  }
+  return out;
+}
+
+void check_file(const std::string& file, std::size_t expected_count) {
+  const auto formulas = read_formulas(file);
+  ASSERT_EQ(formulas.size(), expected_count);
+  std::mt19937_64 rng(7);
+  for (const std::string& text : formulas) {
+    const ltl::Formula f = ltl::parse(text);
+    const Automaton ba = translate(f);
+    std::vector<ltl::LassoWord> ws;
+    for (int k = 0; k < 300; ++k) ws.push_back(ltl::random_lasso(rng, ba.atoms, 5, 5));
+    for (int variant = 0; variant < 12; ++variant) {
+      TranslateOptions opt;
+      opt.state_based = variant & 1;
+      opt.reduce = variant & 2;
+      opt.construction = static_cast<Construction>(variant / 4);
+      const Automaton a = translate(f, opt);
+      for (const auto& w : ws)
+        ASSERT_EQ(lasso_accept(a, test::to_word(a, w)), ltl::holds(f, w))
+            << text << " word " << ltl::to_string(w) << " state_based=" << opt.state_based << " reduce=" << opt.reduce;
+    }
+  }
+}
+
+TEST(TranslatePatterns, DwyerCorrect) { check_file("dac-patterns.ltl", 55); }
+TEST(TranslatePatterns, RobotCorrect) { check_file("robot-patterns.ltl", 20); }
+
+TEST(TranslatePatterns, DwyerSizeTable) {
+  const auto formulas = read_formulas("dac-patterns.ltl");
+  std::size_t states = 0, edges = 0, tstates = 0, tedges = 0;
+  std::printf("%3s %6s %6s %6s %6s %9s  %s\n", "#", "BA st", "BA ed", "TGBA s", "TGBA e", "time(us)", "formula");
+  for (std::size_t i = 0; i < formulas.size(); ++i) {
+    const ltl::Formula f = ltl::parse(formulas[i]);
+    const auto t0 = std::chrono::steady_clock::now();
+    const Automaton ba = translate(f);
+    const auto t1 = std::chrono::steady_clock::now();
+    TranslateOptions o;
+    o.state_based = false;
+    const Automaton tg = translate(f, o);
+    states += ba.num_states();
+    edges += ba.num_edges();
+    tstates += tg.num_states();
+    tedges += tg.num_edges();
+    std::printf("%3zu %6u %6zu %6u %6zu %9.1f  %s\n", i + 1, ba.num_states(), ba.num_edges(), tg.num_states(),
+                tg.num_edges(), std::chrono::duration<double, std::micro>(t1 - t0).count(), formulas[i].c_str());
+  }
+  std::printf("total BA %zu states %zu edges; TGBA %zu states %zu edges\n", states, edges, tstates, tedges);
+  EXPECT_LE(states, 300u);
+}
+
+}  // namespace
+}  // namespace rtamp::automata

@@ -1,0 +1,111 @@
+// Optimality and validity on hundreds of random small scenarios: every search
+// strategy x both graph constructions x the cost models return the cost of an
+// independent brute-force search (oracle.hpp), and every plan is legal and
+// accepted (automaton and direct LTL semantics). Replans after random changes
+// (A* with experience) equal the brute force from the same state.
+#include <gtest/gtest.h>
+
+#include "plan_checks.hpp"
+
+namespace {
+
+using namespace rtamp;
+using namespace plantest;
+
+const plan::Algorithm kAlgos[] = {plan::Algorithm::Dijkstra, plan::Algorithm::AStar,
+                                  plan::Algorithm::AStarExperience};
+const plan::GraphConstruction kGraphs[] = {plan::GraphConstruction::Partial, plan::GraphConstruction::Full};
+
+TEST(Optimality, AllStrategiesMatchBruteForce) {
+  const auto formulas = robot_patterns();
+  ASSERT_GE(formulas.size(), 10u);
+  std::mt19937 rng(2024);
+  int found = 0, none = 0;
+  const char* models[] = {"euclid", "region", "unit"};
+  for (int trial = 0; trial < 600; ++trial) {
+    const world::Scenario sc = random_scenario(rng, formulas);
+    const std::string model = models[trial % 3];
+    SCOPED_TRACE("trial " + std::to_string(trial) + " task " + sc.task + " model " + model);
+    std::optional<double> want;
+    bool have_want = false;
+    for (auto algo : kAlgos)
+      for (auto graph : kGraphs) {
+        plan::PlannerOptions opt;
+        opt.algorithm = algo;
+        opt.graph = graph;
+        opt.cost = model;
+        plan::Planner p(sc, opt);
+        if (!have_want) {
+          want = oracle::min_lasso(p.scenario(), p.placement(), p.hand(), p.automaton(), model);
+          have_want = true;
+          want ? ++found : ++none;
+        }
+        const plan::PlanResult r = p.plan();
+        SCOPED_TRACE(std::string(plan::to_string(algo)) + "/" + plan::to_string(graph));
+        ASSERT_EQ(r.found, want.has_value()) << r.message;
+        if (!r.found) {
+          EXPECT_TRUE(r.reason == plan::NoPlanReason::NoAcceptingCycle || r.reason == plan::NoPlanReason::Capacity ||
+                      r.reason == plan::NoPlanReason::Unsatisfiable)
+              << plan::to_string(r.reason);
+          continue;
+        }
+        EXPECT_NEAR(r.plan.cost(), *want, 1e-6);
+        check_plan(p, r, model);
+      }
+  }
+  EXPECT_GT(found, 100);
+  EXPECT_GT(none, 3);
+}
+
+TEST(Optimality, ReplansAfterChangesMatchBruteForce) {
+  const auto formulas = robot_patterns();
+  std::mt19937 rng(77);
+  int checked = 0;
+  for (int trial = 0; trial < 200; ++trial) {
+    const world::Scenario sc = random_scenario(rng, formulas);
+    SCOPED_TRACE("trial " + std::to_string(trial) + " task " + sc.task);
+    plan::PlannerOptions opt;  // astar-exp, partial, euclid
+    plan::Planner p(sc, opt);
+    (void)p.plan();
+    for (int k = 0; k < 4; ++k) {
+      // A random change of a random kind (when applicable).
+      const auto& cur = p.scenario();
+      const int kind = static_cast<int>(rng() % 6);
+      std::vector<std::string> locs;
+      for (const auto& r : cur.regions) locs.push_back(r.name);
+      for (const auto& c : cur.containers) locs.push_back(c.name);
+      std::string change;
+      if (kind <= 1 && !cur.objects.empty()) {
+        const auto& o = cur.objects[rng() % cur.objects.size()];
+        change = "move " + o.name + " " + locs[rng() % locs.size()];
+      } else if (kind == 2 && cur.objects.size() < 3) {
+        change = "add n" + std::to_string(trial) + "_" + std::to_string(k) + " block " + locs[rng() % locs.size()];
+      } else if (kind == 3 && cur.objects.size() > 1) {
+        change = "remove " + cur.objects[rng() % cur.objects.size()].name;
+      } else if (kind == 4 && cur.regions.size() < 4 && cur.objects.size() <= 3) {
+        change = "add-region x" + std::to_string(k) + " " + std::to_string(0.1 * k) + " -0.5 3";
+      } else if (kind == 5 && !cur.containers.empty()) {
+        change = "remove-container t1";
+      } else if (kind == 5 && cur.objects.size() <= 2 && cur.regions.size() <= 3) {
+        change = "add-container t1 tray " + cur.regions[0].name + " 2";
+      } else {
+        continue;
+      }
+      SCOPED_TRACE(change);
+      p.apply(plan::Change::parse(change));
+      const plan::PlanResult r = p.plan();
+      const auto want = oracle::min_lasso(p.scenario(), p.placement(), p.hand(), p.automaton(), "euclid");
+      ASSERT_EQ(r.found, want.has_value()) << r.message;
+      ++checked;
+      if (r.found) {
+        EXPECT_NEAR(r.plan.cost(), *want, 1e-6);
+        check_plan(p, r, "euclid");
+        // Execute the first action, as the robot would, and keep going.
+        if (!r.plan.prefix.empty()) p.execute(r.plan.prefix.front().action);
+      }
+    }
+  }
+  EXPECT_GT(checked, 200);
+}
+
+}  // namespace

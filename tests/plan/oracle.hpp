@@ -1,0 +1,251 @@
+// An independent brute-force planner for tests: its own state representation
+// (a vector of location names' indices), its own action rules, its own
+// motion-cost formulas written from docs/planning.md, labels from the world
+// layer's reference evaluator, an explicit product with the automaton, and
+// the minimum lasso cost by Dijkstra from the start plus, for every accepting
+// node in order of distance, a Dijkstra for its cheapest cycle.
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <optional>
+#include <queue>
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+#include "rtamp/automata/automaton.hpp"
+#include "rtamp/world/placement.hpp"
+#include "rtamp/world/propositions.hpp"
+#include "rtamp/world/scenario.hpp"
+
+namespace oracle {
+
+using rtamp::world::Vec3;
+
+struct World {
+  const rtamp::world::Scenario* sc;
+  std::vector<std::string> things, locs;  // things: objects then containers; locs: regions then containers
+  std::vector<std::string> classes;
+  std::vector<bool> container;
+  std::vector<int> cap;
+  int R = 0;
+
+  std::vector<std::vector<int>> groups;  // interchangeable objects (same class, never named)
+
+  // Objects of one class that no atom of `atoms` names are interchangeable.
+  void find_groups(const std::vector<std::string>& atoms) {
+    rtamp::world::PropNames names;
+    for (const auto& a : atoms) {
+      const auto* prop = sc->find_proposition(a);
+      try {
+        rtamp::world::collect_names(prop ? prop->expr : rtamp::world::parse_prop_expr(a), names);
+      } catch (...) {
+      }
+    }
+    std::map<std::string, std::vector<int>> by_class;
+    for (std::size_t t = 0; t < sc->objects.size(); ++t)
+      if (!names.things.count(things[t])) by_class[classes[t]].push_back(static_cast<int>(t));
+    for (auto& [c, g] : by_class)
+      if (g.size() > 1) groups.push_back(g);
+  }
+
+  explicit World(const rtamp::world::Scenario& s) : sc(&s) {
+    for (const auto& o : s.objects) {
+      things.push_back(o.name);
+      classes.push_back(o.cls);
+      container.push_back(false);
+    }
+    for (const auto& c : s.containers) {
+      things.push_back(c.name);
+      classes.push_back(c.cls);
+      container.push_back(true);
+    }
+    for (const auto& r : s.regions) {
+      locs.push_back(r.name);
+      cap.push_back(r.capacity);
+    }
+    R = static_cast<int>(s.regions.size());
+    for (const auto& c : s.containers) {
+      locs.push_back(c.name);
+      cap.push_back(c.capacity);
+    }
+  }
+  int loc_index(const std::string& n) const {
+    for (std::size_t i = 0; i < locs.size(); ++i)
+      if (locs[i] == n) return static_cast<int>(i);
+    return -1;
+  }
+  // Container location index -> thing index.
+  int thing_of(int loc) const { return static_cast<int>(sc->objects.size()) + (loc - R); }
+};
+
+struct St {
+  std::vector<int> loc;
+  int hand = -1;  // -1 home
+  bool operator==(const St&) const = default;
+};
+
+inline St canonical(const World& w, St s) {
+  for (const auto& g : w.groups) {
+    std::vector<int> v;
+    for (int t : g) v.push_back(s.loc[static_cast<std::size_t>(t)]);
+    std::sort(v.begin(), v.end());
+    for (std::size_t i = 0; i < g.size(); ++i) s.loc[static_cast<std::size_t>(g[i])] = v[i];
+  }
+  return s;
+}
+
+inline Vec3 point(const World& w, const St& s, int loc) {
+  if (loc < 0) {
+    const auto& b = w.sc->robot.base;
+    return {b[0], b[1], b[2] + 0.5};
+  }
+  if (loc < w.R) return w.sc->regions[static_cast<std::size_t>(loc)].center;
+  const int region = s.loc[static_cast<std::size_t>(w.thing_of(loc))];
+  return w.sc->regions[static_cast<std::size_t>(region)].center;
+}
+
+inline double dist(const Vec3& a, const Vec3& b) {
+  return std::sqrt((a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) + (a[2] - b[2]) * (a[2] - b[2]));
+}
+
+inline double move_cost(const World& w, const St& s, int thing, int to, const std::string& model) {
+  if (model == "unit") return 1;
+  const Vec3 p = point(w, s, s.loc[static_cast<std::size_t>(thing)]);
+  const Vec3 t = point(w, s, to);
+  if (model == "region") return dist(p, t);
+  return dist(point(w, s, s.hand), p) + dist(p, t);
+}
+
+// Legal moves: (thing, to) pairs.
+inline std::vector<std::pair<int, int>> moves(const World& w, const St& s) {
+  std::vector<std::pair<int, int>> out;
+  std::vector<int> count(w.locs.size(), 0);
+  for (int l : s.loc) ++count[static_cast<std::size_t>(l)];
+  for (std::size_t t = 0; t < w.things.size(); ++t)
+    for (int l = 0; l < static_cast<int>(w.locs.size()); ++l) {
+      if (l == s.loc[t]) continue;
+      if (w.container[t] && l >= w.R) continue;
+      if (count[static_cast<std::size_t>(l)] >= w.cap[static_cast<std::size_t>(l)]) continue;
+      out.emplace_back(static_cast<int>(t), l);
+    }
+  return out;
+}
+
+inline rtamp::world::Placement placement(const World& w, const St& s) {
+  rtamp::world::Placement p;
+  for (std::size_t t = 0; t < w.things.size(); ++t)
+    p.set(w.things[t], w.locs[static_cast<std::size_t>(s.loc[t])], w.classes[t], w.container[t]);
+  return p;
+}
+
+// Truth of each automaton atom in s.
+inline rtamp::automata::Letter label(const World& w, const St& s, const rtamp::automata::Automaton& ba) {
+  const auto p = placement(w, s);
+  rtamp::automata::Letter l = 0;
+  for (std::size_t i = 0; i < ba.atoms.size(); ++i) {
+    const auto* prop = w.sc->find_proposition(ba.atoms[i]);
+    const rtamp::world::PropExpr e = prop ? prop->expr : rtamp::world::parse_prop_expr(ba.atoms[i]);
+    if (rtamp::world::evaluate(e, p)) l |= rtamp::automata::Letter{1} << i;
+  }
+  return l;
+}
+
+inline St start(const World& w, const rtamp::world::Placement& p, const std::string& hand) {
+  St s;
+  for (const auto& t : w.things) s.loc.push_back(w.loc_index(*p.location_of(t)));
+  s.hand = hand.empty() || hand == "home" ? -1 : w.loc_index(hand);
+  return s;
+}
+
+// Minimum lasso cost, or nullopt if there is none. With `symmetry`, states
+// that differ by a permutation of interchangeable objects are one node (the
+// quotient the planner searches).
+inline std::optional<double> min_lasso(const rtamp::world::Scenario& sc, const rtamp::world::Placement& p,
+                                       const std::string& hand, const rtamp::automata::Automaton& ba,
+                                       const std::string& model, bool symmetry = true) {
+  World w(sc);
+  if (symmetry) w.find_groups(ba.atoms);
+  struct Node {
+    St s;
+    std::uint32_t q;
+  };
+  std::vector<Node> nodes;
+  std::map<std::pair<std::vector<int>, std::pair<int, std::uint32_t>>, int> index;
+  std::vector<std::vector<std::pair<int, double>>> adj;
+  auto id = [&](const St& s0, std::uint32_t q) {
+    const St s = canonical(w, s0);
+    auto key = std::make_pair(s.loc, std::make_pair(s.hand, q));
+    auto it = index.find(key);
+    if (it != index.end()) return it->second;
+    const int n = static_cast<int>(nodes.size());
+    index.emplace(key, n);
+    nodes.push_back({s, q});
+    adj.emplace_back();
+    return n;
+  };
+  id(start(w, p, hand), ba.initial);
+  for (std::size_t n = 0; n < nodes.size(); ++n) {
+    const St s = nodes[n].s;
+    const std::uint32_t q = nodes[n].q;
+    const auto l = label(w, s, ba);
+    for (const auto& e : ba.edges[q]) {
+      if (!e.guard.matches(l)) continue;
+      const int a = id(s, e.dst);
+      adj[n].emplace_back(a, 0.0);
+      for (auto [t, to] : moves(w, s)) {
+        St s2 = s;
+        const double c = move_cost(w, s, t, to, model);
+        s2.loc[static_cast<std::size_t>(t)] = to;
+        s2.hand = to;
+        const int b = id(s2, e.dst);
+        adj[n].emplace_back(b, c);
+      }
+    }
+  }
+  const std::size_t N = nodes.size();
+  auto dijkstra = [&](int src, bool skip_src) {
+    std::vector<double> d(N, INFINITY);
+    using QI = std::pair<double, int>;
+    std::priority_queue<QI, std::vector<QI>, std::greater<QI>> pq;
+    if (skip_src) {
+      for (auto [m, c] : adj[static_cast<std::size_t>(src)])
+        if (c < d[static_cast<std::size_t>(m)]) {
+          d[static_cast<std::size_t>(m)] = c;
+          pq.push({c, m});
+        }
+    } else {
+      d[static_cast<std::size_t>(src)] = 0;
+      pq.push({0, src});
+    }
+    while (!pq.empty()) {
+      auto [dv, v] = pq.top();
+      pq.pop();
+      if (dv > d[static_cast<std::size_t>(v)]) continue;
+      if (skip_src && v == src) continue;  // reached the source again: do not go on from it
+      for (auto [m, c] : adj[static_cast<std::size_t>(v)])
+        if (dv + c < d[static_cast<std::size_t>(m)]) {
+          d[static_cast<std::size_t>(m)] = dv + c;
+          pq.push({dv + c, m});
+        }
+    }
+    return d;
+  };
+  const auto d0 = dijkstra(0, false);
+  std::vector<int> acc;
+  for (std::size_t n = 0; n < N; ++n)
+    if (ba.is_accepting_state(nodes[n].q) && d0[n] < INFINITY) acc.push_back(static_cast<int>(n));
+  std::sort(acc.begin(), acc.end(), [&](int a, int b) { return d0[static_cast<std::size_t>(a)] < d0[static_cast<std::size_t>(b)]; });
+  double best = INFINITY;
+  for (int n : acc) {
+    if (d0[static_cast<std::size_t>(n)] >= best) break;
+    const auto dc = dijkstra(n, true);
+    best = std::min(best, d0[static_cast<std::size_t>(n)] + dc[static_cast<std::size_t>(n)]);
+  }
+  if (best == INFINITY) return std::nullopt;
+  return best;
+}
+
+}  // namespace oracle

@@ -1,0 +1,25 @@
+// Scenarios built in code for the sim tests: the paper's "3-block" and "3-block + tray"
+// layouts (Section V) in front of a UR5 at the origin. Independent of world's loader.
+#pragma once
+
+#include "rtamp/world/scenario.hpp"
+
+namespace rtamp::sim::testing {
+
+inline world::Scenario three_block(bool with_tray = false) {
+  world::Scenario s;
+  s.name = with_tray ? "3-block-tray" : "3-block";
+  s.regions.push_back({"r1", {0.45, -0.30, 0}, {0.24, 0.24, 0}, 8, {}});
+  s.regions.push_back({"r2", {0.45, 0.30, 0}, {0.24, 0.24, 0}, 8, {}});
+  if (with_tray) {
+    s.containers.push_back({"r3", "tray", {0.62, -0.05, 0}, {0.24, 0.16, 0.03}, 4, {}});
+  } else {
+    s.regions.push_back({"r3", {0.62, 0.0, 0}, {0.2, 0.2, 0}, 8, {}});
+  }
+  s.objects.push_back({"o1", "block", {0.40, -0.36, 0}, {0.04, 0.04, 0.04}, {}});
+  s.objects.push_back({"o2", "block", {0.50, -0.30, 0}, {0.04, 0.04, 0.04}, {}});
+  s.objects.push_back({"o3", "block", {0.40, -0.24, 0}, {0.04, 0.04, 0.04}, {}});
+  return s;
+}
+
+}  // namespace rtamp::sim::testing
