@@ -10,12 +10,11 @@ namespace {
 
 class Relation {
  public:
-  explicit Relation(std::uint32_t n) : n_(n), words_((n + 63) / 64), bits_(std::size_t{n} * words_, ~std::uint64_t{0}) {}
+  explicit Relation(std::uint32_t n) : words_((n + 63) / 64), bits_(std::size_t{n} * words_, ~std::uint64_t{0}) {}
   bool get(std::uint32_t q, std::uint32_t r) const { return (bits_[q * words_ + r / 64] >> (r % 64)) & 1u; }
   void clear(std::uint32_t q, std::uint32_t r) { bits_[q * words_ + r / 64] &= ~(std::uint64_t{1} << (r % 64)); }
 
  private:
-  std::uint32_t n_;
   std::size_t words_;
   std::vector<std::uint64_t> bits_;
 };

@@ -177,6 +177,14 @@ void randomize_objects(world::Scenario& s, std::mt19937_64& rng) {
   }
 }
 
+// Moves (not stays) in a plan's prefix and cycle.
+std::size_t moves_in(const plan::Plan& p) {
+  auto moves = [](const std::vector<plan::Step>& steps) {
+    return std::count_if(steps.begin(), steps.end(), [](const plan::Step& s) { return !s.action.is_stay(); });
+  };
+  return static_cast<std::size_t>(moves(p.prefix) + moves(p.cycle));
+}
+
 world::Intervention random_intervention(const world::Scenario& s, world::Intervention::Kind kind,
                                         const EpisodeOptions& o, std::mt19937_64& rng) {
   world::Intervention iv;
@@ -299,7 +307,12 @@ EpisodeMetrics run_episode(const world::Scenario& input, const EpisodeOptions& o
       const auto tuples = planner.action_tuples(r.plan);
       const ReconfigurationReport rep = tree.set_plan(tuples);
       nlohmann::json actions = nlohmann::json::array();
-      for (const auto& t : tuples) actions.push_back(t.action);
+      std::string listed;
+      for (const auto& t : tuples) {
+        actions.push_back(t.action);
+        listed += (listed.empty() ? "" : ", ") + t.action;
+      }
+      say("plan: " + (listed.empty() ? std::string("nothing to move") : listed));
       emit({{"ev", "plan"}, {"first", first}, {"cost", r.plan.cost()}, {"actions", actions},
             {"seconds", r.stats.seconds}, {"expanded", r.stats.expanded}, {"generated", r.stats.generated},
             {"cache_hits", r.stats.cache_hits}, {"cache_misses", r.stats.cache_misses}});
@@ -328,7 +341,7 @@ EpisodeMetrics run_episode(const world::Scenario& input, const EpisodeOptions& o
       return m;
     }
     say("first plan in " + std::to_string(first.stats.seconds * 1e3) + " ms: " +
-        std::to_string(first.plan.prefix.size()) + " steps, cost " + std::to_string(first.plan.cost()));
+        std::to_string(moves_in(first.plan)) + " moves, cost " + std::to_string(first.plan.cost()));
     for (double until = sim.time() + first.stats.seconds; sim.time() < until;) sim.step();
     tree.placement() = believed;
     install(first, true);
@@ -465,10 +478,11 @@ EpisodeMetrics run_episode(const world::Scenario& input, const EpisodeOptions& o
           say(m.reason);
           break;
         }
-        say("replanned in " + std::to_string(r.stats.seconds * 1e6) + " us: " + std::to_string(r.plan.prefix.size()) +
-            " steps, cost " + std::to_string(r.plan.cost()) + " (cache hits " + std::to_string(r.stats.cache_hits) +
+        say("replanned in " + std::to_string(r.stats.seconds * 1e6) + " us: " + std::to_string(moves_in(r.plan)) +
+            " moves, cost " + std::to_string(r.plan.cost()) + " (cache hits " + std::to_string(r.stats.cache_hits) +
             ", misses " + std::to_string(r.stats.cache_misses) + ")");
         install(r, false);
+        continue;  // the status ticked above belongs to the old tree
       }
       if (pending || tree.has_pending()) continue;
 
@@ -478,9 +492,7 @@ EpisodeMetrics run_episode(const world::Scenario& input, const EpisodeOptions& o
         // Every step is done: finished if a plan from here needs no move.
         planner_view(believed);
         plan::PlanResult check = planner.plan();
-        if (check.found && check.plan.prefix.empty() && check.plan.cycle.size() <= 1 &&
-            std::all_of(check.plan.cycle.begin(), check.plan.cycle.end(),
-                        [](const plan::Step& s) { return s.action.is_stay(); })) {
+        if (check.found && moves_in(check.plan) == 0) {
           done = true;
           m.success = true;
           m.reason = "task done";
@@ -493,7 +505,7 @@ EpisodeMetrics run_episode(const world::Scenario& input, const EpisodeOptions& o
         } else {
           ++m.replans;
           m.replan_seconds += check.stats.seconds;
-          say("steps done but the task is not: new plan with " + std::to_string(check.plan.prefix.size()) + " steps");
+          say("steps done but the task is not: new plan with " + std::to_string(moves_in(check.plan)) + " moves");
           install(check, false);
         }
       }

@@ -65,6 +65,19 @@ SkillPlan plan_top_down(const Ur5Kinematics& arm, const Joints& q0, const ThingP
     return plan;
   }
   std::string last = "pre-grasp pose unreachable";
+  // An arm that starts in contact (after a missed grasp, or an operator who put
+  // something against the fingers) first backs straight up, unchecked, so that
+  // the transit can start from a free configuration.
+  std::vector<Joints> escape;
+  Joints q_start = q0;
+  if (checker && checker->config_collides(q0)) {
+    Eigen::Isometry3d up = arm.tool_pose(q0);
+    up.translation().z() += o.approach_height;
+    if (auto line = cartesian_line(arm, q0, up, o.cartesian)) {
+      escape = std::move(*line);
+      q_start = escape.back();
+    }
+  }
   for (const Candidate& c : candidates) {
     if (checker && checker->config_collides(c.q_pre)) {
       last = "pre-grasp configuration collides";
@@ -77,12 +90,13 @@ SkillPlan plan_top_down(const Ur5Kinematics& arm, const Joints& q0, const ThingP
       last = "approach " + why;
       continue;
     }
-    const JointPathResult transit = plan_joint_path(q0, c.q_pre, checker, o.planner);
+    const JointPathResult transit = plan_joint_path(q_start, c.q_pre, checker, o.planner);
     if (!transit.ok) {
       last = "transit: " + transit.why;
       continue;
     }
     Trajectory tr(q0);
+    if (!escape.empty()) tr.append_polyline(escape, o.limits);
     tr.append_joint_path(transit.path, o.limits);
     plan.t_transit = tr.duration();
     tr.append_polyline(*approach, o.limits);

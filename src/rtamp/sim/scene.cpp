@@ -90,18 +90,28 @@ std::optional<world::Vec3> free_spot(const Simulation& sim, const std::string& l
   const auto area = g.footprint_of(location);
   const auto surface = g.surface_z(location);
   if (!area || !surface) return std::nullopt;
-  // Candidates on a 5 mm grid over the area, the one nearest the area's centre first
-  // (ties: smaller x, then smaller y), so that greedy filling packs from the middle.
+  // Candidates on a 5 mm grid over the area, the one nearest an anchor first (ties:
+  // smaller x, then smaller y). Into a container, and for big things (a tray: more
+  // than a tenth of the area), the anchor is the area's centre. Small things put into
+  // a region pack from its corner nearest the robot's base instead, which keeps the
+  // middle free for a tray and the reaches short.
   const double step = 0.005;
   const double hx = (area->sx - size[0]) / 2, hy = (area->sy - size[1]) / 2;
   if (hx < 0 || hy < 0) return std::nullopt;
   const int nx = static_cast<int>(std::floor(hx / step + 1e-9)), ny = static_cast<int>(std::floor(hy / step + 1e-9));
+  double ax = area->x, ay = area->y;
+  const bool small_thing = size[0] * size[1] <= 0.1 * area->sx * area->sy;
+  if (!into_container && small_thing) {
+    const auto& base = sim.scenario().robot.base;
+    ax = std::clamp(base[0], area->x - hx, area->x + hx);
+    ay = std::clamp(base[1], area->y - hy, area->y + hy);
+  }
   std::optional<world::Vec3> best;
   double best_d = 0;
   for (int i = -nx; i <= nx; ++i) {
     for (int j = -ny; j <= ny; ++j) {
       const double x = area->x + i * step, y = area->y + j * step;
-      const double d = std::hypot(x - area->x, y - area->y);
+      const double d = std::hypot(x - ax, y - ay);
       if (best && d >= best_d - 1e-12) continue;
       const world::Footprint f = world::footprint_at({x, y, 0}, size);
       bool free = true;

@@ -1,7 +1,8 @@
 // Questions about the current scene that perception, the operator and the skill runner
 // share: the symbolic geometry with the containers where they are NOW, which things a
 // container holds, and free spots that overlap nothing (a 5 mm grid search over the
-// location, nearest its centre, against the footprints of every present thing).
+// location, nearest its centre or, for small things in a region, nearest the robot,
+// against the footprints of every present thing).
 // Invariant: a spot returned by free_spot() keeps `gap` from every present thing's
 // footprint except the excluded ones and the target container itself.
 #pragma once
@@ -33,7 +34,9 @@ std::vector<int> contents_of(const Simulation& sim, int container);
 // A free spot (centre of the base) for a thing of `size` in `location`: inside its
 // footprint, keeping `gap` from every present thing (except `exclude`) and not
 // overlapping `keep_clear` (or a target tray's rims); of all such spots on a 5 mm grid,
-// the one nearest the location's centre. nullopt if the location is unknown or full.
+// the one nearest the location's centre — except for small things put into a region,
+// which pack from the region's corner nearest the robot's base, leaving the middle to
+// trays. nullopt if the location is unknown or full.
 std::optional<world::Vec3> free_spot(const Simulation& sim, const std::string& location, const world::Vec3& size,
                                      const std::vector<int>& exclude, double gap = 0.02,
                                      const std::vector<world::Footprint>& keep_clear = {});
