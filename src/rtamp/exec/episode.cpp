@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <fstream>
 #include <future>
+#include <map>
 #include <random>
 
 #include "rtamp/plan/planner.hpp"
@@ -373,6 +374,7 @@ EpisodeMetrics run_episode(const world::Scenario& input, const EpisodeOptions& o
       pending = Pending{std::async(std::launch::async, [&planner] { return planner.plan(); }), std::nullopt, sim.time()};
     };
 
+    std::map<std::string, double> outside_since;  // things perceived outside every location, since when
     int failures_seen = 0, successes_seen = 0, consecutive_failures = 0;
     const int steps_per_tick = std::max(1, static_cast<int>(std::lround(opt.tick_period / sim.timestep())));
     bool done = false;
@@ -401,12 +403,31 @@ EpisodeMetrics run_episode(const world::Scenario& input, const EpisodeOptions& o
         else things_changed = true;
       }
 
-      // Perceive.
+      // Perceive. A thing seen outside every location (tumbling, or knocked off
+      // the table) keeps its last believed location for a while; the episode
+      // ends if it stays out.
       perception.observe(percept);
       world::Placement seen = percept.placement();
       if (seen != believed) emit({{"ev", "perceived"}, {"placement", placement_json(seen)}});
+      std::string lost;
+      for (auto& [name, thing] : seen.things) {
+        if (thing.location != "none") {
+          outside_since.erase(name);
+          continue;
+        }
+        const auto since = outside_since.emplace(name, now).first->second;
+        if (const std::string* was = believed.location_of(name); was && *was != "none") thing.location = *was;
+        if (now - since > opt.outside_grace) lost = name;
+      }
       believed = seen;
       tree.placement() = believed;
+      if (!lost.empty()) {
+        m.reason = "'" + lost + "' is outside every region and container (since t = " +
+                   std::to_string(outside_since.at(lost)) + " s): nothing can plan with it";
+        emit({{"ev", "lost"}, {"thing", lost}, {"reason", m.reason}});
+        say(m.reason);
+        break;
+      }
 
       if (things_changed) {
         // Algorithm 1 lines 9-10: objects or containers added/removed: update the TS.
@@ -511,18 +532,19 @@ EpisodeMetrics run_episode(const world::Scenario& input, const EpisodeOptions& o
       }
     }
     if (pending && !pending->result) pending->future.wait();
+    tree.tree().halt();  // stop a move still running (logged before the end record)
     if (!done && m.reason.empty()) m.reason = "time limit (" + std::to_string(opt.max_time) + " s of simulated time)";
     m.tree_changes = tree.changes();
     m.motion_cost = runner.cost();
     m.actions_succeeded = runner.succeeded;
     m.actions_failed = runner.failed;
     if (video) video->close();
+    m.wall_seconds = seconds_since(wall0);
+    m.real_time_factor = m.wall_seconds > 0 ? sim.time() / m.wall_seconds : 0;
     const auto w = sim.warnings();
     emit({{"ev", "end"}, {"success", m.success}, {"reason", m.reason}, {"metrics", to_json(m)},
           {"placement", placement_json(believed)}, {"mujoco_warnings", w.total()}});
     say(m.success ? "task done" : "episode ended: " + m.reason);
-    m.wall_seconds = seconds_since(wall0);
-    m.real_time_factor = m.wall_seconds > 0 ? sim.time() / m.wall_seconds : 0;
   } catch (const std::exception& e) {
     m.success = false;
     m.reason = std::string("error: ") + e.what();

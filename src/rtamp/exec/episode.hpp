@@ -46,6 +46,9 @@ struct EpisodeOptions {
   // The episode ends (unsuccessfully, with the last failure as reason) after
   // this many failed moves without a successful one in between.
   int max_consecutive_failures = 5;
+  // A thing perceived outside every region and container keeps its last known
+  // location this long (s of simulated time); after that the episode ends.
+  double outside_grace = 3;
   std::string log_path;      // JSON Lines episode log; empty: none
   std::string tree_dir;      // BehaviorTree.CPP XML of the tree after each change; empty: none
   std::string video_path;    // MP4 of the run; empty: none

@@ -60,6 +60,7 @@ std::optional<world::Vec3> free_spot(const Simulation& sim, const std::string& l
   const int target = sim.find(location);
   const bool into_container = target >= 0 && sim.thing(target).container;
   std::vector<world::Footprint> occupied = keep_clear;
+  if (sim.reserved_spot()) occupied.push_back(*sim.reserved_spot());
   for (std::size_t i = 0; i < sim.things().size(); ++i) {
     const Thing& t = sim.things()[i];
     const int ii = static_cast<int>(i);

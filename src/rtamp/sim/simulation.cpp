@@ -329,6 +329,7 @@ void Simulation::attach(int i) {
 }
 
 void Simulation::detach() {
+  reserved_.reset();
   if (held_ < 0) return;
   m_->eq_active[thing(held_).eq] = 0;
   held_ = -1;

@@ -21,11 +21,13 @@
 #include <Eigen/Geometry>
 #include <array>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "rtamp/robot/joints.hpp"
 #include "rtamp/sim/mjcf_builder.hpp"
+#include "rtamp/world/geometry.hpp"
 #include "rtamp/world/scenario.hpp"
 
 namespace rtamp::sim {
@@ -126,8 +128,13 @@ class Simulation {
   // Grasping.
   bool fingers_touch(int thing) const;  // both fingers in contact with it
   void attach(int thing);               // weld at the current relative pose
-  void detach();
+  void detach();  // also frees the reserved spot
   int held() const { return held_; }
+  // The spot the arm is about to put the held thing on (footprint, gap included):
+  // free_spot() treats it as taken, so the operator does not put things there.
+  void reserve_spot(const world::Footprint& f) { reserved_ = f; }
+  void clear_reserved_spot() { reserved_.reset(); }
+  const std::optional<world::Footprint>& reserved_spot() const { return reserved_; }
 
   // Collision check of an arm configuration on a scratch mjData holding the current
   // state (objects where they are now, the held thing carried along): true if an arm,
@@ -158,6 +165,7 @@ class Simulation {
   robot::Joints q_target_{}, qd_target_{}, qdd_target_{};
   double finger_target_ = 0;
   int held_ = -1;
+  std::optional<world::Footprint> reserved_;
   int gripper_body_ = -1, left_body_ = -1, right_body_ = -1;
   int tcp_site_ = -1, flange_site_ = -1;
   int elbow_body_ = -1;

@@ -86,6 +86,7 @@ bool SkillRunner::start_place(const std::string& location) {
     controller_.fail("cannot place '" + object + "' into itself");
     return false;
   }
+  sim_.clear_reserved_spot();  // our own earlier reservation is no obstacle
   auto spot = place_spot(i, location);
   if (!spot) {
     controller_.fail("no free spot for '" + object + "' in '" + location + "'");
@@ -104,6 +105,9 @@ bool SkillRunner::start_place(const std::string& location) {
     controller_.fail("cannot place '" + object + "' in '" + location + "': " + p.why);
     return false;
   }
+  const Thing& held = sim_.thing(i);
+  sim_.reserve_spot(world::footprint_at(*spot, {held.size[0] + 2 * options_.place_gap,
+                                                held.size[1] + 2 * options_.place_gap, 0}));
   MotionPlan m;
   m.trajectory = std::move(p.trajectory);
   for (const auto& e : p.events) m.events.push_back({e.time, e.kind == robot::GripperEvent::Kind::Close});

@@ -1,0 +1,183 @@
+// Whole episodes of the reactive loop (Algorithm 1) on the simulated UR5:
+// the scripted demo scenario, an object taken out of the gripper (put back
+// elsewhere, or taken away), and a change that makes the task unsatisfiable.
+// Each checks the outcome and that the JSON Lines log is complete: every line
+// parses, it starts with "episode" and ends with "end", and it records the
+// interventions, plans, tree changes and actions.
+#include "rtamp/exec/episode.hpp"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include "rtamp/world/scenario_io.hpp"
+
+namespace rtamp::exec {
+namespace {
+
+struct Log {
+  std::vector<nlohmann::json> lines;
+  std::vector<nlohmann::json> of(const std::string& ev) const {
+    std::vector<nlohmann::json> out;
+    for (const auto& j : lines)
+      if (j.at("ev") == ev) out.push_back(j);
+    return out;
+  }
+};
+
+Log read_log(const std::string& path) {
+  Log log;
+  std::ifstream in(path);
+  std::string line;
+  while (std::getline(in, line)) log.lines.push_back(nlohmann::json::parse(line));  // throws if malformed
+  return log;
+}
+
+std::string log_path(const std::string& name) {
+  return (std::filesystem::temp_directory_path() / ("rtamp_episode_test_" + name + ".jsonl")).string();
+}
+
+void expect_complete(const Log& log, const EpisodeMetrics& m) {
+  ASSERT_GE(log.lines.size(), 2u);
+  EXPECT_EQ(log.lines.front().at("ev"), "episode");
+  EXPECT_EQ(log.lines.back().at("ev"), "end");
+  EXPECT_EQ(log.lines.back().at("success"), m.success);
+  EXPECT_EQ(log.lines.back().at("reason"), m.reason);
+  EXPECT_FALSE(log.of("plan").empty());
+  EXPECT_FALSE(log.of("tree").empty());
+  // Every started action finished, failed or was halted.
+  std::size_t started = 0, ended = 0;
+  for (const auto& a : log.of("action")) {
+    if (a.at("what") == "start") ++started;
+    if (a.at("what") == "finished" || a.at("what") == "failed" || a.at("what") == "halted") ++ended;
+  }
+  EXPECT_GE(started, ended);
+  EXPECT_LE(started, ended + 1);  // at most the last one was cut by the end of the episode
+  // Time never runs backwards.
+  double t = 0;
+  for (const auto& j : log.lines) {
+    EXPECT_GE(j.at("t").get<double>(), t - 1e-9);
+    t = j.at("t").get<double>();
+  }
+}
+
+EpisodeOptions options(const std::string& name) {
+  EpisodeOptions o;
+  o.log_path = log_path(name);
+  o.max_time = 300;
+  return o;
+}
+
+TEST(Episode, ScriptedTrayScenarioSucceedsWithACompleteLog) {
+  const world::Scenario s = world::load_scenario("3-block-tray");
+  const EpisodeOptions o = options("tray");
+  const EpisodeMetrics m = run_episode(s, o);
+  EXPECT_TRUE(m.success) << m.reason;
+  EXPECT_EQ(m.reason, "task done");
+  EXPECT_EQ(m.interventions, 1);
+  EXPECT_GT(m.completion_time, 0);
+  EXPECT_GT(m.motion_cost, 0);
+  EXPECT_GE(m.actions_succeeded, 7);  // load the tray, carry it, unload it, redo o2
+  const Log log = read_log(o.log_path);
+  expect_complete(log, m);
+  ASSERT_EQ(log.of("intervention").size(), 1u);
+  EXPECT_EQ(log.of("intervention")[0].at("kind"), "relocate");
+  EXPECT_EQ(log.of("intervention")[0].at("applied"), true);
+  // The first plan uses the tray.
+  const auto first = log.of("plan").front();
+  EXPECT_EQ(first.at("first"), true);
+  EXPECT_NE(first.at("actions").dump().find("move(r3, r2)"), std::string::npos);
+  // At the end every block is in r2.
+  const auto& placement = log.lines.back().at("placement");
+  for (const char* b : {"o1", "o2", "o3"}) EXPECT_EQ(placement.at(b), "r2") << b;
+  std::filesystem::remove(o.log_path);
+}
+
+// The same seed gives the same episode.
+TEST(Episode, IsDeterministicForASeed) {
+  const world::Scenario s = world::load_scenario("3-block");
+  EpisodeOptions o;
+  o.seed = 5;
+  o.random_change = world::Intervention::Kind::Relocate;
+  const EpisodeMetrics a = run_episode(s, o), b = run_episode(s, o);
+  EXPECT_EQ(a.success, b.success);
+  EXPECT_EQ(a.completion_time, b.completion_time);
+  EXPECT_EQ(a.motion_cost, b.motion_cost);
+  EXPECT_EQ(a.replans, b.replans);
+  EXPECT_EQ(a.tree_changes, b.tree_changes);
+}
+
+world::Intervention take_from_gripper(double time, const std::string& to) {
+  world::Intervention iv;
+  iv.kind = world::Intervention::Kind::TakeFromGripper;
+  iv.time = time;
+  iv.location = to;
+  return iv;
+}
+
+// The operator takes the block out of the gripper while it is carried and puts
+// it back in r1: the move fails, the tree or the planner redoes it.
+TEST(Episode, ObjectTakenFromTheGripperAndPutBackIsMovedAgain) {
+  world::Scenario s = world::load_scenario("3-block");
+  s.interventions = {take_from_gripper(4.0, "r1")};
+  const EpisodeOptions o = options("take_back");
+  const EpisodeMetrics m = run_episode(s, o);
+  EXPECT_TRUE(m.success) << m.reason;
+  const Log log = read_log(o.log_path);
+  expect_complete(log, m);
+  ASSERT_EQ(log.of("intervention").size(), 1u);
+  EXPECT_EQ(log.of("intervention")[0].at("applied"), true) << "the gripper held nothing at t = 4 s";
+  EXPECT_EQ(log.of("intervention")[0].at("kind"), "take-from-gripper");
+  EXPECT_GE(m.actions_failed, 1);
+  for (const char* b : {"o1", "o2", "o3"}) EXPECT_EQ(log.lines.back().at("placement").at(b), "r2") << b;
+  std::filesystem::remove(o.log_path);
+}
+
+// Taken away for good: the task is about the blocks that are left.
+TEST(Episode, ObjectTakenFromTheGripperForGoodIsForgotten) {
+  world::Scenario s = world::load_scenario("3-block");
+  s.interventions = {take_from_gripper(4.0, "")};
+  const EpisodeOptions o = options("take_away");
+  const EpisodeMetrics m = run_episode(s, o);
+  EXPECT_TRUE(m.success) << m.reason;
+  const Log log = read_log(o.log_path);
+  expect_complete(log, m);
+  EXPECT_EQ(log.of("intervention").at(0).at("applied"), true);
+  EXPECT_EQ(log.lines.back().at("placement").size(), 2u);
+  std::filesystem::remove(o.log_path);
+}
+
+// r2 holds at most three things; a fourth block makes "all blocks in r2"
+// impossible. The episode ends at once with the planner's reason.
+TEST(Episode, UnsatisfiableChangeEndsWithAClearReason) {
+  world::Scenario s = world::load_scenario("3-block");
+  for (auto& r : s.regions)
+    if (r.name == "r2") r.capacity = 3;
+  world::Intervention add;
+  add.kind = world::Intervention::Kind::Add;
+  add.time = 3;
+  add.subject = "o4";
+  add.cls = "block";
+  add.location = "r1";
+  s.interventions = {add};
+  const EpisodeOptions o = options("unsat");
+  const EpisodeMetrics m = run_episode(s, o);
+  EXPECT_FALSE(m.success);
+  EXPECT_NE(m.reason.find("no plan"), std::string::npos) << m.reason;
+  EXPECT_NE(m.reason.find("capacit"), std::string::npos) << m.reason;
+  EXPECT_LT(m.completion_time + 1, o.max_time);
+  const Log log = read_log(o.log_path);
+  expect_complete(log, m);
+  EXPECT_FALSE(log.of("no_plan").empty());
+  std::filesystem::remove(o.log_path);
+}
+
+TEST(Episode, UnreadableLogPathIsAClearError) {
+  EpisodeOptions o;
+  o.log_path = "/nonexistent-dir/episode.jsonl";
+  EXPECT_THROW(run_episode(world::load_scenario("3-block"), o), Error);
+}
+
+}  // namespace
+}  // namespace rtamp::exec
