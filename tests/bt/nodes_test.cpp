@@ -52,6 +52,26 @@ TEST(Sequence, FailureEndsTheRunAndRestartsFromTheFirstChild) {
   EXPECT_EQ(a.starts, 2);
 }
 
+TEST(Sequence, YieldsBetweenChildrenWhileAsked) {
+  Probe a, b;
+  Tree tree;
+  auto seq = make<Sequence>("seq", probe_action("a", a), probe_action("b", b));
+  bool hold = true;
+  seq->set_yield([&] { return hold; });
+  tree.set_root(std::move(seq));
+  EXPECT_EQ(tree.tick(), Status::Running) << "a succeeded; the sequence yields before b";
+  EXPECT_EQ(a.starts, 1);
+  EXPECT_EQ(b.starts, 0);
+  EXPECT_EQ(tree.root()->child(1).status(), Status::Invalid);
+  EXPECT_EQ(tree.tick(), Status::Success) << "the next tick resumes at b (a is not re-ticked)";
+  EXPECT_EQ(a.ticks(), 1);
+  EXPECT_EQ(b.starts, 1);
+  hold = false;
+  EXPECT_EQ(tree.tick(), Status::Success) << "not asked: a and b in one tick";
+  EXPECT_EQ(a.starts, 2);
+  EXPECT_EQ(b.starts, 2);
+}
+
 TEST(ReactiveSequence, RetickEarlierChildrenAndHaltRunningLaterChild) {
   Flag ok;
   Probe act;

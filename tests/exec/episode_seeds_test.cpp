@@ -14,12 +14,26 @@ namespace {
 
 using Kind = world::Intervention::Kind;
 
+}  // namespace
+}  // namespace rtamp::exec
+
+namespace rtamp::world {
+void PrintTo(Intervention::Kind k, std::ostream* os) {
+  *os << (k == Intervention::Kind::Relocate ? "relocate" : k == Intervention::Kind::Add ? "add" : "remove");
+}
+}  // namespace rtamp::world
+
+namespace rtamp::exec {
+namespace {
+
 class SeededEpisodes : public ::testing::TestWithParam<std::tuple<std::string, Kind>> {};
 
 TEST_P(SeededEpisodes, AllSucceed) {
   const auto& [name, kind] = GetParam();
   const world::Scenario s = world::load_scenario(name);
-  const std::string log = (std::filesystem::temp_directory_path() / "rtamp_seeded_episode.jsonl").string();
+  const std::string log = (std::filesystem::temp_directory_path() /
+                           ("rtamp_seeded_" + name + "_" + std::to_string(static_cast<int>(kind)) + ".jsonl"))
+                              .string();
   for (std::uint64_t seed = 1; seed <= 30; ++seed) {
     EpisodeOptions o;
     o.seed = seed;

@@ -35,7 +35,7 @@ Log read_log(const std::string& path) {
 }
 
 std::string log_path(const std::string& name) {
-  return (std::filesystem::temp_directory_path() / ("rtamp_episode_test_" + name + ".jsonl")).string();
+  return (std::filesystem::temp_directory_path() / ("rtamp_episode_test_" + name + ".jsonl")).string();  // one per test
 }
 
 void expect_complete(const Log& log, const EpisodeMetrics& m) {

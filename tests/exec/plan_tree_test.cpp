@@ -248,16 +248,19 @@ TEST(PlanTree, ChangeThatWouldCutTheRunningMoveIsDeferredUntilItReturns) {
   EXPECT_FALSE(f.tree.retry_pending()->applied);  // still running
   EXPECT_EQ(f.tick(), bt::Status::Running);
   f.runner.finish();
-  f.tick();  // the move returns SUCCESS; the sequence goes on
+  EXPECT_EQ(f.tick(), bt::Status::Running);  // the move returns SUCCESS; the root yields
   EXPECT_EQ(f.runner.finished, std::vector<std::string>{"move(o1, r2)"});
-  EXPECT_TRUE(f.runner.halted.empty());  // never cut
-  // Now the change goes through (the next subtree may be running, but it is kept).
+  EXPECT_EQ(f.runner.started.size(), 1u);  // the next step waits for the change
+  EXPECT_TRUE(f.runner.halted.empty());    // never cut
+  // Now the change goes through, and the new plan starts from its first step.
   const auto applied = f.tree.retry_pending();
   ASSERT_TRUE(applied);
   EXPECT_TRUE(applied->applied);
   EXPECT_EQ(applied->removed, 1u);
   EXPECT_FALSE(f.tree.has_pending());
   EXPECT_EQ(f.tree.tuples().size(), 2u);
+  EXPECT_EQ(f.tick(), bt::Status::Running);
+  EXPECT_EQ(f.runner.started.back(), "move(o2, r2)");
 }
 
 TEST(PlanTree, OfflineRebuildsEverythingAndWaitsForTheArm) {
@@ -269,12 +272,8 @@ TEST(PlanTree, OfflineRebuildsEverythingAndWaitsForTheArm) {
   later.things["o1"].location = "r2";
   EXPECT_FALSE(f.tree.set_plan(f.plan_from(later)).applied);  // the arm is moving
   f.runner.finish();
-  f.tick();
-  // The next subtree started right away; the offline rebuild still waits for idle.
-  f.runner.finish();
-  f.tick();
-  f.runner.finish();
-  EXPECT_EQ(f.tick(), bt::Status::Success);
+  EXPECT_EQ(f.tick(), bt::Status::Running);  // yields: the next step waits for the rebuild
+  EXPECT_EQ(f.runner.started.size(), 1u);
   const auto r = f.tree.retry_pending();
   ASSERT_TRUE(r && r->applied);
   EXPECT_EQ(r->removed, 3u);

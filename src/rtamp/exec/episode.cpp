@@ -1,5 +1,6 @@
 #include "rtamp/exec/episode.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -92,8 +93,10 @@ class SimActionRunner final : public ActionRunner {
         if (!skills_.start_place(to_)) return fail_or_recover(controller_.reason());
         return bt::Status::Running;
       case Phase::Placing:
+        hand_ = to_;
         return finish(bt::Status::Success, {});
       case Phase::Recovering:
+        hand_ = from_;
         return finish(bt::Status::Failure, failure_);
     }
     return bt::Status::Running;
@@ -109,6 +112,8 @@ class SimActionRunner final : public ActionRunner {
   const std::string& current() const { return current_; }
   const std::string& thing() const { return thing_; }
   const std::string& destination() const { return to_; }
+  // Where the hand is when no move runs: the location of the last place ("" at first: home).
+  const std::string& hand() const { return hand_; }
   double cost() const { return cost_; }
   int succeeded = 0, failed = 0;
   std::string last_failure;
@@ -144,7 +149,7 @@ class SimActionRunner final : public ActionRunner {
 
   Skills& skills_;
   sim::Controller& controller_;
-  std::string current_, thing_, to_, from_, failure_;
+  std::string current_, thing_, to_, from_, failure_, hand_;
   Phase phase_ = Phase::Picking;
   double cost_ = 0;
 };
@@ -304,6 +309,13 @@ EpisodeMetrics run_episode(const world::Scenario& input, const EpisodeOptions& o
       std::snprintf(name, sizeof name, "/tree_%03d.xml", tree_files++);
       std::ofstream(opt.tree_dir + name) << bt::to_btcpp_xml(tree.tree());
     };
+    auto show_tree = [&] {  // the subtrees' roots, one line each (the whole tree only at the start)
+      if (!opt.timeline) return;
+      std::string lines;
+      for (const bt::Node* c : tree.tree().root()->children())
+        lines += "\n    " + std::string(bt::to_string(c->status())) + "  " + c->name();
+      say("tree now:" + (lines.empty() ? std::string(" (empty)") : lines));
+    };
     auto install = [&](const plan::PlanResult& r, bool first) {
       const auto tuples = planner.action_tuples(r.plan);
       const ReconfigurationReport rep = tree.set_plan(tuples);
@@ -322,6 +334,7 @@ EpisodeMetrics run_episode(const world::Scenario& input, const EpisodeOptions& o
       if (rep.applied) {
         say("tree: +" + std::to_string(rep.inserted) + " -" + std::to_string(rep.removed) + " subtrees, " +
             std::to_string(rep.updated) + " updated (" + std::to_string(tree.changes()) + " changes so far)");
+        if (!first && rep.inserted + rep.removed > 0) show_tree();
         write_tree();
       } else {
         say("tree change deferred: a running move must finish first");
@@ -352,18 +365,22 @@ EpisodeMetrics run_episode(const world::Scenario& input, const EpisodeOptions& o
     struct Pending {
       std::future<plan::PlanResult> future;
       std::optional<plan::PlanResult> result;  // set once the worker is done
-      double requested_at = 0;
+      double requested_at = 0;                  // simulated time of the request
+      Clock::time_point wall_start;
     };
     std::optional<Pending> pending;
     auto planner_view = [&](world::Placement p) {
       // A thing in the hand will be where the running move puts it (the move is not cut).
-      std::string hand;
+      std::string hand = runner.hand();
       if (!runner.current().empty()) {
         if (auto it = p.things.find(runner.thing()); it != p.things.end()) it->second.location = runner.destination();
         hand = runner.destination();
       }
       for (auto& [name, thing] : p.things)
         if (thing.location == sim::kInHand) thing.location = runner.destination().empty() ? "none" : runner.destination();
+      // The hand's last location may be a container that is gone: then "home".
+      const auto* held_by = p.things.count(hand) ? &p.things.at(hand) : nullptr;
+      if (!scenario.find_region(hand) && !(held_by && held_by->container)) hand.clear();
       planner.set_placement(std::move(p), hand);
     };
     auto request_plan = [&](const std::string& why) {
@@ -371,7 +388,8 @@ EpisodeMetrics run_episode(const world::Scenario& input, const EpisodeOptions& o
       planner_view(believed);
       say("replanning: " + why);
       emit({{"ev", "replan"}, {"why", why}});
-      pending = Pending{std::async(std::launch::async, [&planner] { return planner.plan(); }), std::nullopt, sim.time()};
+      pending = Pending{std::async(std::launch::async, [&planner] { return planner.plan(); }), std::nullopt, sim.time(),
+                        Clock::now()};
     };
 
     std::map<std::string, double> outside_since;  // things perceived outside every location, since when
@@ -464,7 +482,9 @@ EpisodeMetrics run_episode(const world::Scenario& input, const EpisodeOptions& o
       if (auto r = tree.retry_pending(); r && r->applied) {
         emit({{"ev", "tree"}, {"applied", true}, {"inserted", r->inserted}, {"removed", r->removed},
               {"updated", r->updated}, {"changes", tree.changes()}, {"deferred", true}});
-        say("deferred tree change applied");
+        say("deferred tree change applied: +" + std::to_string(r->inserted) + " -" + std::to_string(r->removed) +
+            " subtrees, " + std::to_string(r->updated) + " updated");
+        show_tree();
         write_tree();
       }
       const bt::Status status = tree.tick();
@@ -484,10 +504,15 @@ EpisodeMetrics run_episode(const world::Scenario& input, const EpisodeOptions& o
       }
       emit({{"ev", "tick"}, {"status", std::string(bt::to_string(status))}, {"running", tree.running_action()}});
 
-      // A plan computed on the worker is used once its planning time has passed in sim time.
-      if (pending && !pending->result &&
-          pending->future.wait_for(std::chrono::seconds(0)) == std::future_status::ready)
-        pending->result = pending->future.get();
+      // A plan computed on the worker is used once its planning time has passed in
+      // sim time. The simulation runs faster than real time, so while the worker
+      // is busy it may not run further ahead of the request than the wall time
+      // the worker has had: it waits for the worker for the difference.
+      if (pending && !pending->result) {
+        const double ahead = (sim.time() - pending->requested_at) - seconds_since(pending->wall_start);
+        const auto wait = std::chrono::duration<double>(std::max(0.0, ahead));
+        if (pending->future.wait_for(wait) == std::future_status::ready) pending->result = pending->future.get();
+      }
       if (pending && pending->result && sim.time() >= pending->requested_at + pending->result->stats.seconds) {
         plan::PlanResult r = std::move(*pending->result);
         pending.reset();

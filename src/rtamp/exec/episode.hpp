@@ -42,7 +42,7 @@ struct EpisodeOptions {
   // One extra random intervention of this kind (relocate / add / remove) on a
   // random present block, at a uniform random time in change_window (seeded).
   std::optional<world::Intervention::Kind> random_change;
-  double change_window_begin = 5, change_window_end = 40;
+  double change_window_begin = 2, change_window_end = 20;  // s; both built-in tasks take longer
   // The episode ends (unsuccessfully, with the last failure as reason) after
   // this many failed moves without a successful one in between.
   int max_consecutive_failures = 5;

@@ -9,7 +9,9 @@ PlanTree::PlanTree(ConditionMode mode, Reconfiguration reconfiguration, ActionRu
     : mode_(mode), reconfiguration_(reconfiguration), runner_(runner),
       tree_(std::make_shared<bt::Blackboard>(), std::move(clock)) {
   tree_.blackboard().set(kPlacementKey, world::Placement{});
-  root_ = tree_.set_root(std::make_unique<bt::Sequence>("plan"));
+  auto root = std::make_unique<bt::Sequence>("plan");
+  root->set_yield([this] { return pending_.has_value(); });  // a deferred change goes in between two steps
+  root_ = tree_.set_root(std::move(root));
 }
 
 bool PlanTree::any_running() const {
@@ -93,6 +95,9 @@ ReconfigurationReport PlanTree::apply(const std::vector<plan::ActionTuple>& tupl
       }
     }
   }
+  // With no move running, the new plan is executed from its first step (steps
+  // already done succeed at once through their post-conditions).
+  if (!any_running()) tree_.halt();
   tuples_ = tuples;
   changes_ += report.inserted + report.removed;
   report.applied = true;

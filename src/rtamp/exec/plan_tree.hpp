@@ -20,7 +20,10 @@
 //    the subtrees from the back; kept subtrees get their conditions updated in
 //    place (same ids), the rest are inserted / removed. If a removal would cut
 //    a running, non-interruptible subtree, the whole change is deferred and
-//    retried after each tick until that subtree has returned.
+//    retried after each tick until that subtree has returned. While a change
+//    is pending, the root yields after each finished step (bt::Sequence's
+//    yield), so the next step does not start before the change is applied.
+//    A change applied while no move runs restarts the root at the first step.
 //  - Offline (baseline): when no move runs, halt the tree, remove every subtree
 //    and build the new ones from scratch.
 // changes() counts structural changes: subtrees inserted + subtrees removed.

@@ -34,7 +34,7 @@ struct BatchOptions {
   std::string cost = "euclid";    // planner cost model
   bool randomize_initial = true;  // random object placement (seeded)
   bool scripted_operator = false; // also apply the scenario's own `operator:` script
-  double change_window_begin = 5, change_window_end = 40;  // s, when the random change happens
+  double change_window_begin = 2, change_window_end = 20;  // s, when the random change happens (within every task)
   std::string log_dir;            // JSON Lines log per episode into this directory; empty: none
 };
 

@@ -19,6 +19,7 @@ Status Sequence::on_tick() {
       return Status::Failure;
     }
     ++index_;
+    if (yield_ && index_ < n && yield_()) return Status::Running;
   }
   index_ = 0;
   return Status::Success;

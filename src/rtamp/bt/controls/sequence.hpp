@@ -9,8 +9,15 @@
 // (halted if RUNNING). Inserting/removing a child before the running child keeps
 // the running child current; removing the running child resumes at the child
 // that takes its place.
+//
+// Yield (an rtamp extension, off by default): with set_yield(f), when a child
+// succeeds, more children remain and f() is true, the Sequence returns RUNNING
+// at once and the next tick resumes at the next child. A caller uses it to get a
+// moment between two children in which nothing runs (e.g. to reconfigure the
+// tree before the next step starts).
 #pragma once
 
+#include <functional>
 #include <string>
 
 #include "rtamp/bt/composite.hpp"
@@ -24,6 +31,7 @@ class Sequence : public Composite {
   bool btcpp_builtin() const override { return true; }
   // Index of the child the next tick resumes at (meaningful while RUNNING).
   std::size_t current_index() const { return index_; }
+  void set_yield(std::function<bool()> yield) { yield_ = std::move(yield); }
 
  protected:
   Status on_tick() override;
@@ -33,6 +41,7 @@ class Sequence : public Composite {
 
  private:
   std::size_t index_ = 0;
+  std::function<bool()> yield_;
 };
 
 }  // namespace rtamp::bt
