@@ -1,4 +1,4 @@
-// Planning benchmarks (docs/benchmarks/planning.md).
+// Planning benchmarks (docs/benchmarks.md).
 //
 // Google Benchmark cases (make bench):
 //   BM_TrayFirstPlan/<algo>        plan() of a fresh Planner on 3-block-tray (euclid)

@@ -1,6 +1,6 @@
 // robot layer benchmarks: FK, IK (all solutions / nearest), straight-line
 // approach, trajectory parametrisation, a pick skill plan, OMPL planning around an
-// obstacle, and one `ik` motion cost cold and cached (docs/benchmarks/robot.md).
+// obstacle, and one `ik` motion cost cold and cached (docs/benchmarks.md).
 #include <benchmark/benchmark.h>
 
 #include <numbers>

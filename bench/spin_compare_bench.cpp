@@ -6,7 +6,7 @@
 // the per-process floor. Counters: states, edges (guard cubes), pairs
 // (distinct source->destination). Skipped (with a message) without spin.
 // scripts/compare-spin turns the JSON output into the tables of
-// docs/benchmarks/translation.md.
+// docs/benchmarks.md.
 #include <benchmark/benchmark.h>
 
 #include <array>

@@ -275,8 +275,8 @@ rtamp::cli::Registrar reg{
                      "Summary cells: comma-separated subset of scenario,change,algorithm,bt (others pooled)")
           ->capture_default_str();
       sub.add_option("--max-time", a->max_time, "Simulated seconds before an episode gives up")->capture_default_str();
-      sub.add_option("--cost", a->cost, "Planner motion-cost model: euclid, region, unit")
-          ->check(CLI::IsMember({"euclid", "region", "unit"}))
+      sub.add_option("--cost", a->cost, "Planner motion-cost model: euclid, region, unit, ik")
+          ->check(CLI::IsMember({"euclid", "region", "unit", "ik"}))
           ->capture_default_str();
       sub.add_option("--log-dir", a->log_dir, "Write each episode's JSON Lines log into this directory");
       sub.add_flag("--scripted", a->scripted, "Also apply the scenario's own operator script in every episode");

@@ -9,6 +9,7 @@
 
 #include "command.hpp"
 #include "rtamp/plan/planner.hpp"
+#include "rtamp/robot/ik_motion_cost.hpp"
 #include "rtamp/util/error.hpp"
 #include "rtamp/world/scenario_io.hpp"
 
@@ -124,8 +125,10 @@ rtamp::cli::Registrar reg{
       sub.add_option("--graph", a->graph, "Product construction: partial (on the fly) or full (before searching)")
           ->check(CLI::IsMember({"partial", "full"}))
           ->capture_default_str();
-      sub.add_option("--cost", a->cost, "Motion-cost model: euclid, region, unit")
-          ->check(CLI::IsMember({"euclid", "region", "unit"}))
+      sub.add_option("--cost", a->cost,
+                     "Motion-cost model: euclid, region, unit, or ik (tool path length of the UR5's pick and "
+                     "place skills, from inverse kinematics; no collision checks)")
+          ->check(CLI::IsMember({"euclid", "region", "unit", "ik"}))
           ->capture_default_str();
       sub.add_option("--change", a->changes,
                      "A change applied after the previous plan, followed by a replan (repeatable, in order): "
@@ -143,7 +146,9 @@ rtamp::cli::Registrar reg{
         opt.cost = a->cost;
         opt.limits.max_nodes = a->max_nodes;
         opt.limits.time_limit = a->time_limit;
-        plan::Planner planner(world::load_scenario(a->scenario), opt);
+        world::Scenario scenario = world::load_scenario(a->scenario);
+        if (a->cost == "ik") opt.model = std::make_shared<robot::IkMotionCost>(robot::IkMotionCost::params_for(scenario));
+        plan::Planner planner(std::move(scenario), opt);
 
         nlohmann::json doc;
         doc["scenario"] = planner.scenario().name;

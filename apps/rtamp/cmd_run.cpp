@@ -30,8 +30,8 @@ rtamp::cli::Registrar reg{
                      "Tree variant: online-action (Algorithm 2, action conditions) | online-state (state "
                      "conditions) | offline (rebuild from scratch)")
           ->check(CLI::IsMember({"online-action", "online-state", "offline"}));
-      app.add_option("--cost", o->cost, "Planner motion cost: euclid | region | unit")
-          ->check(CLI::IsMember({"euclid", "region", "unit"}));
+      app.add_option("--cost", o->cost, "Planner motion cost: euclid | region | unit | ik (UR5 skill paths)")
+          ->check(CLI::IsMember({"euclid", "region", "unit", "ik"}));
       app.add_option("--seed", o->seed, "Seed of the episode (operator, perception, random initial layout)");
       app.add_option("--change", o->change, "Add one random intervention: relocate | add | remove")
           ->check(CLI::IsMember({"relocate", "add", "remove"}));

@@ -11,6 +11,7 @@
 #include <random>
 
 #include "rtamp/plan/planner.hpp"
+#include "rtamp/robot/ik_motion_cost.hpp"
 #include "rtamp/sim/controller.hpp"
 #include "rtamp/sim/operator.hpp"
 #include "rtamp/sim/perception.hpp"
@@ -298,6 +299,8 @@ EpisodeMetrics run_episode(const world::Scenario& input, const EpisodeOptions& o
     plan::PlannerOptions planner_options;
     planner_options.algorithm = opt.algorithm;
     planner_options.cost = opt.cost;
+    if (opt.cost == "ik")
+      planner_options.model = std::make_shared<robot::IkMotionCost>(robot::IkMotionCost::params_for(scenario));
     plan::Planner planner(scenario, planner_options);
     PlanTree tree(opt.conditions, opt.reconfiguration, runner, std::make_shared<SimClock>(sim));
 

@@ -31,7 +31,7 @@ namespace rtamp::exec {
 
 struct EpisodeOptions {
   plan::Algorithm algorithm = plan::Algorithm::AStarExperience;
-  std::string cost = "euclid";                   // planner cost model: euclid | region | unit
+  std::string cost = "euclid";                   // planner cost model: euclid | region | unit | ik
   ConditionMode conditions = ConditionMode::Action;
   Reconfiguration reconfiguration = Reconfiguration::Online;
   std::uint64_t seed = 1;
