@@ -4,6 +4,9 @@
 //   BM_TrayFirstPlan/<algo>        plan() of a fresh Planner on 3-block-tray (euclid)
 //   BM_TrayReplan/<change>/<algo>  apply(change) + plan() after a first plan; the
 //                                  change is undone (untimed) between iterations
+//   BM_TrayColdReplan/<change>/<ik> the same replans from scratch: a fresh Planner
+//                                  for the changed world, A*, no experience (euclid or ik)
+//   BM_TrayReplanIk/<change>       A* with experience replans under the ik model
 //   BM_PartialVsFull/<n>/<full>    cold A* plans on 5-region random layouts, 10 seeds
 // Report mode (the paper's partial-vs-full experiment and the replan table as CSV):
 //   plan_bench --csv-dir=DIR [--full-max=N]
@@ -19,6 +22,7 @@
 #include <vector>
 
 #include "rtamp/plan/planner.hpp"
+#include "rtamp/robot/ik_motion_cost.hpp"
 #include "rtamp/world/generator.hpp"
 #include "rtamp/world/scenario_io.hpp"
 
@@ -104,6 +108,63 @@ BENCHMARK(BM_TrayReplan)
     ->ArgsProduct({{0, 1, 2}, {0, 1, 2}})
     ->UseManualTime()
     ->Unit(benchmark::kMicrosecond);
+
+// The cold baseline of a replan: no experience at all. After the change (made
+// untimed on a warm planner), a fresh Planner is built for the changed world
+// (transition system, labeling, empty product graph and cost cache; the
+// automaton is given, translation is not timed) and plans with A*.
+// With second argument 1, the `ik` cost model (UR5 skill paths; a fresh model,
+// so an empty IK cache, for every cold plan).
+plan::PlannerOptions options_for(plan::Algorithm a, bool ik) {
+  plan::PlannerOptions o = options(a);
+  if (ik) o.model = std::make_shared<robot::IkMotionCost>(robot::IkMotionCost::params_for(tray()));
+  return o;
+}
+
+void BM_TrayColdReplan(benchmark::State& state) {
+  const char* kinds[] = {"relocate", "add", "remove"};
+  const std::string kind = kinds[state.range(0)];
+  const bool ik = state.range(1) != 0;
+  const auto pairs = changes_of_kind(kind);
+  plan::Planner warm(tray(), options(plan::Algorithm::AStar));
+  (void)warm.plan();
+  std::size_t i = 0;
+  for (auto _ : state) {
+    const auto& c = pairs[i++ % pairs.size()];
+    warm.apply(c.apply);
+    const auto t0 = Clock::now();
+    plan::Planner cold(warm.scenario(), warm.automaton(), options_for(plan::Algorithm::AStar, ik));
+    cold.set_placement(warm.placement(), warm.hand());
+    auto r = cold.plan();
+    state.SetIterationTime(since(t0));
+    benchmark::DoNotOptimize(r);
+    warm.apply(c.undo);
+  }
+  state.SetLabel(kind + "/cold-astar/" + (ik ? "ik" : "euclid"));
+}
+BENCHMARK(BM_TrayColdReplan)->ArgsProduct({{0, 1, 2}, {0, 1}})->UseManualTime()->Unit(benchmark::kMicrosecond);
+
+// A* with experience replanning under the `ik` model (its IK cache is part of the experience).
+void BM_TrayReplanIk(benchmark::State& state) {
+  const char* kinds[] = {"relocate", "add", "remove"};
+  const std::string kind = kinds[state.range(0)];
+  const auto pairs = changes_of_kind(kind);
+  plan::Planner p(tray(), options_for(plan::Algorithm::AStarExperience, true));
+  (void)p.plan();
+  std::size_t i = 0;
+  for (auto _ : state) {
+    const auto& c = pairs[i++ % pairs.size()];
+    const auto t0 = Clock::now();
+    p.apply(c.apply);
+    auto r = p.plan();
+    state.SetIterationTime(since(t0));
+    benchmark::DoNotOptimize(r);
+    p.apply(c.undo);
+    (void)p.plan();
+  }
+  state.SetLabel(kind + "/astar-exp/ik");
+}
+BENCHMARK(BM_TrayReplanIk)->DenseRange(0, 2)->UseManualTime()->Unit(benchmark::kMicrosecond);
 
 world::Scenario random_layout(int n, std::uint64_t seed) {
   world::GeneratorOptions g;
