@@ -440,6 +440,16 @@ EpisodeMetrics run_episode(const world::Scenario& input, const EpisodeOptions& o
         if (const std::string* was = believed.location_of(name); was && *was != "none") thing.location = *was;
         if (now - since > opt.outside_grace) lost = name;
       }
+      // Timeline: what perception saw change that the robot's own move does not explain.
+      if (opt.timeline && seen != believed) {
+        for (const auto& [name, thing] : seen.things) {
+          const std::string* was = believed.location_of(name);
+          if (!was || *was == thing.location || name == runner.thing() || thing.location == sim::kInHand ||
+              *was == sim::kInHand)
+            continue;
+          say("perceived " + name + " in " + thing.location + " (was in " + *was + ")");
+        }
+      }
       believed = seen;
       tree.placement() = believed;
       if (!lost.empty()) {
@@ -473,9 +483,9 @@ EpisodeMetrics run_episode(const world::Scenario& input, const EpisodeOptions& o
         request_plan("things were added or removed");
       } else if (relocated) {
         // Algorithm 1 lines 5-8: a relocation some subtree can handle needs no planning.
-        if (tree.can_handle(believed)) {
-          say("a subtree can handle the relocation: no replanning");
-          emit({{"ev", "handled_by_tree"}});
+        if (const std::string by = tree.handler(believed); !by.empty()) {
+          say("the tree can go on (" + (by == "every step is done" ? by : "can run " + by) + "): no replanning");
+          emit({{"ev", "handled_by_tree"}, {"by", by}});
         } else {
           request_plan("relocation no subtree can handle");
         }

@@ -26,14 +26,14 @@ std::string PlanTree::running_action() const {
   return {};
 }
 
-bool PlanTree::can_handle(const world::Placement& placement) const {
+std::string PlanTree::handler(const world::Placement& placement) const {
   bool all_done = !tuples_.empty();
   for (const plan::ActionTuple& t : tuples_) {
-    if (holds(precondition(t, mode_), placement)) return true;
+    if (holds(precondition(t, mode_), placement)) return t.action;
     const auto& post = mode_ == ConditionMode::State ? t.post : t.relaxed_post;
     all_done = all_done && holds(post, placement);
   }
-  return all_done;
+  return all_done ? "every step is done" : "";
 }
 
 ReconfigurationReport PlanTree::set_plan(const std::vector<plan::ActionTuple>& tuples) {

@@ -70,7 +70,10 @@ class PlanTree {
   std::string running_action() const;
   // Algorithm 1 line 6: some subtree's precondition holds in `placement` (or
   // every step's post-condition already does).
-  bool can_handle(const world::Placement& placement) const;
+  bool can_handle(const world::Placement& placement) const { return !handler(placement).empty(); }
+  // The action of the first subtree whose precondition holds, "every step is
+  // done" if every post-condition holds, or "" if neither.
+  std::string handler(const world::Placement& placement) const;
   ConditionMode mode() const { return mode_; }
 
  private:
