@@ -63,6 +63,7 @@ struct Skills {
   sim::SkillRunner& runner;
   bool start_pick(const std::string& o) { return runner.start_pick(o); }
   bool start_place(const std::string& l) { return runner.start_place(l); }
+  bool start_retreat() { return runner.start_retreat(); }
   bool sim_holds(const std::string& o) const { return sim.held() >= 0 && sim.held() == sim.find(o); }
   void release_here() { sim.detach(); }
 };
@@ -77,16 +78,16 @@ class SimActionRunner final : public ActionRunner {
     to_ = t.to;
     from_ = t.from;
     thing_ = t.thing;
-    phase_ = Phase::Picking;
-    if (on_event) on_event("start", t.action, "");
-    if (!skills_.start_pick(t.thing)) return finish(bt::Status::Failure, controller_.reason());
-    return bt::Status::Running;
+    if (returning()) {  // the arm still finishes after a halted move: start when it is done
+      waiting_ = true;
+      return bt::Status::Running;
+    }
+    return begin();
   }
-
   bt::Status running(const plan::ActionTuple&) override {
+    if (waiting_) return returning() ? bt::Status::Running : begin();
     const sim::Status s = controller_.status();
     if (s == sim::Status::Running) return bt::Status::Running;
-    cost_ += controller_.plan().cost;
     if (s == sim::Status::Failure) return fail_or_recover(controller_.reason());
     switch (phase_) {
       case Phase::Picking:
@@ -104,10 +105,45 @@ class SimActionRunner final : public ActionRunner {
   }
 
   void halt(const plan::ActionTuple&) override {
+    if (waiting_) {  // never started: nothing to stop
+      waiting_ = false;
+      current_.clear();
+      return;
+    }
     controller_.halt();
     if (on_event) on_event("halted", current_, "");
+    back_thing_ = thing_;
+    back_from_ = from_;
+    // A halted move must not leave its object in the gripper: the arm puts it
+    // back where it came from before the tree may use it again (returning()).
+    // An empty gripper backs straight up first, clear of what it just placed.
+    if (skills_.sim_holds(thing_)) {
+      if (skills_.start_place(from_)) {
+        returning_ = true;
+        hand_ = from_;
+        if (on_event) on_event("returning", current_, "putting " + thing_ + " back in " + from_);
+      } else {
+        skills_.release_here();
+      }
+    } else if (skills_.start_retreat() && controller_.status() == sim::Status::Running) {
+      returning_ = true;
+      if (on_event) on_event("returning", current_, "backing off");
+    }
     current_.clear();
   }
+
+  // True while the arm finishes after a halted move (puts its object back, or
+  // backs off); the tree waits.
+  bool returning() {
+    if (returning_ && controller_.status() != sim::Status::Running) {
+      returning_ = false;
+      if (controller_.status() == sim::Status::Failure && skills_.sim_holds(back_thing_)) skills_.release_here();
+      if (on_event) on_event("returned", back_thing_, controller_.reason());
+    }
+    return returning_;
+  }
+  // Where a thing held while returning goes back to.
+  const std::string& source() const { return back_from_; }
 
   // The running move, if any: its thing and destination (for the planner's view).
   const std::string& current() const { return current_; }
@@ -115,13 +151,20 @@ class SimActionRunner final : public ActionRunner {
   const std::string& destination() const { return to_; }
   // Where the hand is when no move runs: the location of the last place ("" at first: home).
   const std::string& hand() const { return hand_; }
-  double cost() const { return cost_; }
   int succeeded = 0, failed = 0;
   std::string last_failure;
   std::function<void(const char*, const std::string&, const std::string&)> on_event;
 
  private:
   enum class Phase { Picking, Placing, Recovering };
+
+  bt::Status begin() {
+    waiting_ = false;
+    phase_ = Phase::Picking;
+    if (on_event) on_event("start", current_, "");
+    if (!skills_.start_pick(thing_)) return finish(bt::Status::Failure, controller_.reason());
+    return bt::Status::Running;
+  }
 
   // A failed move must not leave the object in the gripper: put it back where
   // it came from first (the failure is reported when that is done).
@@ -152,7 +195,8 @@ class SimActionRunner final : public ActionRunner {
   sim::Controller& controller_;
   std::string current_, thing_, to_, from_, failure_, hand_;
   Phase phase_ = Phase::Picking;
-  double cost_ = 0;
+  bool returning_ = false, waiting_ = false;
+  std::string back_thing_, back_from_;  // the halted move's object and source, while returning
 };
 
 // Objects moved to random non-overlapping spots inside their initial location.
@@ -379,8 +423,10 @@ EpisodeMetrics run_episode(const world::Scenario& input, const EpisodeOptions& o
         if (auto it = p.things.find(runner.thing()); it != p.things.end()) it->second.location = runner.destination();
         hand = runner.destination();
       }
+      // A thing in the hand of a halted move goes back to its source.
+      const std::string& held_to = runner.returning() ? runner.source() : runner.destination();
       for (auto& [name, thing] : p.things)
-        if (thing.location == sim::kInHand) thing.location = runner.destination().empty() ? "none" : runner.destination();
+        if (thing.location == sim::kInHand) thing.location = held_to.empty() ? "none" : held_to;
       // The hand's last location may be a container that is gone: then "home".
       const auto* held_by = p.things.count(hand) ? &p.things.at(hand) : nullptr;
       if (!scenario.find_region(hand) && !(held_by && held_by->container)) hand.clear();
@@ -397,12 +443,16 @@ EpisodeMetrics run_episode(const world::Scenario& input, const EpisodeOptions& o
 
     std::map<std::string, double> outside_since;  // things perceived outside every location, since when
     int failures_seen = 0, successes_seen = 0, consecutive_failures = 0;
+    Eigen::Vector3d last_tool = sim.tool_pose().translation();
     const int steps_per_tick = std::max(1, static_cast<int>(std::lround(opt.tick_period / sim.timestep())));
     bool done = false;
     while (!done && sim.time() < opt.max_time) {
       for (int k = 0; k < steps_per_tick; ++k) {
         controller.update();
         sim.step();
+        const Eigen::Vector3d tool = sim.tool_pose().translation();
+        m.motion_cost += (tool - last_tool).norm();  // the tool path actually travelled
+        last_tool = tool;
         if (video && sim.time() >= next_frame) {
           renderer->render(frame);
           video->add(frame);
@@ -500,7 +550,8 @@ EpisodeMetrics run_episode(const world::Scenario& input, const EpisodeOptions& o
         show_tree();
         write_tree();
       }
-      const bt::Status status = tree.tick();
+      // While the arm puts back what a halted move held, the tree waits.
+      const bt::Status status = runner.returning() ? bt::Status::Running : tree.tick();
       if (runner.failed > failures_seen) {
         consecutive_failures += runner.failed - failures_seen;
         failures_seen = runner.failed;
@@ -573,7 +624,6 @@ EpisodeMetrics run_episode(const world::Scenario& input, const EpisodeOptions& o
     tree.tree().halt();  // stop a move still running (logged before the end record)
     if (!done && m.reason.empty()) m.reason = "time limit (" + std::to_string(opt.max_time) + " s of simulated time)";
     m.tree_changes = tree.changes();
-    m.motion_cost = runner.cost();
     m.actions_succeeded = runner.succeeded;
     m.actions_failed = runner.failed;
     if (video) video->close();

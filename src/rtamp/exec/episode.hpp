@@ -64,7 +64,7 @@ struct EpisodeMetrics {
   int replans = 0;
   std::size_t tree_changes = 0;    // subtrees inserted + removed, over the episode
   double completion_time = 0;      // simulated seconds until the task was done
-  double motion_cost = 0;          // tool path length of executed skills (m)
+  double motion_cost = 0;          // tool path length travelled (m), summed over every physics step
   int interventions = 0;
   int actions_succeeded = 0, actions_failed = 0;
   double wall_seconds = 0;

@@ -118,6 +118,30 @@ bool SkillRunner::start_place(const std::string& location) {
   return controller_.status() == Status::Running;
 }
 
+bool SkillRunner::start_retreat(double height) {
+  if (sim_.held() >= 0) {
+    controller_.fail("cannot back off holding '" + sim_.thing(sim_.held()).name + "'");
+    return false;
+  }
+  const robot::Joints q0 = sim_.arm_q();
+  Eigen::Isometry3d up = arm_.tool_pose(q0);
+  if (up.translation().z() >= height + 0.05) return true;  // already clear of the table
+  up.translation().z() += height;
+  std::string why;
+  const auto line = robot::cartesian_line(arm_, q0, up, options_.skill.cartesian, &why);
+  if (!line) {
+    controller_.fail("cannot back off: " + why);
+    return false;
+  }
+  MotionPlan m;
+  m.trajectory = robot::Trajectory(q0);
+  m.trajectory.append_polyline(*line, options_.skill.limits);
+  m.cost = robot::tool_path_length(arm_, m.trajectory, options_.skill.cost_joint_step);
+  m.skill = "retreat";
+  controller_.start(std::move(m));
+  return controller_.status() == Status::Running;
+}
+
 Status SkillRunner::run_controller(const std::function<void()>& on_step, double max_time) {
   const double until = sim_.time() + max_time;
   while (controller_.status() == Status::Running) {

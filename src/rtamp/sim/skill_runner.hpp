@@ -66,6 +66,11 @@ class SkillRunner {
   bool start_pick(const std::string& object);
   // Plan and start placing the held object into `location` (region or container).
   bool start_place(const std::string& location);
+  // Back the empty gripper straight up by `height` (after a halted skill), unless the
+  // tool is already that high above the table. False (controller in FAILURE) if the
+  // gripper holds something or the line is not feasible; true if no motion is needed
+  // (then the controller is left as it was) or the motion started.
+  bool start_retreat(double height = 0.10);
   // The spot a place into `location` would use for thing `i` (centre of its base).
   std::optional<world::Vec3> place_spot(int thing, const std::string& location) const;
 
