@@ -16,21 +16,7 @@
 
 #include "rtamp/bt/bt.hpp"
 
-namespace {
-std::atomic<long> g_allocations{0};
-}
-
-// GCC flags free() on memory from (our own, malloc-based) operator new once inlined.
-#if defined(__GNUC__) && !defined(__clang__)
-#pragma GCC diagnostic ignored "-Wmismatched-new-delete"
-#endif
-void* operator new(std::size_t n) {
-  g_allocations.fetch_add(1, std::memory_order_relaxed);
-  if (void* p = std::malloc(n == 0 ? 1 : n)) return p;
-  throw std::bad_alloc();
-}
-void operator delete(void* p) noexcept { std::free(p); }
-void operator delete(void* p, std::size_t) noexcept { std::free(p); }
+#include "../tests/support/counting_new.hpp"
 
 namespace {
 
@@ -78,13 +64,13 @@ void BM_Tick(benchmark::State& state) {
   if (state.range(1) != 0) tree.add_status_observer([](const StatusChange&) {});
   tree.tick();
   long ticks = 0;
-  const long before = g_allocations.load();
+  const long before = rtamp_allocations();
   for (auto _ : state) {
     benchmark::DoNotOptimize(tree.tick());
     ++ticks;
   }
   state.counters["allocs_per_iter"] =
-      static_cast<double>(g_allocations.load() - before) / static_cast<double>(ticks);
+      static_cast<double>(rtamp_allocations() - before) / static_cast<double>(ticks);
   state.counters["nodes"] = static_cast<double>(tree.size());
 }
 BENCHMARK(BM_Tick<ReactiveSequence>)
@@ -103,7 +89,7 @@ void BM_TickWithPreemption(benchmark::State& state) {
   build<ReactiveSequence>(tree, w, n);
   tree.tick();
   long ticks = 0;
-  const long before = g_allocations.load();
+  const long before = rtamp_allocations();
   for (auto _ : state) {
     w.cursor = (ticks % 2 == 0) ? n : n - 1;           // precondition fails every other fresh pick
     w.done[0] = static_cast<std::uint8_t>(ticks % 2);  // subtree 0 alternately done / not startable
@@ -111,7 +97,7 @@ void BM_TickWithPreemption(benchmark::State& state) {
     ++ticks;
   }
   state.counters["allocs_per_iter"] =
-      static_cast<double>(g_allocations.load() - before) / static_cast<double>(ticks);
+      static_cast<double>(rtamp_allocations() - before) / static_cast<double>(ticks);
 }
 BENCHMARK(BM_TickWithPreemption)->Arg(1000)->Unit(benchmark::kMicrosecond);
 
@@ -126,7 +112,7 @@ void BM_Reconfigure_Remove10Insert10(benchmark::State& state) {
   const NodeId root = tree.root()->id();
   std::mt19937 rng(1);
   long iters = 0;
-  const long before = g_allocations.load();
+  const long before = rtamp_allocations();
   for (auto _ : state) {
     for (int k = 0; k < 10; ++k) {
       const std::size_t pos = rng() % (tree.root()->child_count() - 1);  // never the running last subtree
@@ -139,7 +125,7 @@ void BM_Reconfigure_Remove10Insert10(benchmark::State& state) {
     ++iters;
   }
   state.counters["allocs_per_iter"] =
-      static_cast<double>(g_allocations.load() - before) / static_cast<double>(iters);
+      static_cast<double>(rtamp_allocations() - before) / static_cast<double>(iters);
   state.counters["nodes"] = static_cast<double>(tree.size());
 }
 BENCHMARK(BM_Reconfigure_Remove10Insert10)->Arg(1000)->Unit(benchmark::kMicrosecond);

@@ -2,11 +2,11 @@
 //
 // Google Benchmark cases (make bench):
 //   BM_TrayFirstPlan/<algo>        plan() of a fresh Planner on 3-block-tray (euclid)
-//   BM_TrayReplan/<change>/<algo>  apply(change) + plan() after a first plan; the
+//   BM_TrayReplan/<change>/<algo>/<ik>  apply(change) + plan() after a first plan; the
 //                                  change is undone (untimed) between iterations
+//                                  (ik = 1: the `ik` cost model, astar-exp only)
 //   BM_TrayColdReplan/<change>/<ik> the same replans from scratch: a fresh Planner
 //                                  for the changed world, A*, no experience (euclid or ik)
-//   BM_TrayReplanIk/<change>       A* with experience replans under the ik model
 //   BM_PartialVsFull/<n>/<full>    cold A* plans on 5-region random layouts, 10 seeds
 // Report mode (the paper's partial-vs-full experiment and the replan table as CSV):
 //   plan_bench --csv-dir=DIR [--full-max=N]
@@ -84,12 +84,21 @@ void BM_TrayFirstPlan(benchmark::State& state) {
 }
 BENCHMARK(BM_TrayFirstPlan)->DenseRange(0, 2)->UseManualTime()->Unit(benchmark::kMicrosecond);
 
+// Options with the `euclid` model, or with the `ik` model (UR5 skill paths; a
+// fresh model, so an empty IK cache, each time it is called).
+plan::PlannerOptions options_for(plan::Algorithm a, bool ik) {
+  plan::PlannerOptions o = options(a);
+  if (ik) o.model = std::make_shared<robot::IkMotionCost>(robot::IkMotionCost::params_for(tray()));
+  return o;
+}
+
 void BM_TrayReplan(benchmark::State& state) {
   const char* kinds[] = {"relocate", "add", "remove"};
   const std::string kind = kinds[state.range(0)];
   const auto algo = kAlgos[state.range(1)];
+  const bool ik = state.range(2) != 0;
   const auto pairs = changes_of_kind(kind);
-  plan::Planner p(tray(), options(algo));
+  plan::Planner p(tray(), options_for(algo, ik));
   (void)p.plan();
   std::size_t i = 0;
   for (auto _ : state) {
@@ -102,10 +111,13 @@ void BM_TrayReplan(benchmark::State& state) {
     p.apply(c.undo);
     (void)p.plan();
   }
-  state.SetLabel(kind + "/" + plan::to_string(algo));
+  state.SetLabel(kind + "/" + plan::to_string(algo) + (ik ? "/ik" : ""));
 }
 BENCHMARK(BM_TrayReplan)
-    ->ArgsProduct({{0, 1, 2}, {0, 1, 2}})
+    ->ArgsProduct({{0, 1, 2}, {0, 1, 2}, {0}})
+    ->Args({0, 2, 1})
+    ->Args({1, 2, 1})
+    ->Args({2, 2, 1})
     ->UseManualTime()
     ->Unit(benchmark::kMicrosecond);
 
@@ -113,14 +125,6 @@ BENCHMARK(BM_TrayReplan)
 // untimed on a warm planner), a fresh Planner is built for the changed world
 // (transition system, labeling, empty product graph and cost cache; the
 // automaton is given, translation is not timed) and plans with A*.
-// With second argument 1, the `ik` cost model (UR5 skill paths; a fresh model,
-// so an empty IK cache, for every cold plan).
-plan::PlannerOptions options_for(plan::Algorithm a, bool ik) {
-  plan::PlannerOptions o = options(a);
-  if (ik) o.model = std::make_shared<robot::IkMotionCost>(robot::IkMotionCost::params_for(tray()));
-  return o;
-}
-
 void BM_TrayColdReplan(benchmark::State& state) {
   const char* kinds[] = {"relocate", "add", "remove"};
   const std::string kind = kinds[state.range(0)];
@@ -144,27 +148,6 @@ void BM_TrayColdReplan(benchmark::State& state) {
 }
 BENCHMARK(BM_TrayColdReplan)->ArgsProduct({{0, 1, 2}, {0, 1}})->UseManualTime()->Unit(benchmark::kMicrosecond);
 
-// A* with experience replanning under the `ik` model (its IK cache is part of the experience).
-void BM_TrayReplanIk(benchmark::State& state) {
-  const char* kinds[] = {"relocate", "add", "remove"};
-  const std::string kind = kinds[state.range(0)];
-  const auto pairs = changes_of_kind(kind);
-  plan::Planner p(tray(), options_for(plan::Algorithm::AStarExperience, true));
-  (void)p.plan();
-  std::size_t i = 0;
-  for (auto _ : state) {
-    const auto& c = pairs[i++ % pairs.size()];
-    const auto t0 = Clock::now();
-    p.apply(c.apply);
-    auto r = p.plan();
-    state.SetIterationTime(since(t0));
-    benchmark::DoNotOptimize(r);
-    p.apply(c.undo);
-    (void)p.plan();
-  }
-  state.SetLabel(kind + "/astar-exp/ik");
-}
-BENCHMARK(BM_TrayReplanIk)->DenseRange(0, 2)->UseManualTime()->Unit(benchmark::kMicrosecond);
 
 world::Scenario random_layout(int n, std::uint64_t seed) {
   world::GeneratorOptions g;

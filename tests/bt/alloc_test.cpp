@@ -10,22 +10,11 @@
 #include "paper_tree.hpp"
 #include "probes.hpp"
 
+#include "../support/counting_new.hpp"
+
 namespace {
-std::atomic<long> g_allocations{0};
 int* volatile g_sink = nullptr;  // keeps the compiler from eliding new/delete pairs
 }  // namespace
-
-// GCC flags free() on memory from (our own, malloc-based) operator new once inlined.
-#if defined(__GNUC__) && !defined(__clang__)
-#pragma GCC diagnostic ignored "-Wmismatched-new-delete"
-#endif
-void* operator new(std::size_t n) {
-  g_allocations.fetch_add(1, std::memory_order_relaxed);
-  if (void* p = std::malloc(n == 0 ? 1 : n)) return p;
-  throw std::bad_alloc();
-}
-void operator delete(void* p) noexcept { std::free(p); }
-void operator delete(void* p, std::size_t) noexcept { std::free(p); }
 
 namespace rtamp::bt {
 namespace {
@@ -35,9 +24,9 @@ using testing::PaperWorld;
 
 template <class F>
 long allocations_during(F&& f) {
-  const long before = g_allocations.load();
+  const long before = rtamp_allocations();
   f();
-  return g_allocations.load() - before;
+  return rtamp_allocations() - before;
 }
 
 TEST(Allocation, CountingWorks) {

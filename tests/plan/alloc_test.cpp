@@ -14,20 +14,7 @@
 #include "rtamp/plan/planner.hpp"
 #include "rtamp/world/generator.hpp"
 
-namespace {
-std::atomic<long> g_allocations{0};
-}  // namespace
-
-#if defined(__GNUC__) && !defined(__clang__)
-#pragma GCC diagnostic ignored "-Wmismatched-new-delete"
-#endif
-void* operator new(std::size_t n) {
-  g_allocations.fetch_add(1, std::memory_order_relaxed);
-  if (void* p = std::malloc(n == 0 ? 1 : n)) return p;
-  throw std::bad_alloc();
-}
-void operator delete(void* p) noexcept { std::free(p); }
-void operator delete(void* p, std::size_t) noexcept { std::free(p); }
+#include "../support/counting_new.hpp"
 
 namespace rtamp::plan {
 namespace {
@@ -47,9 +34,9 @@ struct Count {
 };
 
 Count count_plan(Planner& p) {
-  const long before = g_allocations.load();
+  const long before = rtamp_allocations();
   PlanResult r = p.plan();
-  return {g_allocations.load() - before, std::move(r)};
+  return {rtamp_allocations() - before, std::move(r)};
 }
 
 // The paper's state space (no symmetry reduction): tens of thousands of nodes.
