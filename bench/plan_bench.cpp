@@ -10,7 +10,9 @@
 //   BM_PartialVsFull/<n>/<full>    cold A* plans on 5-region random layouts, 10 seeds
 // Report mode (the paper's partial-vs-full experiment and the replan table as CSV):
 //   plan_bench --csv-dir=DIR [--full-max=N]
-// writes DIR/partial-vs-full.csv and DIR/replan.csv and prints a summary.
+// writes DIR/partial-vs-full.csv and DIR/replan.csv and prints a summary;
+//   plan_bench --csv-dir=DIR --full-growth
+// grows n until full construction passes 60 s or 8 GiB (DIR/full-growth.csv).
 #include <benchmark/benchmark.h>
 
 #include <algorithm>
@@ -303,14 +305,57 @@ void report_replan(const std::string& dir) {
 
 }  // namespace
 
+// Full construction in the paper's state space (no symmetry reduction), one
+// layout (seed 1) per n, n = 2, 3, ... until a full construction passes 60 s or
+// 8 GiB (the product graph's memory; the node limit keeps it below that), with
+// the partial construction at the same n beside it. Writes DIR/full-growth.csv.
+void report_full_growth(const std::string& dir) {
+  std::ofstream csv(dir + "/full-growth.csv");
+  csv << "n,construction,seconds,construction_seconds,generated,expanded,graph_nodes,memory_bytes,found,stopped\n";
+  std::cout << "full construction until 60 s or 8 GiB (5 regions, random layout seed 1, A*, euclid, no symmetry)\n";
+  std::cout << "  n construction   seconds   graph_nodes   memory_MiB  stopped\n";
+  constexpr double kMaxBytes = 8.0 * (1ull << 30);
+  for (int n = 2; n <= 12; ++n) {
+    bool stop = false;
+    for (int full = 1; full >= 0; --full) {
+      plan::PlannerOptions o =
+          options(plan::Algorithm::AStar, full ? plan::GraphConstruction::Full : plan::GraphConstruction::Partial);
+      o.symmetry = false;
+      o.limits.time_limit = 60;
+      o.limits.max_nodes = 25'000'000;  // at ~300 B/node the graph stays near 8 GiB
+      plan::Planner p(random_layout(n, 1), o);
+      const plan::PlanResult r = p.plan();
+      const auto& st = r.stats;
+      const char* why = st.hit_time_limit                                 ? "60 s"
+                        : st.hit_node_limit || double(st.memory_bytes) > kMaxBytes ? "8 GiB"
+                                                                           : "";
+      csv << n << "," << (full ? "full" : "partial") << "," << st.seconds << "," << st.construction_seconds << ","
+          << st.generated << "," << st.expanded << "," << st.graph_nodes << "," << st.memory_bytes << "," << r.found
+          << "," << why << "\n";
+      csv.flush();
+      std::printf("%3d %-12s %9.3f %13llu %12.1f  %s\n", n, full ? "full" : "partial", st.seconds,
+                  static_cast<unsigned long long>(st.graph_nodes), double(st.memory_bytes) / (1 << 20), why);
+      std::fflush(stdout);
+      if (full && *why) stop = true;
+    }
+    if (stop) break;
+  }
+}
+
 int main(int argc, char** argv) {
   std::string dir;
   int full_max = 7;
+  bool full_growth = false;
   std::vector<char*> rest;
   for (int i = 0; i < argc; ++i) {
     if (std::strncmp(argv[i], "--csv-dir=", 10) == 0) dir = argv[i] + 10;
     else if (std::strncmp(argv[i], "--full-max=", 11) == 0) full_max = std::atoi(argv[i] + 11);
+    else if (std::strcmp(argv[i], "--full-growth") == 0) full_growth = true;
     else rest.push_back(argv[i]);
+  }
+  if (!dir.empty() && full_growth) {
+    report_full_growth(dir);
+    return 0;
   }
   if (!dir.empty()) {
     report_replan(dir);
