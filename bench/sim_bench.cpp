@@ -4,10 +4,14 @@
 //   BM_SimControlledStep   controller tracking a pick trajectory + the above
 //   BM_SimEpisode          whole episode: plan + execute pick/place of all blocks onto the
 //                          tray, carry it to r2; perception every 10 ms (a 100 Hz BT tick)
+//   BM_IkCostColdMujocoChecks / BM_IkCostCachedMujocoChecks   one `ik` edge cost with
+//                          MuJoCo collision checks, cold (cache cleared) and cached
 // Counter rtf = simulated seconds per CPU second.
 #include <benchmark/benchmark.h>
 
+#include "rtamp/robot/ik_motion_cost.hpp"
 #include "rtamp/sim/session.hpp"
+#include "rtamp/sim/skill_runner.hpp"
 #include "rtamp/world/scenario_io.hpp"
 
 namespace {
@@ -67,5 +71,38 @@ void BM_SimEpisode(benchmark::State& state) {
 BENCHMARK(BM_SimEpisode)->Unit(benchmark::kMillisecond)->Iterations(3);
 
 }  // namespace
+
+// One cold `ik` edge cost with MuJoCo's collision checks (issue "The robot and its
+// world": "one cold ik edge cost (IK + collision check) and a cached one, timed"):
+// move(block, r1 -> r2) with the hand at home, the checker on the simulation's
+// scratch data of the 3-block-tray scene (the tray and the blocks in place).
+void BM_IkCostColdMujocoChecks(benchmark::State& state) {
+  const world::Scenario scenario = world::load_scenario("3-block-tray");
+  sim::Simulation s(scenario);
+  sim::SimCollisionChecker checker(s);
+  robot::IkCostModel m(robot::IkMotionCost::params_for(scenario));
+  m.set_collision_checker(&checker);
+  const Eigen::Vector3d home(0, 0, 0.5), r1(0.40, 0.32, 0), r2(0.40, -0.32, 0);
+  const long before = checker.calls();
+  for (auto _ : state) {
+    m.clear();
+    benchmark::DoNotOptimize(m.move_cost(home, r1, r2, false));
+  }
+  state.counters["checks/cost"] =
+      benchmark::Counter(static_cast<double>(checker.calls() - before) / static_cast<double>(state.iterations()));
+}
+BENCHMARK(BM_IkCostColdMujocoChecks)->Unit(benchmark::kMicrosecond);
+
+void BM_IkCostCachedMujocoChecks(benchmark::State& state) {
+  const world::Scenario scenario = world::load_scenario("3-block-tray");
+  sim::Simulation s(scenario);
+  sim::SimCollisionChecker checker(s);
+  robot::IkCostModel m(robot::IkMotionCost::params_for(scenario));
+  m.set_collision_checker(&checker);
+  const Eigen::Vector3d home(0, 0, 0.5), r1(0.40, 0.32, 0), r2(0.40, -0.32, 0);
+  m.move_cost(home, r1, r2, false);
+  for (auto _ : state) benchmark::DoNotOptimize(m.move_cost(home, r1, r2, false));
+}
+BENCHMARK(BM_IkCostCachedMujocoChecks);
 
 BENCHMARK_MAIN();
