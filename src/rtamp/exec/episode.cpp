@@ -10,6 +10,7 @@
 #include <map>
 #include <random>
 
+#include "rtamp/exec/sim_action_runner.hpp"
 #include "rtamp/plan/planner.hpp"
 #include "rtamp/robot/ik_motion_cost.hpp"
 #include "rtamp/sim/controller.hpp"
@@ -55,148 +56,6 @@ class SimClock final : public bt::Clock {
 
  private:
   const sim::Simulation& sim_;
-};
-
-// The skill runner plus the two questions recovery asks of the simulation.
-struct Skills {
-  sim::Simulation& sim;
-  sim::SkillRunner& runner;
-  bool start_pick(const std::string& o) { return runner.start_pick(o); }
-  bool start_place(const std::string& l) { return runner.start_place(l); }
-  bool start_retreat() { return runner.start_retreat(); }
-  bool sim_holds(const std::string& o) const { return sim.held() >= 0 && sim.held() == sim.find(o); }
-  void release_here() { sim.detach(); }
-};
-
-// Runs a move (pick, then place) on the simulated arm for the tree's Move nodes.
-class SimActionRunner final : public ActionRunner {
- public:
-  SimActionRunner(Skills& skills, sim::Controller& controller) : skills_(skills), controller_(controller) {}
-
-  bt::Status start(const plan::ActionTuple& t) override {
-    current_ = t.action;
-    to_ = t.to;
-    from_ = t.from;
-    thing_ = t.thing;
-    if (returning()) {  // the arm still finishes after a halted move: start when it is done
-      waiting_ = true;
-      return bt::Status::Running;
-    }
-    return begin();
-  }
-  bt::Status running(const plan::ActionTuple&) override {
-    if (waiting_) return returning() ? bt::Status::Running : begin();
-    const sim::Status s = controller_.status();
-    if (s == sim::Status::Running) return bt::Status::Running;
-    if (s == sim::Status::Failure) return fail_or_recover(controller_.reason());
-    switch (phase_) {
-      case Phase::Picking:
-        phase_ = Phase::Placing;
-        if (!skills_.start_place(to_)) return fail_or_recover(controller_.reason());
-        return bt::Status::Running;
-      case Phase::Placing:
-        hand_ = to_;
-        return finish(bt::Status::Success, {});
-      case Phase::Recovering:
-        hand_ = from_;
-        return finish(bt::Status::Failure, failure_);
-    }
-    return bt::Status::Running;
-  }
-
-  void halt(const plan::ActionTuple&) override {
-    if (waiting_) {  // never started: nothing to stop
-      waiting_ = false;
-      current_.clear();
-      return;
-    }
-    controller_.halt();
-    if (on_event) on_event("halted", current_, "");
-    back_thing_ = thing_;
-    back_from_ = from_;
-    // A halted move must not leave its object in the gripper: the arm puts it
-    // back where it came from before the tree may use it again (returning()).
-    // An empty gripper backs straight up first, clear of what it just placed.
-    if (skills_.sim_holds(thing_)) {
-      if (skills_.start_place(from_)) {
-        returning_ = true;
-        hand_ = from_;
-        if (on_event) on_event("returning", current_, "putting " + thing_ + " back in " + from_);
-      } else {
-        skills_.release_here();
-      }
-    } else if (skills_.start_retreat() && controller_.status() == sim::Status::Running) {
-      returning_ = true;
-      if (on_event) on_event("returning", current_, "backing off");
-    }
-    current_.clear();
-  }
-
-  // True while the arm finishes after a halted move (puts its object back, or
-  // backs off); the tree waits.
-  bool returning() {
-    if (returning_ && controller_.status() != sim::Status::Running) {
-      returning_ = false;
-      if (controller_.status() == sim::Status::Failure && skills_.sim_holds(back_thing_)) skills_.release_here();
-      if (on_event) on_event("returned", back_thing_, controller_.reason());
-    }
-    return returning_;
-  }
-  // Where a thing held while returning goes back to.
-  const std::string& source() const { return back_from_; }
-
-  // The running move, if any: its thing and destination (for the planner's view).
-  const std::string& current() const { return current_; }
-  const std::string& thing() const { return thing_; }
-  const std::string& destination() const { return to_; }
-  // Where the hand is when no move runs: the location of the last place ("" at first: home).
-  const std::string& hand() const { return hand_; }
-  int succeeded = 0, failed = 0;
-  std::string last_failure;
-  std::function<void(const char*, const std::string&, const std::string&)> on_event;
-
- private:
-  enum class Phase { Picking, Placing, Recovering };
-
-  bt::Status begin() {
-    waiting_ = false;
-    phase_ = Phase::Picking;
-    if (on_event) on_event("start", current_, "");
-    if (!skills_.start_pick(thing_)) return finish(bt::Status::Failure, controller_.reason());
-    return bt::Status::Running;
-  }
-
-  // A failed move must not leave the object in the gripper: put it back where
-  // it came from first (the failure is reported when that is done).
-  bt::Status fail_or_recover(const std::string& why) {
-    failure_ = why;
-    if (phase_ != Phase::Recovering && skills_.sim_holds(thing_)) {
-      phase_ = Phase::Recovering;
-      if (on_event) on_event("recovering", current_, why + "; putting " + thing_ + " back in " + from_);
-      if (skills_.start_place(from_)) return bt::Status::Running;
-      skills_.release_here();
-    }
-    return finish(bt::Status::Failure, why);
-  }
-
-  bt::Status finish(bt::Status s, const std::string& why) {
-    if (s == bt::Status::Failure) {
-      ++failed;
-      last_failure = current_ + ": " + why;
-    } else {
-      ++succeeded;
-    }
-    if (on_event) on_event(s == bt::Status::Success ? "finished" : "failed", current_, why);
-    current_.clear();
-    return s;
-  }
-
-  Skills& skills_;
-  sim::Controller& controller_;
-  std::string current_, thing_, to_, from_, failure_, hand_;
-  Phase phase_ = Phase::Picking;
-  bool returning_ = false, waiting_ = false;
-  std::string back_thing_, back_from_;  // the halted move's object and source, while returning
 };
 
 // Objects moved to random non-overlapping spots inside their initial location.
@@ -324,8 +183,7 @@ EpisodeMetrics run_episode(const world::Scenario& input, const EpisodeOptions& o
     perception_options.seed = opt.seed;
     sim::Perception perception(sim, perception_options);
     sim::Operator op(sim, op_options);
-    Skills skill_port{sim, skills};
-    SimActionRunner runner(skill_port, controller);
+    SimActionRunner runner(sim, skills, controller);
     runner.on_event = [&](const char* what, const std::string& action, const std::string& why) {
       emit({{"ev", "action"}, {"what", what}, {"action", action}, {"reason", why}});
       say(std::string(what) + " " + action + (why.empty() ? "" : " (" + why + ")"));
