@@ -8,6 +8,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 
@@ -91,6 +92,31 @@ TEST(Episode, ScriptedTrayScenarioSucceedsWithACompleteLog) {
   // At the end every block is in r2.
   const auto& placement = log.lines.back().at("placement");
   for (const char* b : {"o1", "o2", "o3"}) EXPECT_EQ(placement.at(b), "r2") << b;
+  std::filesystem::remove(o.log_path);
+}
+
+// The demo: a tray handed over mid-task. The robot finishes the move it is
+// making, then switches to the tray plan (the tree change waits for that move
+// and goes in before the next one starts) and completes the task.
+TEST(Episode, HandedOverTrayIsUsedOnceTheRunningMoveEnds) {
+  const world::Scenario s = world::load_scenario("3-block-tray-handover");
+  const EpisodeOptions o = options("handover");
+  const EpisodeMetrics m = run_episode(s, o);
+  EXPECT_TRUE(m.success) << m.reason;
+  const Log log = read_log(o.log_path);
+  expect_complete(log, m);
+  const auto plans = log.of("plan");
+  ASSERT_GE(plans.size(), 2u);
+  EXPECT_EQ(plans[0].at("actions").dump().find("r3"), std::string::npos) << "no tray at first";
+  EXPECT_NE(plans[1].at("actions").dump().find("move(r3, r2)"), std::string::npos) << "the replan uses the tray";
+  // The first move started after the handover is a move into the tray.
+  std::vector<std::string> started;
+  for (const auto& a : log.of("action"))
+    if (a.at("what") == "start") started.push_back(a.at("action"));
+  ASSERT_GE(started.size(), 2u);
+  EXPECT_EQ(started[0], "move(o1, r2)");
+  EXPECT_NE(started[1].find(", r3)"), std::string::npos) << started[1];
+  EXPECT_NE(std::find(started.begin(), started.end(), "move(r3, r2)"), started.end());
   std::filesystem::remove(o.log_path);
 }
 
