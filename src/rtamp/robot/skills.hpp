@@ -16,7 +16,9 @@
 // straight approach succeeds, and whose transit can be planned is used.
 // Only the transit is collision-checked: the approach and retreat end in intended
 // contact (fingers around the thing, a held thing on its support); the checker's
-// implementation decides what it ignores there (see sim layer).
+// implementation decides what it ignores there (see sim layer). If the start
+// configuration itself collides (the arm was stopped in contact), the plan first
+// backs the tool straight up by `approach_height`, unchecked, and transits from there.
 // Invariants of an ok plan: trajectory.start() == q0; cost == tool_path_length(trajectory);
 // events are inside [0, duration]; end == trajectory.end().
 #pragma once
