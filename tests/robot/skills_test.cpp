@@ -141,3 +141,36 @@ TEST(Skills, UnreachableThingsFailWithAReason) {
 
 }  // namespace
 }  // namespace rtamp::robot
+
+namespace rtamp::robot {
+namespace {
+
+// An arm stopped in contact (its start configuration collides): the plan first
+// backs the tool straight up by the approach height, then transits from there.
+TEST(Skills, StartInContactBacksStraightUpFirst) {
+  Fixture f;
+  const Joints low = *f.arm.ik_nearest(top_down_pose({0.35, 0.0, 0.03}, 0.0), f.home);
+  const double low_z = f.arm.tool_point(low).z();
+  // Everything with the tool below 6 cm collides (the start does; pre-grasp poses do not).
+  FunctionCollisionChecker checker([&](const Joints& q) { return f.arm.tool_point(q).z() < 0.06; });
+  const ThingPose block{{0.5, 0.15, 0.0}, 0.0};
+  const SkillPlan p = plan_pick(f.arm, low, block, Grasp::block({0.04, 0.04, 0.04}), SkillOptions{}, &checker);
+  ASSERT_TRUE(p.ok) << p.why;
+  EXPECT_EQ(p.trajectory.start(), low);
+  // The first part of the motion is vertical, up to approach_height above the start.
+  const Eigen::Vector3d start = f.arm.tool_point(low);
+  double t = 0;
+  for (; t < p.t_transit; t += 0.01) {
+    const Eigen::Vector3d x = f.arm.tool_point(p.trajectory.sample(t).q);
+    if (x.z() >= low_z + SkillOptions{}.approach_height - 1e-6) break;
+    EXPECT_LT(std::hypot(x.x() - start.x(), x.y() - start.y()), 1e-3) << t;
+  }
+  EXPECT_LT(t, p.t_transit) << "the tool never rose by the approach height before the pre-grasp pose";
+  // Without a checker there is no escape: the transit starts at once.
+  const SkillPlan q = plan_pick(f.arm, low, block, Grasp::block({0.04, 0.04, 0.04}));
+  ASSERT_TRUE(q.ok);
+  EXPECT_LT(q.t_transit, p.t_transit);
+}
+
+}  // namespace
+}  // namespace rtamp::robot
