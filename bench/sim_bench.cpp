@@ -76,32 +76,33 @@ BENCHMARK(BM_SimEpisode)->Unit(benchmark::kMillisecond)->Iterations(3);
 // world": "one cold ik edge cost (IK + collision check) and a cached one, timed"):
 // move(block, r1 -> r2) with the hand at home, the checker on the simulation's
 // scratch data of the 3-block-tray scene (the tray and the blocks in place).
+// The 3-block-tray scene with an `ik` cost model that checks collisions with MuJoCo.
+struct IkCostScene {
+  world::Scenario scenario = world::load_scenario("3-block-tray");
+  sim::Simulation sim{scenario};
+  sim::SimCollisionChecker checker{sim};
+  robot::IkCostModel model{robot::IkMotionCost::params_for(scenario)};
+  const Eigen::Vector3d home{0, 0, 0.5}, r1{0.40, 0.32, 0}, r2{0.40, -0.32, 0};
+  IkCostScene() { model.set_collision_checker(&checker); }
+  double block_r1_to_r2() { return model.move_cost(home, r1, r2, false); }
+};
+
 void BM_IkCostColdMujocoChecks(benchmark::State& state) {
-  const world::Scenario scenario = world::load_scenario("3-block-tray");
-  sim::Simulation s(scenario);
-  sim::SimCollisionChecker checker(s);
-  robot::IkCostModel m(robot::IkMotionCost::params_for(scenario));
-  m.set_collision_checker(&checker);
-  const Eigen::Vector3d home(0, 0, 0.5), r1(0.40, 0.32, 0), r2(0.40, -0.32, 0);
-  const long before = checker.calls();
+  IkCostScene scene;
+  const long before = scene.checker.calls();
   for (auto _ : state) {
-    m.clear();
-    benchmark::DoNotOptimize(m.move_cost(home, r1, r2, false));
+    scene.model.clear();
+    benchmark::DoNotOptimize(scene.block_r1_to_r2());
   }
-  state.counters["checks/cost"] =
-      benchmark::Counter(static_cast<double>(checker.calls() - before) / static_cast<double>(state.iterations()));
+  state.counters["checks/cost"] = benchmark::Counter(static_cast<double>(scene.checker.calls() - before) /
+                                                     static_cast<double>(state.iterations()));
 }
 BENCHMARK(BM_IkCostColdMujocoChecks)->Unit(benchmark::kMicrosecond);
 
 void BM_IkCostCachedMujocoChecks(benchmark::State& state) {
-  const world::Scenario scenario = world::load_scenario("3-block-tray");
-  sim::Simulation s(scenario);
-  sim::SimCollisionChecker checker(s);
-  robot::IkCostModel m(robot::IkMotionCost::params_for(scenario));
-  m.set_collision_checker(&checker);
-  const Eigen::Vector3d home(0, 0, 0.5), r1(0.40, 0.32, 0), r2(0.40, -0.32, 0);
-  m.move_cost(home, r1, r2, false);
-  for (auto _ : state) benchmark::DoNotOptimize(m.move_cost(home, r1, r2, false));
+  IkCostScene scene;
+  scene.block_r1_to_r2();
+  for (auto _ : state) benchmark::DoNotOptimize(scene.block_r1_to_r2());
 }
 BENCHMARK(BM_IkCostCachedMujocoChecks);
 
