@@ -56,6 +56,7 @@ nlohmann::json stats_json(const plan::SearchStats& s) {
           {"graph_nodes", s.graph_nodes},
           {"graph_edges", s.graph_edges},
           {"reused_nodes", s.reused_nodes},
+          {"reused_path_edges", s.reused_path_edges},
           {"cache_hits", s.cache_hits},
           {"cache_misses", s.cache_misses},
           {"memory_bytes", s.memory_bytes},
@@ -97,7 +98,7 @@ void print_result(plan::Planner& p, const plan::PlanResult& r, const std::string
   const auto& s = r.stats;
   out << "  statistics: " << s.generated << " nodes generated, " << s.expanded << " expanded ("
       << s.successor_generations << " successor generations, " << s.cycle_searches << " cycle searches), "
-      << s.reused_nodes << " reused; graph " << s.graph_nodes << " nodes / " << s.graph_edges << " edges; "
+      << s.reused_nodes << " reused, " << s.reused_path_edges << " plan edges reused; graph " << s.graph_nodes << " nodes / " << s.graph_edges << " edges; "
       << fmt(s.seconds * 1e3, 3) << " ms";
   if (s.construction_seconds > 0) out << " (construction " << fmt(s.construction_seconds * 1e3, 3) << " ms)";
   out << "; cache " << s.cache_hits << " hits / " << s.cache_misses << " misses; memory " << s.memory_bytes

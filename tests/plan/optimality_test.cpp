@@ -108,4 +108,46 @@ TEST(Optimality, ReplansAfterChangesMatchBruteForce) {
   EXPECT_GT(checked, 200);
 }
 
+// Long query sequences on one product graph (relocations and executed steps
+// keep the TS, so learned bounds and solved paths pile up): every replan still
+// equals the brute force, and solved paths are really used.
+TEST(Optimality, ManyReplansOnOneGraphMatchBruteForce) {
+  const auto formulas = robot_patterns();
+  std::mt19937 rng(4242);
+  int checked = 0;
+  std::uint64_t reused = 0;
+  for (int trial = 0; trial < 120; ++trial) {
+    const world::Scenario sc = random_scenario(rng, formulas);
+    SCOPED_TRACE("trial " + std::to_string(trial) + " task " + sc.task);
+    plan::Planner p(sc);  // astar-exp, partial, euclid
+    plan::PlanResult r = p.plan();
+    for (int k = 0; k < 12; ++k) {
+      const auto& cur = p.scenario();
+      if (rng() % 2 == 0 && r.found && !r.plan.prefix.empty()) {
+        p.execute(r.plan.prefix.front().action);
+      } else {
+        std::vector<std::string> things, locs;
+        for (const auto& o : cur.objects) things.push_back(o.name);
+        for (const auto& r2 : cur.regions) locs.push_back(r2.name);
+        for (const auto& c : cur.containers) locs.push_back(c.name);
+        if (things.empty()) break;
+        const std::string t = things[rng() % things.size()], l = locs[rng() % locs.size()];
+        SCOPED_TRACE("move " + t + " " + l);
+        p.apply(plan::Change::relocate(t, l));
+      }
+      r = p.plan();
+      const auto want = oracle::min_lasso(p.scenario(), p.placement(), p.hand(), p.automaton(), "euclid");
+      ASSERT_EQ(r.found, want.has_value()) << r.message << " (query " << k << ")";
+      ++checked;
+      reused += r.stats.reused_path_edges;
+      if (r.found) {
+        EXPECT_NEAR(r.plan.cost(), *want, 1e-6) << "query " << k;
+        check_plan(p, r, "euclid");
+      }
+    }
+  }
+  EXPECT_GT(checked, 1000);
+  EXPECT_GT(reused, 100u);
+}
+
 }  // namespace

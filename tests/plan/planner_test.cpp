@@ -131,6 +131,34 @@ TEST(Planner, ExperienceReusesTheGraphOnRelocation) {
   }
 }
 
+// Solved paths: once a plan is found, every prefix node knows its exact best
+// lasso, so replanning after the robot did a step (or a person did it for the
+// robot) follows the recorded plan and expands nothing.
+TEST(Planner, ReplanAfterAStepFollowsTheSolvedPath) {
+  plan::Planner p(world::load_scenario("3-block-tray"));
+  const auto first = p.plan();
+  ASSERT_TRUE(first.found);
+  ASSERT_GE(first.plan.prefix.size(), 2u);
+  p.execute(first.plan.prefix.front().action);
+  const auto next = p.plan();
+  ASSERT_TRUE(next.found);
+  EXPECT_EQ(next.stats.expanded, 0u);
+  EXPECT_EQ(next.stats.reused_path_edges, first.plan.prefix.size() - 1);
+  EXPECT_NEAR(next.plan.cost(), first.plan.cost() - first.plan.prefix.front().cost, 1e-9);
+  ASSERT_EQ(next.plan.prefix.size(), first.plan.prefix.size() - 1);
+  for (std::size_t i = 0; i < next.plan.prefix.size(); ++i)
+    EXPECT_EQ(p.describe(next.plan.prefix[i].action), p.describe(first.plan.prefix[i + 1].action)) << i;
+  // The same from a cold planner placed in that state.
+  plan::PlannerOptions o;
+  o.algorithm = plan::Algorithm::AStar;
+  plan::Planner cold(p.scenario(), p.automaton(), o);
+  cold.set_placement(p.placement(), p.hand());
+  const auto rc = cold.plan();
+  ASSERT_TRUE(rc.found);
+  EXPECT_NEAR(next.plan.cost(), rc.plan.cost(), 1e-9);
+  EXPECT_EQ(rc.stats.reused_path_edges, 0u);
+}
+
 TEST(Planner, NoPlanReasons) {
   auto sc = world::load_scenario("3-block");
   {

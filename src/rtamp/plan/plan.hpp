@@ -55,6 +55,7 @@ struct SearchStats {
   std::uint64_t cache_hits = 0;       // motion-cost cache (astar-exp only)
   std::uint64_t cache_misses = 0;
   std::uint64_t reused_nodes = 0;     // nodes already in the graph when the query started
+  std::uint64_t reused_path_edges = 0;  // plan edges taken from an earlier optimal plan (astar-exp)
   std::size_t memory_bytes = 0;       // product graph + search arrays + cache, after the query
   double construction_seconds = 0;    // full construction before the search (graph "full")
   double seconds = 0;                 // wall time of the whole query

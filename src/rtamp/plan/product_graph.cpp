@@ -159,6 +159,13 @@ void ProductGraph::learn(NodeId n, double v) {
   learned_[n] = std::max(learned_[n], v);
 }
 
+void ProductGraph::set_solved(NodeId n, double value, std::uint32_t via) {
+  if (learned_.size() <= n) learned_.resize(std::max<std::size_t>(size(), n + 1), 0.0);
+  if (via_.size() <= n) via_.resize(std::max<std::size_t>(size(), n + 1), kNoVia);
+  learned_[n] = value;
+  via_[n] = via;
+}
+
 void ProductGraph::set_cycle(NodeId n, Cycle c) {
   if (cycles_.size() <= n) cycles_.resize(std::max<std::size_t>(size(), n + 1));
   cycles_[n] = c;
@@ -168,7 +175,7 @@ std::size_t ProductGraph::memory_bytes() const {
   return states_.capacity() * sizeof(std::uint64_t) + q_.capacity() * 4 + edge_begin_.capacity() * 4 +
          edge_end_.capacity() * 4 + labels_.capacity() * sizeof(automata::Letter) +
          edges_.capacity() * sizeof(ProductEdge) + table_.capacity() * 4 + learned_.capacity() * sizeof(double) +
-         cycles_.capacity() * sizeof(Cycle) + hcache_.capacity() * sizeof(double);
+         cycles_.capacity() * sizeof(Cycle) + hcache_.capacity() * sizeof(double) + via_.capacity() * 4;
 }
 
 }  // namespace rtamp::plan

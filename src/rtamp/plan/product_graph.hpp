@@ -99,6 +99,18 @@ class ProductGraph {
   static constexpr double kUnknownH = -1.0;
   Cycle cycle(NodeId n) const { return n < cycles_.size() ? cycles_[n] : Cycle{}; }
   void set_cycle(NodeId n, Cycle c);
+  // Solved nodes (experience, "previously explored paths"): n lies on an
+  // optimal lasso found by an earlier complete search, so learned(n) is the
+  // exact cost of the best lasso from n, and via(n) is its first edge, or
+  // kViaCycle if n is that lasso's accepting node (its cycle is then exact in
+  // cycle(n)). Following via() from a solved node reaches such an accepting
+  // node through solved nodes only. Valid as long as the graph is.
+  static constexpr std::uint32_t kNoVia = std::numeric_limits<std::uint32_t>::max();
+  static constexpr std::uint32_t kViaCycle = kNoVia - 1;
+  std::uint32_t via(NodeId n) const { return n < via_.size() ? via_[n] : kNoVia; }
+  bool solved(NodeId n) const { return via(n) != kNoVia; }
+  // Marks n solved: the best lasso from n costs exactly `value` and starts with edge `via`.
+  void set_solved(NodeId n, double value, std::uint32_t via);
 
   std::uint64_t expansions() const { return expansions_; }
   std::size_t num_edges() const { return edges_.size(); }
@@ -126,6 +138,7 @@ class ProductGraph {
   std::vector<double> learned_;
   std::vector<Cycle> cycles_;
   std::vector<double> hcache_;
+  std::vector<std::uint32_t> via_;
   std::vector<std::uint32_t> succ_q_;  // scratch: BA successors of the node being expanded
   std::uint64_t expansions_ = 0;
 };

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <stdexcept>
 
 namespace rtamp::plan {
 
@@ -64,6 +65,27 @@ LassoSearch::Item LassoSearch::Space::pop() {
 std::size_t LassoSearch::Space::bytes() const {
   return g.capacity() * 8 + h.capacity() * 8 + parent.capacity() * 4 + pedge.capacity() * 4 + stamp.capacity() * 4 +
          closed.capacity() + heap.capacity() * sizeof(Item);
+}
+
+// Removes closed walks from a path of edges starting at `from` (a path made of
+// a search-tree branch and a solved path may meet itself only through
+// zero-cost edges, e.g. stay edges between BA states). Paths are short.
+void LassoSearch::drop_loops(const ProductGraph& g, NodeId from, std::vector<std::uint32_t>& edges) {
+  path_nodes_.assign(1, from);
+  std::size_t kept = 0;
+  for (std::uint32_t e : edges) {
+    const NodeId d = g.edge(e).dst;
+    auto seen = std::find(path_nodes_.begin(), path_nodes_.end(), d);
+    if (seen != path_nodes_.end()) {  // back at an earlier node: forget the loop
+      const auto keep = static_cast<std::size_t>(seen - path_nodes_.begin());
+      path_nodes_.resize(keep + 1);
+      kept = keep;
+      continue;
+    }
+    edges[kept++] = e;
+    path_nodes_.push_back(d);
+  }
+  edges.resize(kept);
 }
 
 bool LassoSearch::out_of_budget(const ProductGraph& g, const SearchLimits& limits, std::int64_t deadline_ns,
@@ -152,9 +174,19 @@ LassoResult LassoSearch::run(ProductGraph& g, NodeId init, Heuristic& h, bool cy
   S.begin(g.size());
   closed_list_.clear();
   double best = kInf;
-  NodeId best_node = kNoNode;
+  NodeId best_node = kNoNode;  // an accepting node, or (best_solved) a solved node
+  bool best_solved = false;
   double best_cycle = kInf;
-  std::vector<std::uint32_t> best_cycle_path;
+  // Experience: a solved node m completes a lasso of cost g(m) + learned(m).
+  auto offer_solved = [&](NodeId m, double gm) {
+    if (!learn || !g.solved(m)) return;
+    const double c = gm + g.learned(m);
+    if (c < best - kEps) {
+      best = c;
+      best_node = m;
+      best_solved = true;
+    }
+  };
 
   S.stamp[init] = S.gen;
   S.g[init] = 0;
@@ -162,6 +194,7 @@ LassoResult LassoSearch::run(ProductGraph& g, NodeId init, Heuristic& h, bool cy
   S.parent[init] = kNoNode;
   S.closed[init] = 0;
   if (S.h[init] < kInf) S.push({S.h[init], 0.0, init});
+  offer_solved(init, 0.0);
   bool complete = true;
   while (!S.heap.empty()) {
     const Item it = S.pop();
@@ -171,6 +204,8 @@ LassoResult LassoSearch::run(ProductGraph& g, NodeId init, Heuristic& h, bool cy
     if (S.closed[n]) continue;
     S.closed[n] = 1;
     closed_list_.push_back(n);
+    // Nothing through a solved node beats the lasso it already offered.
+    if (learn && g.solved(n)) continue;
     ++stats.expanded;
     if (g.accepting(n)) {
       const double c = cycle(g, n, best - S.g[n], cycle_heuristic, limits, deadline_ns, stats, r);
@@ -181,6 +216,7 @@ LassoResult LassoSearch::run(ProductGraph& g, NodeId init, Heuristic& h, bool cy
       if (S.g[n] + c < best - kEps) {
         best = S.g[n] + c;
         best_node = n;
+        best_solved = false;
         best_cycle = c;
       }
     }
@@ -205,6 +241,7 @@ LassoResult LassoSearch::run(ProductGraph& g, NodeId init, Heuristic& h, bool cy
       S.pedge[m] = e;
       S.closed[m] = 0;
       if (S.h[m] < kInf) S.push({ng + S.h[m], ng, m});
+      offer_solved(m, ng);
     }
     if (out_of_budget(g, limits, deadline_ns, r)) {
       complete = false;
@@ -213,28 +250,52 @@ LassoResult LassoSearch::run(ProductGraph& g, NodeId init, Heuristic& h, bool cy
   }
   if (best_node != kNoNode) {
     r.found = true;
-    r.accepting = best_node;
-    r.prefix_cost = S.g[best_node];
-    r.cycle_cost = best_cycle;
     for (NodeId cur = best_node; cur != init; cur = S.parent[cur]) r.prefix_edges.push_back(S.pedge[cur]);
     std::reverse(r.prefix_edges.begin(), r.prefix_edges.end());
+    NodeId acc = best_node;
+    if (best_solved) {
+      // Follow the solved path to its accepting node (terminates: see set_solved below).
+      for (std::uint32_t e = g.via(acc); e != ProductGraph::kViaCycle; e = g.via(acc)) {
+        r.prefix_edges.push_back(e);
+        acc = g.edge(e).dst;
+        if (++stats.reused_path_edges > g.size()) throw std::logic_error("LassoSearch: solved path loops");
+      }
+      best_cycle = g.cycle(acc).lower;  // exact for a solved accepting node
+      drop_loops(g, init, r.prefix_edges);
+    }
+    r.accepting = acc;
+    r.prefix_cost = 0;
+    for (std::uint32_t e : r.prefix_edges) r.prefix_cost += g.edge(e).cost;
     // The cycle's path: search again through the (now exactly known) best cycle.
-    ProductGraph::Cycle saved = g.cycle(best_node);
-    g.set_cycle(best_node, {0, false});
+    ProductGraph::Cycle saved = g.cycle(acc);
+    g.set_cycle(acc, {0, false});
     LassoResult scratch;
     SearchLimits unlimited;
     unlimited.max_nodes = ~std::size_t{0};
-    const double c = cycle(g, best_node, best_cycle + 1e-7 * (1 + best_cycle), cycle_heuristic, unlimited, 0, stats, scratch);
-    g.set_cycle(best_node, saved);
+    const double c = cycle(g, acc, best_cycle + 1e-7 * (1 + best_cycle), cycle_heuristic, unlimited, 0, stats, scratch);
+    g.set_cycle(acc, saved);
     r.cycle_edges = cycle_path_;
     r.cycle_cost = c;
   }
   if (learn && complete && !r.hit_node_limit && !r.hit_time_limit) {
     const double total = r.found ? r.prefix_cost + r.cycle_cost : kInf;
-    for (NodeId m : closed_list_) g.learn(m, total - S.g[m]);
-  }
-  if (r.found && !complete) {
-    // A lasso was found but not proven optimal; report the limit and keep it.
+    for (NodeId m : closed_list_)
+      if (!g.solved(m)) g.learn(m, total - S.g[m]);
+    if (r.found) {
+      // The lasso is optimal, so every node x on its prefix has V(x) exactly
+      // total - (cost of the prefix up to x): the rest of the lasso achieves
+      // it, and V(x) >= C* - dist(init, x) >= that. Nodes solved earlier keep
+      // their via edge, so via chains only lead to nodes solved no later and,
+      // among nodes solved together, along one simple path: they end.
+      double gx = 0;
+      NodeId x = init;
+      for (std::uint32_t e : r.prefix_edges) {
+        if (!g.solved(x)) g.set_solved(x, total - gx, e);
+        gx += g.edge(e).cost;
+        x = g.edge(e).dst;
+      }
+      if (!g.solved(x)) g.set_solved(x, r.cycle_cost, ProductGraph::kViaCycle);
+    }
   }
   return r;
 }

@@ -24,6 +24,16 @@
 // values (experience) are C*_old - g_old(m) for nodes m closed by an earlier
 // complete search on the same graph: since g_old(m) >= the true distance and
 // C*_old <= g_old(m) + V(m), they are <= V(m) too.
+// Solved paths (experience, `learn`): the prefix nodes of an optimal lasso
+// found by a complete search are marked solved in the graph (their best lasso
+// cost is then known exactly, ProductGraph::set_solved). A later search on
+// the same graph that reaches a solved node m with cost g(m) has a lasso of
+// cost g(m) + V(m) at once (the path to m, then m's recorded lasso); it keeps
+// it as the incumbent and never expands solved nodes (nothing through m can
+// be cheaper). The stopping rule above then ends the search as soon as no
+// open node could beat it, so a replan that starts on or next to an earlier
+// plan expands few or no nodes. Optimality is unchanged: the incumbent is a
+// real lasso, and the argument above only needs h admissible.
 // Memory: per-search arrays indexed by node id (g, parent, parent edge,
 // heuristic, generation stamp), a binary heap with lazy deletion (stale
 // entries are skipped), all grown geometrically and reused across queries.
@@ -58,7 +68,7 @@ struct LassoResult {
 
 class LassoSearch {
  public:
-  // `learn`: store experience (learned bounds) in the graph after a complete search.
+  // `learn`: use and store experience (learned bounds, solved paths) in the graph.
   // `cycle_heuristic`: use state_distance_bound in cycle searches (else 0).
   LassoResult run(ProductGraph& g, NodeId init, Heuristic& h, bool cycle_heuristic, bool learn,
                   const SearchLimits& limits, std::int64_t deadline_ns, SearchStats& stats);
@@ -86,11 +96,13 @@ class LassoSearch {
   // Cheapest cycle through n below `bound`; kInf if none. Fills cycle_path_ when found.
   double cycle(ProductGraph& g, NodeId n, double bound, bool heuristic, const SearchLimits& limits,
                std::int64_t deadline_ns, SearchStats& stats, LassoResult& r);
+  void drop_loops(const ProductGraph& g, NodeId from, std::vector<std::uint32_t>& edges);
   bool out_of_budget(const ProductGraph& g, const SearchLimits& limits, std::int64_t deadline_ns, LassoResult& r);
 
   Space prefix_, cycle_;
   std::vector<NodeId> closed_list_;
   std::vector<std::uint32_t> cycle_path_;
+  std::vector<NodeId> path_nodes_;
   std::uint64_t ticks_ = 0;
 };
 
