@@ -7,6 +7,8 @@
 //                                  (ik = 1: the `ik` cost model, astar-exp only)
 //   BM_TrayColdReplan/<change>/<ik> the same replans from scratch: a fresh Planner
 //                                  for the changed world, A*, no experience (euclid or ik)
+//   BM_TrayReplanStream/<algo>      replans along 20-state streams of executed steps and
+//                                  relocations, fresh planner per stream (mean per replan)
 //   BM_PartialVsFull/<n>/<full>    cold A* plans on 5-region random layouts, 10 seeds
 // Report mode (the paper's partial-vs-full experiment and the replan table as CSV):
 //   plan_bench --csv-dir=DIR [--full-max=N]
@@ -20,6 +22,7 @@
 #include <cstring>
 #include <fstream>
 #include <iostream>
+#include <random>
 #include <string>
 #include <vector>
 
@@ -150,6 +153,73 @@ void BM_TrayColdReplan(benchmark::State& state) {
 }
 BENCHMARK(BM_TrayColdReplan)->ArgsProduct({{0, 1, 2}, {0, 1}})->UseManualTime()->Unit(benchmark::kMicrosecond);
 
+
+// Replans as an episode makes them: a stream of 20 states, each reached from
+// the one before either by the robot doing the first step of its plan (2 in
+// 3) or by a person moving a random block to a random location (r1, r2 or
+// the tray; also whenever the task is done). Ten seeded streams, made once
+// with astar-exp plans. Each iteration takes a fresh planner (first plan
+// untimed), then times plan() from each state of one stream in order
+// (set_placement: the TS is unchanged, as in an episode with relocations).
+// Reported time: the mean per replan. astar rebuilds its graph every time;
+// astar-exp starts with no experience and accumulates it along the stream.
+struct StreamState {
+  world::Placement placement;
+  std::string hand;
+};
+const std::vector<std::vector<StreamState>>& replan_streams() {
+  static const std::vector<std::vector<StreamState>> streams = [] {
+    std::vector<std::vector<StreamState>> out;
+    const char* blocks[] = {"o1", "o2", "o3"};
+    const char* locs[] = {"r1", "r2", "r3"};
+    for (std::uint32_t seed = 1; seed <= 10; ++seed) {
+      std::mt19937 rng(seed);
+      plan::Planner gen(tray());
+      std::vector<StreamState> stream;
+      while (stream.size() < 20) {
+        const auto r = gen.plan();
+        bool moves = false;
+        if (r.found)
+          for (const auto& st : r.plan.prefix) moves = moves || !st.action.is_stay();
+        if (moves && rng() % 3 != 0) {
+          gen.execute(r.plan.prefix.front().action);
+        } else {
+          gen.apply(plan::Change::relocate(blocks[rng() % 3], locs[rng() % 3]));
+        }
+        stream.push_back({gen.placement(), gen.hand()});
+      }
+      out.push_back(std::move(stream));
+    }
+    return out;
+  }();
+  return streams;
+}
+
+void BM_TrayReplanStream(benchmark::State& state) {
+  const auto algo = kAlgos[state.range(0)];
+  const auto& streams = replan_streams();
+  std::size_t i = 0;
+  double expanded = 0, replans = 0;
+  for (auto _ : state) {
+    const auto& stream = streams[i++ % streams.size()];
+    plan::Planner p(tray(), options(algo));
+    (void)p.plan();
+    double t = 0;
+    for (const auto& st : stream) {
+      p.set_placement(st.placement, st.hand);
+      const auto t0 = Clock::now();
+      auto r = p.plan();
+      t += since(t0);
+      expanded += double(r.stats.expanded);
+      benchmark::DoNotOptimize(r);
+    }
+    replans += double(stream.size());
+    state.SetIterationTime(t / double(stream.size()));
+  }
+  state.counters["expanded_per_replan"] = expanded / replans;
+  state.SetLabel(plan::to_string(algo));
+}
+BENCHMARK(BM_TrayReplanStream)->Arg(1)->Arg(2)->UseManualTime()->Unit(benchmark::kMicrosecond);
 
 world::Scenario random_layout(int n, std::uint64_t seed) {
   world::GeneratorOptions g;

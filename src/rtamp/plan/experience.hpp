@@ -1,6 +1,8 @@
 // Experience, part 1: the motion-cost cache of the paper's Section III.C
 // ("we cache the motion cost of edges newly explored so far ... to avoid
 // inverse kinematics recomputation").
+// The planner uses it only for models that say their costs are expensive()
+// (the ik model): a closed-form euclid cost is cheaper than a lookup.
 //
 // Entries are keyed by exactly what a cost depends on: the MotionQuery masked
 // by the model's depends() bits (the moved thing's stable id, the hand point,

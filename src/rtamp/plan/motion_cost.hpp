@@ -99,8 +99,11 @@ class MotionCostModel {
   // Which MotionQuery fields cost() reads (Depends bits).
   virtual unsigned depends() const = 0;
   virtual double transport_bound(const TransportQuery& t) const;
-  // Costs of this model are expensive enough to be worth caching.
-  virtual bool expensive() const { return false; }
+  // Costs of this model are expensive enough to be worth caching (the
+  // planner's experience cache is used only then). Models are assumed
+  // expensive unless they say otherwise; the closed-form ones below are
+  // cheaper to compute than to look up.
+  virtual bool expensive() const { return true; }
 
   // The query for `a` in state `s` of `ts` (a must be a move).
   static MotionQuery query(const task::System& ts, const task::State& s, const task::Action& a);
@@ -118,6 +121,7 @@ class EuclidCost final : public MotionCostModel {
     return distance(q.hand, q.from) + (to_anywhere ? 0.0 : distance(q.from, q.to));
   }
   unsigned depends() const override { return kDependsHand | kDependsFrom | kDependsTo; }
+  bool expensive() const override { return false; }
   double transport_bound(const TransportQuery& t) const override;
 };
 
@@ -129,6 +133,7 @@ class RegionCost final : public MotionCostModel {
     return to_anywhere ? 0.0 : distance(q.from, q.to);
   }
   unsigned depends() const override { return kDependsFrom | kDependsTo; }
+  bool expensive() const override { return false; }
   double transport_bound(const TransportQuery& t) const override;
 };
 
@@ -139,6 +144,7 @@ class UnitCost final : public MotionCostModel {
   // Any sequence that must pick the thing contains at least one move.
   double lower_bound(const MotionQuery&, bool) const override { return 1.0; }
   unsigned depends() const override { return 0; }
+  bool expensive() const override { return false; }
   // Every one of the m things needs a move of its own.
   double transport_bound(const TransportQuery& t) const override { return double(t.m); }
 };

@@ -314,7 +314,7 @@ PlanResult Planner::search(task::System& ts, task::Labeling& lab, bool allow_dia
   LassoSearch* ls = nullptr;
   if (exp) {
     if (!graph_) {
-      graph_ = std::make_unique<ProductGraph>(ts, lab, ba_, *model_, &cache_);
+      graph_ = std::make_unique<ProductGraph>(ts, lab, ba_, *model_, model_->expensive() ? &cache_ : nullptr);
       exp_heuristic_ = std::make_unique<ExperienceHeuristic>(*graph_);
     }
     g = graph_.get();
@@ -403,6 +403,8 @@ PlanResult Planner::search(task::System& ts, task::Labeling& lab, bool allow_dia
         cur = pe.dst;
       }
     };
+    p.prefix.reserve(r.prefix_edges.size());
+    p.cycle.reserve(r.cycle_edges.size());
     add_steps(init, r.prefix_edges, p.prefix);
     add_steps(r.accepting, r.cycle_edges, p.cycle);
     p.prefix_cost = r.prefix_cost;

@@ -12,8 +12,9 @@
 // and the hand are), the Büchi automaton of the task (translated once: the
 // formula never changes during an episode), the TS and labeling (rebuilt when
 // things or regions are added or removed; names stay the identity), and the
-// experience: the motion-cost cache and, while the TS is unchanged, the
-// product graph with its learned bounds and cycle costs. Each plan() starts
+// experience: the motion-cost cache (for models whose costs are expensive(),
+// e.g. ik) and, while the TS is unchanged, the product graph with its learned
+// bounds, solved paths and cycle costs. Each plan() starts
 // the automaton afresh at the current state ((s, q_b0), Algorithm 1 line 12).
 // Algorithms dijkstra and astar plan cold every time (new graph, no cache);
 // astar-exp keeps and reuses all experience.

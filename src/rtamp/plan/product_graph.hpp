@@ -99,6 +99,10 @@ class ProductGraph {
   static constexpr double kUnknownH = -1.0;
   Cycle cycle(NodeId n) const { return n < cycles_.size() ? cycles_[n] : Cycle{}; }
   void set_cycle(NodeId n, Cycle c);
+  // The edges of n's cheapest cycle, once a search has recorded them (set
+  // with the exact cycle cost; appended to `out`). False if not recorded.
+  bool cycle_path(NodeId n, std::vector<std::uint32_t>& out) const;
+  void set_cycle_path(NodeId n, const std::vector<std::uint32_t>& edges);
   // Solved nodes (experience, "previously explored paths"): n lies on an
   // optimal lasso found by an earlier complete search, so learned(n) is the
   // exact cost of the best lasso from n, and via(n) is its first edge, or
@@ -139,6 +143,8 @@ class ProductGraph {
   std::vector<Cycle> cycles_;
   std::vector<double> hcache_;
   std::vector<std::uint32_t> via_;
+  std::vector<std::uint32_t> cycle_at_;     // per node: 1 + offset in cycle_store_, 0 = none
+  std::vector<std::uint32_t> cycle_store_;  // length, then the edges, per recorded cycle
   std::vector<std::uint32_t> succ_q_;  // scratch: BA successors of the node being expanded
   std::uint64_t expansions_ = 0;
 };

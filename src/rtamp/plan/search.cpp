@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <stdexcept>
 
 namespace rtamp::plan {
@@ -266,16 +267,28 @@ LassoResult LassoSearch::run(ProductGraph& g, NodeId init, Heuristic& h, bool cy
     r.accepting = acc;
     r.prefix_cost = 0;
     for (std::uint32_t e : r.prefix_edges) r.prefix_cost += g.edge(e).cost;
-    // The cycle's path: search again through the (now exactly known) best cycle.
-    ProductGraph::Cycle saved = g.cycle(acc);
-    g.set_cycle(acc, {0, false});
-    LassoResult scratch;
-    SearchLimits unlimited;
-    unlimited.max_nodes = ~std::size_t{0};
-    const double c = cycle(g, acc, best_cycle + 1e-7 * (1 + best_cycle), cycle_heuristic, unlimited, 0, stats, scratch);
-    g.set_cycle(acc, saved);
-    r.cycle_edges = cycle_path_;
-    r.cycle_cost = c;
+    if (learn && g.cycle(acc).exact && g.cycle_path(acc, r.cycle_edges)) {
+      r.cycle_cost = g.cycle(acc).lower;  // recorded with the exact cost by an earlier query
+    } else {
+      // The cycle's path: search again through the (now exactly known) best cycle.
+      ProductGraph::Cycle saved = g.cycle(acc);
+      g.set_cycle(acc, {0, false});
+      LassoResult scratch;
+      SearchLimits unlimited;
+      unlimited.max_nodes = ~std::size_t{0};
+      const double c =
+          cycle(g, acc, best_cycle + 1e-7 * (1 + best_cycle), cycle_heuristic, unlimited, 0, stats, scratch);
+      g.set_cycle(acc, saved);
+      r.cycle_edges = cycle_path_;
+      r.cycle_cost = c;
+      if (learn) {
+        double sum = 0;
+        for (std::uint32_t e : r.cycle_edges) sum += g.edge(e).cost;
+        // Record the path only if it is the exact cheapest cycle the table holds.
+        if (g.cycle(acc).exact && std::abs(sum - g.cycle(acc).lower) <= 1e-9 * (1 + sum))
+          g.set_cycle_path(acc, r.cycle_edges);
+      }
+    }
   }
   if (learn && complete && !r.hit_node_limit && !r.hit_time_limit) {
     const double total = r.found ? r.prefix_cost + r.cycle_cost : kInf;

@@ -13,6 +13,7 @@
 // the first `words` words is a valid hash.
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <cstddef>
 #include <cstdint>
@@ -26,22 +27,38 @@ struct State {
   friend bool operator==(const State&, const State&) = default;
 };
 
-// Bit layout of a system's states.
+// Bit layout of a system's states. Field positions are tabulated by init()
+// (no division on the hot path).
 struct Layout {
   unsigned bits = 1;        // bits per field
   unsigned per_word = 64;   // fields per word
   unsigned num_fields = 0;  // things + 1 (the hand is the last field)
-  unsigned words = 1;       // words in use (1..kStateWords)
+  unsigned words = 1;       // words in use (1..kStateWords); > kStateWords: too many fields
 
+  void init(unsigned field_bits, unsigned fields) {
+    bits = field_bits;
+    per_word = 64 / bits;
+    num_fields = fields;
+    words = (num_fields + per_word - 1) / per_word;
+    mask_ = bits >= 64 ? ~std::uint64_t{0} : ((std::uint64_t{1} << bits) - 1);
+    for (unsigned f = 0; f < word_of_.size(); ++f) {
+      word_of_[f] = static_cast<std::uint8_t>(std::min<unsigned>(f / per_word, kStateWords - 1));
+      shift_of_[f] = static_cast<std::uint8_t>((f % per_word) * bits);
+    }
+  }
   std::uint32_t get(const State& s, unsigned field) const {
-    return static_cast<std::uint32_t>((s.words[field / per_word] >> shift(field)) & mask());
+    return static_cast<std::uint32_t>((s.words[word_of_[field]] >> shift_of_[field]) & mask_);
   }
   void set(State& s, unsigned field, std::uint32_t v) const {
-    std::uint64_t& w = s.words[field / per_word];
-    w = (w & ~(mask() << shift(field))) | (std::uint64_t{v} << shift(field));
+    std::uint64_t& w = s.words[word_of_[field]];
+    w = (w & ~(mask_ << shift_of_[field])) | (std::uint64_t{v} << shift_of_[field]);
   }
-  std::uint64_t mask() const { return bits >= 64 ? ~std::uint64_t{0} : ((std::uint64_t{1} << bits) - 1); }
-  unsigned shift(unsigned field) const { return (field % per_word) * bits; }
+  std::uint64_t mask() const { return mask_; }
+  unsigned shift(unsigned field) const { return shift_of_[field]; }
+
+ private:
+  std::uint64_t mask_ = 1;
+  std::array<std::uint8_t, kStateWords * 64> word_of_{}, shift_of_{};
 };
 
 // Hash of the first `words` words (a multiply-xorshift mix).

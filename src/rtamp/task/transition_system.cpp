@@ -1,5 +1,7 @@
 #include "rtamp/task/transition_system.hpp"
 
+#include <bitset>
+
 #include <algorithm>
 #include <bit>
 #include <cmath>
@@ -46,10 +48,7 @@ System::System(const world::Scenario& scenario, const world::Placement& placemen
   for (const auto& c : scenario_.containers) capacities_.push_back(c.capacity);
 
   // Field width: values 0..num_locations() (home included).
-  layout_.bits = std::max(1u, static_cast<unsigned>(std::bit_width(num_locations())));
-  layout_.per_word = 64 / layout_.bits;
-  layout_.num_fields = num_things() + 1;
-  layout_.words = (layout_.num_fields + layout_.per_word - 1) / layout_.per_word;
+  layout_.init(std::max(1u, static_cast<unsigned>(std::bit_width(num_locations()))), num_things() + 1);
   if (layout_.words > kStateWords)
     throw Error("too many objects and containers for the packed state (" + std::to_string(num_things()) +
                 " things with " + std::to_string(layout_.bits) + "-bit fields; at most " +
@@ -184,7 +183,7 @@ world::Placement System::describe(const State& s) const {
 
 State System::encode(const world::Placement& p, const std::string& hand_location) const {
   State s;
-  std::vector<bool> seen(num_things(), false);
+  std::bitset<kStateWords * 64> seen;  // a thing has at least one bit
   for (const auto& [thing, info] : p.things) {
     const std::string& loc = info.location;
     const int t = find_thing(thing);
