@@ -57,6 +57,7 @@ nlohmann::json stats_json(const plan::SearchStats& s) {
           {"graph_edges", s.graph_edges},
           {"reused_nodes", s.reused_nodes},
           {"reused_path_edges", s.reused_path_edges},
+          {"cache_used", s.cache_used},
           {"cache_hits", s.cache_hits},
           {"cache_misses", s.cache_misses},
           {"memory_bytes", s.memory_bytes},
@@ -101,7 +102,8 @@ void print_result(plan::Planner& p, const plan::PlanResult& r, const std::string
       << s.reused_nodes << " reused, " << s.reused_path_edges << " plan edges reused; graph " << s.graph_nodes << " nodes / " << s.graph_edges << " edges; "
       << fmt(s.seconds * 1e3, 3) << " ms";
   if (s.construction_seconds > 0) out << " (construction " << fmt(s.construction_seconds * 1e3, 3) << " ms)";
-  out << "; cache " << s.cache_hits << " hits / " << s.cache_misses << " misses; memory " << s.memory_bytes
+  if (s.cache_used) out << "; cache " << s.cache_hits << " hits / " << s.cache_misses << " misses";
+  out << "; memory " << s.memory_bytes
       << " B (" << fmt(s.bytes_per_node(), 1) << " B/node)";
   if (s.hit_node_limit) out << "; HIT NODE LIMIT";
   if (s.hit_time_limit) out << "; HIT TIME LIMIT";

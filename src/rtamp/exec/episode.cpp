@@ -233,7 +233,8 @@ EpisodeMetrics run_episode(const world::Scenario& input, const EpisodeOptions& o
       say("plan: " + (listed.empty() ? std::string("nothing to move") : listed));
       emit({{"ev", "plan"}, {"first", first}, {"cost", r.plan.cost()}, {"actions", actions},
             {"seconds", r.stats.seconds}, {"expanded", r.stats.expanded}, {"generated", r.stats.generated},
-            {"cache_hits", r.stats.cache_hits}, {"cache_misses", r.stats.cache_misses}});
+            {"cache_used", r.stats.cache_used}, {"cache_hits", r.stats.cache_hits},
+            {"cache_misses", r.stats.cache_misses}});
       emit({{"ev", "tree"}, {"applied", rep.applied}, {"inserted", rep.inserted}, {"removed", rep.removed},
             {"updated", rep.updated}, {"changes", tree.changes()}});
       if (rep.applied) {
@@ -447,8 +448,10 @@ EpisodeMetrics run_episode(const world::Scenario& input, const EpisodeOptions& o
           break;
         }
         say("replanned in " + std::to_string(r.stats.seconds * 1e6) + " us: " + std::to_string(moves_in(r.plan)) +
-            " moves, cost " + std::to_string(r.plan.cost()) + " (cache hits " + std::to_string(r.stats.cache_hits) +
-            ", misses " + std::to_string(r.stats.cache_misses) + ")");
+            " moves, cost " + std::to_string(r.plan.cost()) +
+            (r.stats.cache_used ? " (cache hits " + std::to_string(r.stats.cache_hits) + ", misses " +
+                                      std::to_string(r.stats.cache_misses) + ")"
+                                : std::string()));
         install(r, false);
         continue;  // the status ticked above belongs to the old tree
       }

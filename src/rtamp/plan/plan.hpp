@@ -52,7 +52,8 @@ struct SearchStats {
   std::uint64_t cycle_searches = 0;   // cycle searches run (cache misses of the cycle table)
   std::uint64_t graph_nodes = 0;      // nodes in the product graph after the query
   std::uint64_t graph_edges = 0;
-  std::uint64_t cache_hits = 0;       // motion-cost cache (astar-exp only)
+  bool cache_used = false;            // the motion-cost cache was consulted (astar-exp, expensive models)
+  std::uint64_t cache_hits = 0;       // motion-cost cache
   std::uint64_t cache_misses = 0;
   std::uint64_t reused_nodes = 0;     // nodes already in the graph when the query started
   std::uint64_t reused_path_edges = 0;  // plan edges taken from an earlier optimal plan (astar-exp)

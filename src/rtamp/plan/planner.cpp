@@ -366,11 +366,12 @@ PlanResult Planner::search(task::System& ts, task::Labeling& lab, bool allow_dia
   res.stats.graph_edges = g->num_edges();
   res.stats.hit_node_limit = hit_node;
   res.stats.hit_time_limit = hit_time;
-  if (exp) {
+  if (exp && model_->expensive()) {
+    res.stats.cache_used = true;
     res.stats.cache_hits = cache_.hits();
     res.stats.cache_misses = cache_.misses();
   }
-  res.stats.memory_bytes = g->memory_bytes() + ls->memory_bytes() + (exp ? cache_.bytes() : 0);
+  res.stats.memory_bytes = g->memory_bytes() + ls->memory_bytes() + (res.stats.cache_used ? cache_.bytes() : 0);
   if (r.found) {
     res.found = true;
     Plan& p = res.plan;
