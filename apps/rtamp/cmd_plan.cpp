@@ -103,6 +103,7 @@ void print_result(plan::Planner& p, const plan::PlanResult& r, const std::string
       << fmt(s.seconds * 1e3, 3) << " ms";
   if (s.construction_seconds > 0) out << " (construction " << fmt(s.construction_seconds * 1e3, 3) << " ms)";
   if (s.cache_used) out << "; cache " << s.cache_hits << " hits / " << s.cache_misses << " misses";
+  else if (s.reused_nodes > 0 || s.reused_path_edges > 0) out << "; no cost cache (closed-form costs)";
   out << "; memory " << s.memory_bytes
       << " B (" << fmt(s.bytes_per_node(), 1) << " B/node)";
   if (s.hit_node_limit) out << "; HIT NODE LIMIT";
