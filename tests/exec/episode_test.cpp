@@ -1,6 +1,7 @@
 // Whole episodes of the reactive loop (Algorithm 1) on the simulated UR5:
 // the scripted demo scenario, an object taken out of the gripper (put back
-// elsewhere, or taken away), and a change that makes the task unsatisfiable.
+// elsewhere, or taken away), a change that makes the task unsatisfiable, and a
+// recurring task that runs until the time limit.
 // Each checks the outcome and that the JSON Lines log is complete: every line
 // parses, it starts with "episode" and ends with "end", and it records the
 // interventions, plans, tree changes and actions.
@@ -12,6 +13,7 @@
 #include <filesystem>
 #include <fstream>
 
+#include "rtamp/world/propositions.hpp"
 #include "rtamp/world/scenario_io.hpp"
 
 namespace rtamp::exec {
@@ -196,6 +198,39 @@ TEST(Episode, UnsatisfiableChangeEndsWithAClearReason) {
   const Log log = read_log(o.log_path);
   expect_complete(log, m);
   EXPECT_FALSE(log.of("no_plan").empty());
+  std::filesystem::remove(o.log_path);
+}
+
+// A recurring task (patrol o1 between r1 and r2) has a plan whose cycle moves
+// the block: the robot keeps going until the time limit, which says why.
+TEST(Episode, RecurringTaskRunsUntilTheTimeLimitAndSaysWhy) {
+  world::Scenario s = world::load_scenario("3-block");
+  for (const char* r : {"r1", "r2"}) {
+    world::Proposition prop;
+    prop.name = std::string("o1_in_") + r;
+    prop.text = std::string("o1 in ") + r;
+    prop.expr = world::parse_prop_expr(prop.text);
+    s.propositions.push_back(prop);
+  }
+  s.task = "G F o1_in_r1 & G F o1_in_r2";
+  s.interventions.clear();
+  EpisodeOptions o = options("patrol");
+  o.max_time = 40;
+  const EpisodeMetrics m = run_episode(s, o);
+  EXPECT_FALSE(m.success);
+  EXPECT_NE(m.reason.find("time limit"), std::string::npos) << m.reason;
+  EXPECT_NE(m.reason.find("recurring task"), std::string::npos) << m.reason;
+  const Log log = read_log(o.log_path);
+  expect_complete(log, m);
+  // o1 went to r2 and back at least once.
+  std::size_t to_r2 = 0, to_r1 = 0;
+  for (const auto& a : log.of("action"))
+    if (a.at("what") == "finished") {
+      if (a.at("action") == "move(o1, r2)") ++to_r2;
+      if (a.at("action") == "move(o1, r1)") ++to_r1;
+    }
+  EXPECT_GE(to_r2, 1u);
+  EXPECT_GE(to_r1, 1u);
   std::filesystem::remove(o.log_path);
 }
 

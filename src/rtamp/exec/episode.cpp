@@ -221,7 +221,10 @@ EpisodeMetrics run_episode(const world::Scenario& input, const EpisodeOptions& o
         lines += "\n    " + std::string(bt::to_string(c->status())) + "  " + c->name();
       say("tree now:" + (lines.empty() ? std::string(" (empty)") : lines));
     };
+    bool recurring = false;  // the installed plan's cycle has moves: the task never finishes
     auto install = [&](const plan::PlanResult& r, bool first) {
+      recurring = std::any_of(r.plan.cycle.begin(), r.plan.cycle.end(),
+                              [](const plan::Step& st) { return !st.action.is_stay(); });
       const auto tuples = planner.action_tuples(r.plan);
       const ReconfigurationReport rep = tree.set_plan(tuples);
       nlohmann::json actions = nlohmann::json::array();
@@ -483,7 +486,10 @@ EpisodeMetrics run_episode(const world::Scenario& input, const EpisodeOptions& o
     }
     if (pending && !pending->result) pending->future.wait();
     tree.tree().halt();  // stop a move still running (logged before the end record)
-    if (!done && m.reason.empty()) m.reason = "time limit (" + std::to_string(opt.max_time) + " s of simulated time)";
+    if (!done && m.reason.empty()) {
+      m.reason = "time limit (" + std::to_string(opt.max_time) + " s of simulated time)";
+      if (recurring) m.reason += " while repeating the plan's cycle: a recurring task never finishes";
+    }
     m.tree_changes = tree.changes();
     m.actions_succeeded = runner.succeeded;
     m.actions_failed = runner.failed;
