@@ -20,6 +20,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <random>
@@ -422,6 +423,15 @@ int main(int argc, char** argv) {
     else if (std::strncmp(argv[i], "--full-max=", 11) == 0) full_max = std::atoi(argv[i] + 11);
     else if (std::strcmp(argv[i], "--full-growth") == 0) full_growth = true;
     else rest.push_back(argv[i]);
+  }
+  if (!dir.empty()) {
+    std::error_code ec;
+    std::filesystem::create_directories(dir, ec);
+    if (ec || !std::ofstream(dir + "/.write-test")) {
+      std::cerr << "plan_bench: cannot write into --csv-dir " << dir << (ec ? ": " + ec.message() : "") << "\n";
+      return 2;
+    }
+    std::filesystem::remove(dir + "/.write-test", ec);
   }
   if (!dir.empty() && full_growth) {
     report_full_growth(dir);
