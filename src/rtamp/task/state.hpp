@@ -35,11 +35,12 @@ struct Layout {
   unsigned num_fields = 0;  // things + 1 (the hand is the last field)
   unsigned words = 1;       // words in use (1..kStateWords); > kStateWords: too many fields
 
+  Layout() { init(1, 0); }
   void init(unsigned field_bits, unsigned fields) {
     bits = field_bits;
     per_word = 64 / bits;
     num_fields = fields;
-    words = (num_fields + per_word - 1) / per_word;
+    words = std::max(1u, (num_fields + per_word - 1) / per_word);
     mask_ = bits >= 64 ? ~std::uint64_t{0} : ((std::uint64_t{1} << bits) - 1);
     for (unsigned f = 0; f < word_of_.size(); ++f) {
       word_of_[f] = static_cast<std::uint8_t>(std::min<unsigned>(f / per_word, kStateWords - 1));
