@@ -360,7 +360,7 @@ PlanResult Planner::search(task::System& ts, task::Labeling& lab, bool allow_dia
     hit_node = r.hit_node_limit;
     hit_time = r.hit_time_limit;
   }
-  res.stats.successor_generations = g->expansions() - exp0 + (options_.graph == GraphConstruction::Full ? 0 : 0);
+  res.stats.successor_generations = g->expansions() - exp0;
   res.stats.generated = g->size() - before;
   res.stats.graph_nodes = g->size();
   res.stats.graph_edges = g->num_edges();
