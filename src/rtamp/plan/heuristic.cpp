@@ -20,6 +20,15 @@ GuardHeuristic::GuardHeuristic(const ProductGraph& g)
   for (std::uint32_t q = 0; q < n; ++q)
     for (const auto& e : ba_->edges[q])
       if (e.dst != q && useful_[e.dst] && !e.guard.is_false()) exits_[q].push_back(e.guard);
+  steps_.resize(n);
+  for (std::uint32_t q = 0; q < n; ++q)
+    if (useful_[q])
+      for (const auto& e : ba_->edges[q])
+        if (useful_[e.dst] && !e.guard.is_false()) steps_[q].push_back({e.dst, e.guard});
+  literal_.assign(2 * std::size_t{lab_->num_atoms()}, 0);
+  literal_stamp_.assign(literal_.size(), 0);
+  walk_d_.resize(n);
+  walk_done_.resize(n);
   scratch_.resize(64);  // per recursion depth; each grows on first use
   points_.resize(64);
   nearest_.assign(ts_->num_regions(), kInf);
@@ -44,6 +53,50 @@ double GuardHeuristic::evaluate(const task::State& s, std::uint32_t q) {
     if (best == 0) break;
   }
   return best;
+}
+
+double GuardHeuristic::cube_bound(const task::State& s, const automata::Cube& cube) {
+  double lb = 0;
+  for (unsigned i = 0; i < lab_->num_atoms(); ++i) {
+    const automata::Letter bit = automata::Letter{1} << i;
+    for (int want = 0; want < 2; ++want) {
+      if (!((want ? cube.pos : cube.neg) & bit)) continue;
+      const std::size_t k = 2 * std::size_t{i} + static_cast<std::size_t>(want);
+      if (literal_stamp_[k] != call_) {
+        literal_stamp_[k] = call_;
+        literal_[k] = literal_bound(s, lab_->root(i), want != 0);
+      }
+      lb = std::max(lb, literal_[k]);
+    }
+  }
+  return lb;
+}
+
+double GuardHeuristic::walk(const task::State& s, std::uint32_t q, std::uint32_t target) {
+  const std::uint32_t n = ba_->num_states();
+  if (!useful_[q] || !useful_[target]) return kInf;
+  if (++call_ == 0) {  // stamps wrapped: forget them all
+    std::fill(literal_stamp_.begin(), literal_stamp_.end(), 0);
+    call_ = 1;
+  }
+  hand_ = ts_->hand_point(s);
+  std::fill(walk_d_.begin(), walk_d_.end(), kInf);
+  std::fill(walk_done_.begin(), walk_done_.end(), 0);
+  // First step out of q (it may return to q), then a minimax Dijkstra.
+  for (const auto& [dst, cube] : steps_[q]) walk_d_[dst] = std::min(walk_d_[dst], cube_bound(s, cube));
+  for (;;) {
+    std::uint32_t u = n;
+    for (std::uint32_t v = 0; v < n; ++v)
+      if (!walk_done_[v] && walk_d_[v] < kInf && (u == n || walk_d_[v] < walk_d_[u])) u = v;
+    if (u == n) return kInf;
+    if (u == target) return walk_d_[u];
+    walk_done_[u] = 1;
+    for (const auto& [dst, cube] : steps_[u]) {
+      if (walk_done_[dst]) continue;
+      const double d = std::max(walk_d_[u], cube_bound(s, cube));
+      if (d < walk_d_[dst]) walk_d_[dst] = d;
+    }
+  }
 }
 
 double GuardHeuristic::bound_in(const task::State& s, unsigned thing, int loc) {
@@ -175,6 +228,8 @@ double GuardHeuristic::literal_bound(const task::State& s, std::uint32_t id, boo
 
 double state_distance_bound(const task::System& ts, const MotionCostModel& model, const task::State& s,
                             const task::State& target) {
+  // The hand is at home only before the first move: no path leads back there.
+  if (ts.hand(target) == ts.home() && ts.hand(s) != ts.home()) return kInf;
   double best = 0;
   const world::Vec3 hand = ts.hand_point(s);
   for (unsigned t = 0; t < ts.num_things(); ++t) {

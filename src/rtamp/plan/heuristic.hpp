@@ -41,6 +41,10 @@ class Heuristic {
   virtual std::string name() const = 0;
   // Lower bound on the cost of the best lasso continuing from node n.
   virtual double estimate(const ProductGraph& g, NodeId n) = 0;
+  // Lower bound on the cost of a path of at least one step from node n to a
+  // node whose automaton state is `target` (the cycle search's way back to
+  // an accepting node). 0 is always correct.
+  virtual double walk_bound(const ProductGraph&, NodeId, std::uint32_t /*target*/) { return 0; }
 };
 
 class ZeroHeuristic final : public Heuristic {
@@ -54,6 +58,14 @@ class GuardHeuristic : public Heuristic {
   explicit GuardHeuristic(const ProductGraph& g);
   std::string name() const override { return "guard"; }
   double estimate(const ProductGraph& g, NodeId n) override { return evaluate(g.state(n), g.ba_state(n)); }
+  double walk_bound(const ProductGraph& g, NodeId n, std::uint32_t target) override {
+    return walk(g.state(n), g.ba_state(n), target);
+  }
+  // Every automaton walk q = q0 -> q1 -> ... -> qk = target (k >= 1, self-loops
+  // included) reads each guard in some TS state on the way, so a path along it
+  // costs at least the largest LB(s, guard); walk() is the smallest such
+  // largest value over all walks (a minimax path over the useful states).
+  double walk(const task::State& s, std::uint32_t q, std::uint32_t target);
   double evaluate(const task::State& s, std::uint32_t q);
   // LB(s, proposition node wanted `want`) — exposed for tests.
   double literal_bound(const task::State& s, std::uint32_t node, bool want);
@@ -71,6 +83,15 @@ class GuardHeuristic : public Heuristic {
   const MotionCostModel* model_;
   std::vector<bool> accepting_;
   std::vector<std::vector<automata::Cube>> exits_;  // per BA state
+  // walk(): the useful edges (self-loops included) per BA state, literal
+  // bounds computed at most once per call (stamped), minimax distances.
+  std::vector<std::vector<std::pair<std::uint32_t, automata::Cube>>> steps_;
+  std::vector<double> literal_;
+  std::vector<std::uint32_t> literal_stamp_;
+  std::uint32_t call_ = 0;
+  std::vector<double> walk_d_;
+  std::vector<std::uint8_t> walk_done_;
+  double cube_bound(const task::State& s, const automata::Cube& cube);
   std::vector<bool> useful_;
   std::vector<std::vector<double>> scratch_;  // per recursion depth
   std::vector<std::vector<world::Vec3>> points_;  // per recursion depth
@@ -85,6 +106,9 @@ class ExperienceHeuristic final : public Heuristic {
   std::string name() const override { return "guard+experience"; }
   // The guard bound is cached per node in the graph (it does not depend on
   // the start), so replans on the same graph never recompute it.
+  double walk_bound(const ProductGraph& g, NodeId n, std::uint32_t target) override {
+    return guard_.walk_bound(g, n, target);
+  }
   double estimate(const ProductGraph& g, NodeId n) override {
     double h = g.cached_h(n);
     if (h < 0) {
@@ -101,7 +125,9 @@ class ExperienceHeuristic final : public Heuristic {
 
 // Lower bound on the cost of going from state s to exactly the state `target`
 // (for the cycle search back to an accepting node): the max over things whose
-// location differs of the model's lower_bound (thing -> its target location).
+// location differs of the model's lower_bound (thing -> its target location);
+// +inf if the target has the hand at home and s does not (the hand is at home
+// only before the first move, so such a target is never reached again).
 // Interchangeable objects (task::System::set_symmetry) are skipped: in
 // canonical states a member's target may be reached by a twin.
 double state_distance_bound(const task::System& ts, const MotionCostModel& model, const task::State& s,

@@ -102,13 +102,14 @@ bool LassoSearch::out_of_budget(const ProductGraph& g, const SearchLimits& limit
   return r.hit_time_limit;
 }
 
-double LassoSearch::cycle(ProductGraph& g, NodeId n, double bound, bool heuristic, const SearchLimits& limits,
+double LassoSearch::cycle(ProductGraph& g, NodeId n, double bound, Heuristic* h, const SearchLimits& limits,
                           std::int64_t deadline_ns, SearchStats& stats, LassoResult& r) {
   const ProductGraph::Cycle known = g.cycle(n);
   if (known.exact) return known.lower < bound ? known.lower : kInf;
   if (known.lower >= bound) return kInf;
   ++stats.cycle_searches;
   const task::State target = g.state(n);
+  const std::uint32_t target_q = g.ba_state(n);
   Space& S = cycle_;
   S.begin(g.size());
   auto relax = [&](NodeId from, std::uint32_t e) {
@@ -119,7 +120,9 @@ double LassoSearch::cycle(ProductGraph& g, NodeId n, double bound, bool heuristi
     if (!S.seen(m)) {
       S.stamp[m] = S.gen;
       S.closed[m] = 0;
-      S.h[m] = (m == n || !heuristic) ? 0.0 : state_distance_bound(g.system(), g.model(), g.state(m), target);
+      S.h[m] = (m == n || !h) ? 0.0
+                              : std::max(state_distance_bound(g.system(), g.model(), g.state(m), target),
+                                         h->walk_bound(g, m, target_q));
     } else if (ng >= S.g[m] - kEps) {
       return;
     }
@@ -171,6 +174,7 @@ double LassoSearch::cycle(ProductGraph& g, NodeId n, double bound, bool heuristi
 LassoResult LassoSearch::run(ProductGraph& g, NodeId init, Heuristic& h, bool cycle_heuristic, bool learn,
                              const SearchLimits& limits, std::int64_t deadline_ns, SearchStats& stats) {
   LassoResult r;
+  Heuristic* const cycle_h = cycle_heuristic ? &h : nullptr;
   Space& S = prefix_;
   S.begin(g.size());
   closed_list_.clear();
@@ -209,7 +213,7 @@ LassoResult LassoSearch::run(ProductGraph& g, NodeId init, Heuristic& h, bool cy
     if (learn && g.solved(n)) continue;
     ++stats.expanded;
     if (g.accepting(n)) {
-      const double c = cycle(g, n, best - S.g[n], cycle_heuristic, limits, deadline_ns, stats, r);
+      const double c = cycle(g, n, best - S.g[n], cycle_h, limits, deadline_ns, stats, r);
       if (r.hit_node_limit || r.hit_time_limit) {
         complete = false;
         break;
@@ -277,7 +281,7 @@ LassoResult LassoSearch::run(ProductGraph& g, NodeId init, Heuristic& h, bool cy
       SearchLimits unlimited;
       unlimited.max_nodes = ~std::size_t{0};
       const double c =
-          cycle(g, acc, best_cycle + 1e-7 * (1 + best_cycle), cycle_heuristic, unlimited, 0, stats, scratch);
+          cycle(g, acc, best_cycle + 1e-7 * (1 + best_cycle), cycle_h, unlimited, 0, stats, scratch);
       g.set_cycle(acc, saved);
       r.cycle_edges = cycle_path_;
       r.cycle_cost = c;

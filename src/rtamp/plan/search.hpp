@@ -10,7 +10,9 @@
 //   2. Whenever an accepting node N is popped, find its cheapest cycle by a
 //      second best-first search from N's successors back to N, pruned at
 //      best - g(N) (only cycles that would improve the incumbent matter; the
-//      heuristic there is state_distance_bound to N's state). Cycle costs do
+//      heuristic there is the max of state_distance_bound to N's state and
+//      Heuristic::walk_bound to N's automaton state; both bound every path
+//      back to N). Cycle costs do
 //      not depend on the start, so they are kept in the graph (exact, or "none
 //      below b") and reused by later queries.
 //   3. Stop when the smallest f in the open list is >= best.
@@ -69,7 +71,7 @@ struct LassoResult {
 class LassoSearch {
  public:
   // `learn`: use and store experience (learned bounds, solved paths) in the graph.
-  // `cycle_heuristic`: use state_distance_bound in cycle searches (else 0).
+  // `cycle_heuristic`: use state_distance_bound and h.walk_bound in cycle searches (else 0).
   LassoResult run(ProductGraph& g, NodeId init, Heuristic& h, bool cycle_heuristic, bool learn,
                   const SearchLimits& limits, std::int64_t deadline_ns, SearchStats& stats);
   std::size_t memory_bytes() const { return prefix_.bytes() + cycle_.bytes(); }
@@ -94,7 +96,8 @@ class LassoSearch {
     std::size_t bytes() const;
   };
   // Cheapest cycle through n below `bound`; kInf if none. Fills cycle_path_ when found.
-  double cycle(ProductGraph& g, NodeId n, double bound, bool heuristic, const SearchLimits& limits,
+  // `h` (null: none) gives the walk bounds back to n's automaton state.
+  double cycle(ProductGraph& g, NodeId n, double bound, Heuristic* h, const SearchLimits& limits,
                std::int64_t deadline_ns, SearchStats& stats, LassoResult& r);
   void drop_loops(const ProductGraph& g, NodeId from, std::vector<std::uint32_t>& edges);
   bool out_of_budget(const ProductGraph& g, const SearchLimits& limits, std::int64_t deadline_ns, LassoResult& r);

@@ -1,0 +1,103 @@
+// How the cost of a cold plan grows with the number of objects and of
+// regions, for four kinds of task (DESIGN.md "Benchmarks"; the figure and
+// table are in docs/benchmarks.md, "Scaling").
+//
+//   BM_PlanScaling/<task>/<M>/<n>   a cold A* plan (partial construction,
+//                                   `euclid`, interchangeable objects merged)
+//                                   on `rtamp gen --regions M --objects n
+//                                   --layout line` with the task below
+//
+// Tasks (every block starts in r1; regions lie on a line 0.5 m apart):
+//   0 reach     F G all_in_r2                       move everything once
+//   1 sequence  F (all_in_r3 & F G all_in_r2)       gather in r3, then settle in r2
+//   2 split     F G (half_in_r2 & half_in_r3)       ceil(n/2) blocks to r2, floor(n/2) to r3
+//   3 patrol    G F all_in_r2 & G F all_in_r3       a cycle that moves everything twice
+// Grids: n = 1..24 at M = 5 (patrol to n = 8) and M = 3..64 at n = 4.
+// Counters: regions, objects, task, generated, expanded, memory_bytes,
+// bytes_per_node, cost. A plan stops at 20 s (reported as an error).
+// Machine-readable output for the plot (scripts/plot-scaling):
+//   build/bench/plan_scaling_bench --benchmark_out_format=csv
+//       --benchmark_out=docs/results/plan-scaling.csv
+#include <benchmark/benchmark.h>
+
+#include <chrono>
+#include <string>
+
+#include "rtamp/plan/planner.hpp"
+#include "rtamp/world/generator.hpp"
+
+namespace {
+
+using namespace rtamp;
+
+const char* kTaskNames[] = {"reach", "sequence", "split", "patrol"};
+
+world::Scenario scaling_scenario(int task, int regions, int objects) {
+  world::GeneratorOptions g;
+  g.regions = regions;
+  g.objects = objects;
+  g.layout = world::GeneratorOptions::Layout::Line;
+  switch (task) {
+    case 0: break;  // F G all_in_r2 (the generator's default)
+    case 1:
+      g.task = "F (all_in_r3 & F G all_in_r2)";
+      g.propositions = {{"all_in_r3", "all block in r3"}};
+      break;
+    case 2:
+      g.task = "F G (half_in_r2 & half_in_r3)";
+      g.propositions = {{"half_in_r2", "count block in r2 >= " + std::to_string((objects + 1) / 2)},
+                        {"half_in_r3", "count block in r3 >= " + std::to_string(objects / 2)}};
+      break;
+    default:
+      g.task = "G F all_in_r2 & G F all_in_r3";
+      g.propositions = {{"all_in_r3", "all block in r3"}};
+  }
+  return world::generate_scenario(g);
+}
+
+void BM_PlanScaling(benchmark::State& state) {
+  const int task = static_cast<int>(state.range(0));
+  const int regions = static_cast<int>(state.range(1));
+  const int objects = static_cast<int>(state.range(2));
+  const world::Scenario scenario = scaling_scenario(task, regions, objects);
+  plan::PlannerOptions o;
+  o.algorithm = plan::Algorithm::AStar;
+  o.cost = "euclid";
+  o.limits.time_limit = 20;
+  o.limits.max_nodes = 40'000'000;
+  plan::PlanResult r;
+  for (auto _ : state) {
+    plan::Planner p(scenario, o);  // translation and TS set-up are not timed
+    (void)p.system();
+    r = p.plan();
+    state.SetIterationTime(r.stats.seconds);
+    if (!r.found) {
+      state.SkipWithError(("no plan: " + r.message).c_str());
+      break;
+    }
+  }
+  state.counters["task"] = task;
+  state.counters["regions"] = regions;
+  state.counters["objects"] = objects;
+  state.counters["generated"] = double(r.stats.generated);
+  state.counters["expanded"] = double(r.stats.expanded);
+  state.counters["memory_bytes"] = double(r.stats.memory_bytes);
+  state.counters["bytes_per_node"] = r.stats.bytes_per_node();
+  state.counters["cost"] = r.found ? r.plan.cost() : -1;
+  state.SetLabel(kTaskNames[task]);
+}
+
+void scaling_grid(benchmark::internal::Benchmark* b) {
+  for (int task = 0; task < 4; ++task) {
+    for (int n : {1, 2, 4, 6, 8, 12, 16, 20, 24}) {
+      if (task == 3 && n > 8) continue;  // the patrol cycle grows fastest
+      b->Args({task, 5, n});
+    }
+    for (int m : {3, 8, 12, 16, 24, 32, 48, 64}) b->Args({task, m, 4});  // M = 5 is in the row above
+  }
+}
+BENCHMARK(BM_PlanScaling)->Apply(scaling_grid)->UseManualTime()->Unit(benchmark::kMillisecond);
+
+}  // namespace
+
+BENCHMARK_MAIN();
