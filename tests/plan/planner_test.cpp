@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include "plan_checks.hpp"
+#include "rtamp/world/generator.hpp"
 #include "rtamp/world/scenario_io.hpp"
 
 namespace {
@@ -157,6 +158,33 @@ TEST(Planner, ReplanAfterAStepFollowsTheSolvedPath) {
   ASSERT_TRUE(rc.found);
   EXPECT_NEAR(next.plan.cost(), rc.plan.cost(), 1e-9);
   EXPECT_EQ(rc.stats.reused_path_edges, 0u);
+}
+
+// Patrolling ("G F all_in_r2 & G F all_in_r3") starts in an accepting
+// automaton state, so the start node is accepting and gets a cycle search.
+// The hand is at home only before the first move, so no cycle returns to the
+// start: A* must see that at once instead of exhausting the product graph
+// (29,639 expansions before; Dijkstra, without the bound, still does).
+TEST(Planner, PatrolFromAnAcceptingStartDoesNotSearchTheWholeGraph) {
+  world::GeneratorOptions g;
+  g.regions = 16;
+  g.objects = 4;
+  g.task = "G F all_in_r2 & G F all_in_r3";
+  g.propositions = {{"all_in_r3", "all block in r3"}};
+  const world::Scenario sc = world::generate_scenario(g);
+  plan::PlannerOptions o;
+  o.algorithm = plan::Algorithm::AStar;
+  plan::Planner astar(sc, o);
+  const auto r = astar.plan();
+  ASSERT_TRUE(r.found);
+  EXPECT_LT(r.stats.expanded, 2000u);
+  o.algorithm = plan::Algorithm::Dijkstra;
+  plan::Planner dijkstra(sc, o);
+  const auto d = dijkstra.plan();
+  ASSERT_TRUE(d.found);
+  EXPECT_GT(d.stats.expanded, 10 * r.stats.expanded);
+  EXPECT_NEAR(r.plan.cost(), d.plan.cost(), 1e-9);
+  EXPECT_NEAR(check_plan(astar, r, "euclid"), r.plan.cost(), 1e-9);
 }
 
 TEST(Planner, NoPlanReasons) {
