@@ -60,44 +60,74 @@ TEST(MotionCostCache, HitsMissesAndForgetting) {
   EXPECT_EQ(c2.misses(), 1u);
 }
 
-// h(start) <= the optimal lasso cost from random reachable states, for every model.
+// Puts the planner in a random state: every thing somewhere legal, the hand
+// anywhere (or at home). Returns the placement and the hand.
+std::pair<world::Placement, std::string> place_randomly(std::mt19937& rng, plan::Planner& p) {
+  const world::Scenario& sc = p.scenario();
+  world::Placement pl = p.placement();
+  std::vector<std::string> regions, locs;
+  for (const auto& r : sc.regions) regions.push_back(r.name);
+  locs = regions;
+  for (const auto& c : sc.containers) locs.push_back(c.name);
+  for (auto& [name, thing] : pl.things) thing.location = thing.container ? regions[rng() % regions.size()] : locs[rng() % locs.size()];
+  const std::string hand = rng() % 3 ? locs[rng() % locs.size()] : "";
+  p.set_placement(pl, hand);
+  return {pl, hand};
+}
+
+// Admissibility against exact distances in the brute-force product (stronger
+// than h <= the optimal lasso cost): h(s, q) <= the cheapest path from (s, q) to a node with a useful
+// accepting BA state, and walk(s, q, t) <= the cheapest path of at least one
+// step to a node with BA state t (what the cycle search uses), for every
+// model, from random states.
 TEST(GuardHeuristic, AdmissibleAgainstBruteForce) {
   const auto formulas = robot_patterns();
-  std::mt19937 rng(5);
-  int checked = 0;
-  for (int trial = 0; trial < 150; ++trial) {
+  std::mt19937 rng(11);
+  int checked = 0, positive = 0;
+  for (int trial = 0; trial < 120; ++trial) {
     const world::Scenario sc = random_scenario(rng, formulas);
     for (const char* model : {"euclid", "region", "unit"}) {
       plan::PlannerOptions opt;
       opt.cost = model;
       plan::Planner p(sc, opt);
-      // A random state: every thing somewhere legal, hand anywhere.
-      world::Placement pl = p.placement();
-      std::vector<std::string> regions, locs;
-      for (const auto& r : sc.regions) regions.push_back(r.name);
-      locs = regions;
-      for (const auto& c : sc.containers) locs.push_back(c.name);
-      for (auto& [name, thing] : pl.things) thing.location = thing.container ? regions[rng() % regions.size()] : locs[rng() % locs.size()];
-      const std::string hand = rng() % 3 ? locs[rng() % locs.size()] : "";
-      p.set_placement(pl, hand);
+      const auto [pl, hand] = place_randomly(rng, p);
       const task::State s = p.state();
       auto model_ptr = plan::make_cost_model(model);
       plan::ProductGraph g(p.system(), p.labeling(), p.automaton(), *model_ptr, nullptr);
       plan::GuardHeuristic h(g);
-      for (std::uint32_t q = 0; q < p.automaton().num_states(); ++q) {
+      const std::uint32_t nq = p.automaton().num_states();
+      for (std::uint32_t q = 0; q < nq; ++q) {
         if (!g.useful(q)) continue;
         automata::Automaton ba = p.automaton();
         ba.initial = q;
-        const auto best = oracle::min_lasso(p.scenario(), pl, hand, ba, model);
+        const oracle::Product prod(p.scenario(), pl, hand, ba, model);
+        const auto d0 = prod.dijkstra(0, false);
+        const auto d1 = prod.dijkstra(0, true);
+        double to_acc = INFINITY;
+        std::vector<double> to_q(nq, INFINITY);
+        for (std::size_t n = 0; n < prod.nodes.size(); ++n) {
+          const std::uint32_t qn = prod.nodes[n].q;
+          if (ba.is_accepting_state(qn) && g.useful(qn)) to_acc = std::min(to_acc, d0[n]);
+          to_q[qn] = std::min(to_q[qn], d1[n]);
+        }
         const double est = h.evaluate(s, q);
-        if (best) {
-          EXPECT_LE(est, *best + 1e-9) << sc.task << " q=" << q << " model " << model;
+        if (to_acc < INFINITY) {
+          EXPECT_LE(est, to_acc + 1e-9) << sc.task << " q=" << q << " model " << model;
           ++checked;
+          positive += est > 0;
+        }
+        for (std::uint32_t t = 0; t < nq; ++t) {
+          if (!g.useful(t) || to_q[t] == INFINITY) continue;
+          const double w = h.walk(s, q, t);
+          EXPECT_LE(w, to_q[t] + 1e-9) << sc.task << " q=" << q << " -> " << t << " model " << model;
+          ++checked;
+          positive += w > 0;
         }
       }
     }
   }
-  EXPECT_GT(checked, 300);
+  EXPECT_GT(checked, 1000);
+  EXPECT_GT(positive, 100);  // the bounds are not trivially 0
 }
 
 }  // namespace

@@ -160,54 +160,58 @@ inline St start(const World& w, const rtamp::world::Placement& p, const std::str
   return s;
 }
 
-// Minimum lasso cost, or nullopt if there is none. With `symmetry`, states
-// that differ by a permutation of interchangeable objects are one node (the
-// quotient the planner searches).
-inline std::optional<double> min_lasso(const rtamp::world::Scenario& sc, const rtamp::world::Placement& p,
-                                       const std::string& hand, const rtamp::automata::Automaton& ba,
-                                       const std::string& model, bool symmetry = true) {
-  World w(sc);
-  if (symmetry) w.find_groups(ba.atoms);
+// The product graph of (TS, BA) from a start, built by brute force.
+// With `symmetry`, states that differ by a permutation of interchangeable
+// objects are one node (the quotient the planner searches). Node 0 is the start.
+struct Product {
   struct Node {
     St s;
     std::uint32_t q;
   };
   std::vector<Node> nodes;
-  std::map<std::pair<std::vector<int>, std::pair<int, std::uint32_t>>, int> index;
   std::vector<std::vector<std::pair<int, double>>> adj;
-  auto id = [&](const St& s0, std::uint32_t q) {
-    const St s = canonical(w, s0);
-    auto key = std::make_pair(s.loc, std::make_pair(s.hand, q));
-    auto it = index.find(key);
-    if (it != index.end()) return it->second;
-    const int n = static_cast<int>(nodes.size());
-    index.emplace(key, n);
-    nodes.push_back({s, q});
-    adj.emplace_back();
-    return n;
-  };
-  id(start(w, p, hand), ba.initial);
-  for (std::size_t n = 0; n < nodes.size(); ++n) {
-    const St s = nodes[n].s;
-    const std::uint32_t q = nodes[n].q;
-    const auto l = label(w, s, ba);
-    for (const auto& e : ba.edges[q]) {
-      if (!e.guard.matches(l)) continue;
-      const int a = id(s, e.dst);
-      adj[n].emplace_back(a, 0.0);
-      for (auto [t, to] : moves(w, s)) {
-        St s2 = s;
-        const double c = move_cost(w, s, t, to, model);
-        s2.loc[static_cast<std::size_t>(t)] = to;
-        s2.hand = to;
-        const int b = id(s2, e.dst);
-        adj[n].emplace_back(b, c);
+
+  Product(const rtamp::world::Scenario& sc, const rtamp::world::Placement& p, const std::string& hand,
+          const rtamp::automata::Automaton& ba, const std::string& model, bool symmetry = true) {
+    World w(sc);
+    if (symmetry) w.find_groups(ba.atoms);
+    std::map<std::pair<std::vector<int>, std::pair<int, std::uint32_t>>, int> index;
+    auto id = [&](const St& s0, std::uint32_t q) {
+      const St s = canonical(w, s0);
+      auto key = std::make_pair(s.loc, std::make_pair(s.hand, q));
+      auto it = index.find(key);
+      if (it != index.end()) return it->second;
+      const int n = static_cast<int>(nodes.size());
+      index.emplace(key, n);
+      nodes.push_back({s, q});
+      adj.emplace_back();
+      return n;
+    };
+    id(start(w, p, hand), ba.initial);
+    for (std::size_t n = 0; n < nodes.size(); ++n) {
+      const St s = nodes[n].s;
+      const std::uint32_t q = nodes[n].q;
+      const auto l = label(w, s, ba);
+      for (const auto& e : ba.edges[q]) {
+        if (!e.guard.matches(l)) continue;
+        const int a = id(s, e.dst);
+        adj[n].emplace_back(a, 0.0);
+        for (auto [t, to] : moves(w, s)) {
+          St s2 = s;
+          const double c = move_cost(w, s, t, to, model);
+          s2.loc[static_cast<std::size_t>(t)] = to;
+          s2.hand = to;
+          const int b = id(s2, e.dst);
+          adj[n].emplace_back(b, c);
+        }
       }
     }
   }
-  const std::size_t N = nodes.size();
-  auto dijkstra = [&](int src, bool skip_src) {
-    std::vector<double> d(N, INFINITY);
+
+  // Distances from src; with skip_src, paths of at least one step (src's own
+  // entry is then the cheapest cycle through it).
+  std::vector<double> dijkstra(int src, bool skip_src) const {
+    std::vector<double> d(nodes.size(), INFINITY);
     using QI = std::pair<double, int>;
     std::priority_queue<QI, std::vector<QI>, std::greater<QI>> pq;
     if (skip_src) {
@@ -232,16 +236,24 @@ inline std::optional<double> min_lasso(const rtamp::world::Scenario& sc, const r
         }
     }
     return d;
-  };
-  const auto d0 = dijkstra(0, false);
+  }
+};
+
+// Minimum lasso cost, or nullopt if there is none.
+inline std::optional<double> min_lasso(const rtamp::world::Scenario& sc, const rtamp::world::Placement& p,
+                                       const std::string& hand, const rtamp::automata::Automaton& ba,
+                                       const std::string& model, bool symmetry = true) {
+  const Product g(sc, p, hand, ba, model, symmetry);
+  const std::size_t N = g.nodes.size();
+  const auto d0 = g.dijkstra(0, false);
   std::vector<int> acc;
   for (std::size_t n = 0; n < N; ++n)
-    if (ba.is_accepting_state(nodes[n].q) && d0[n] < INFINITY) acc.push_back(static_cast<int>(n));
+    if (ba.is_accepting_state(g.nodes[n].q) && d0[n] < INFINITY) acc.push_back(static_cast<int>(n));
   std::sort(acc.begin(), acc.end(), [&](int a, int b) { return d0[static_cast<std::size_t>(a)] < d0[static_cast<std::size_t>(b)]; });
   double best = INFINITY;
   for (int n : acc) {
     if (d0[static_cast<std::size_t>(n)] >= best) break;
-    const auto dc = dijkstra(n, true);
+    const auto dc = g.dijkstra(n, true);
     best = std::min(best, d0[static_cast<std::size_t>(n)] + dc[static_cast<std::size_t>(n)]);
   }
   if (best == INFINITY) return std::nullopt;

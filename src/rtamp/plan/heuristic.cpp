@@ -20,6 +20,10 @@ GuardHeuristic::GuardHeuristic(const ProductGraph& g)
   for (std::uint32_t q = 0; q < n; ++q)
     for (const auto& e : ba_->edges[q])
       if (e.dst != q && useful_[e.dst] && !e.guard.is_false()) exits_[q].push_back(e.guard);
+  direct_.assign(n, true);
+  for (std::uint32_t q = 0; q < n; ++q)
+    for (const auto& e : ba_->edges[q])
+      if (e.dst != q && useful_[e.dst] && !e.guard.is_false() && !accepting_[e.dst]) direct_[q] = false;
   steps_.resize(n);
   for (std::uint32_t q = 0; q < n; ++q)
     if (useful_[q])
@@ -40,6 +44,8 @@ GuardHeuristic::GuardHeuristic(const ProductGraph& g)
 double GuardHeuristic::evaluate(const task::State& s, std::uint32_t q) {
   if (!useful_[q]) return kInf;
   if (accepting_[q]) return 0;
+  if (!direct_[q]) return walk(s, q, kAnyAccepting);
+  // Every exit of q enters an accepting state: the walk bound is the cheapest exit.
   hand_ = ts_->hand_point(s);
   double best = kInf;
   for (const auto& cube : exits_[q]) {
@@ -74,7 +80,7 @@ double GuardHeuristic::cube_bound(const task::State& s, const automata::Cube& cu
 
 double GuardHeuristic::walk(const task::State& s, std::uint32_t q, std::uint32_t target) {
   const std::uint32_t n = ba_->num_states();
-  if (!useful_[q] || !useful_[target]) return kInf;
+  if (!useful_[q] || (target != kAnyAccepting && !useful_[target])) return kInf;
   if (++call_ == 0) {  // stamps wrapped: forget them all
     std::fill(literal_stamp_.begin(), literal_stamp_.end(), 0);
     call_ = 1;
@@ -89,7 +95,7 @@ double GuardHeuristic::walk(const task::State& s, std::uint32_t q, std::uint32_t
     for (std::uint32_t v = 0; v < n; ++v)
       if (!walk_done_[v] && walk_d_[v] < kInf && (u == n || walk_d_[v] < walk_d_[u])) u = v;
     if (u == n) return kInf;
-    if (u == target) return walk_d_[u];
+    if (u == target || (target == kAnyAccepting && accepting_[u])) return walk_d_[u];
     walk_done_[u] = 1;
     for (const auto& [dst, cube] : steps_[u]) {
       if (walk_done_[dst]) continue;

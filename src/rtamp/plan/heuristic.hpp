@@ -4,11 +4,16 @@
 //
 // GuardHeuristic, h(s, q), a lower bound on the cost from (s, q) to an
 // accepting product node:
-//   0 if q is accepting; otherwise every path to acceptance must leave q along
-//   some BA edge q -> q' (q' != q, q' useful) whose guard holds in the label of
-//   a TS state on the way, so
-//   h(s, q) = min over those edges of LB(s, guard), and
+//   0 if q is accepting; otherwise every path to acceptance follows some walk
+//   q -> q1 -> ... -> qk (qk accepting, all useful) of the BA, each of whose
+//   guards holds in the label of a TS state on the way, so the path costs at
+//   least the largest LB(s, guard) of its walk, and
+//   h(s, q) = min over those walks of max over their guards of LB(s, guard)
+//   (a minimax path over the BA states, `walk`; when every exit of q enters
+//   an accepting state it is the cheapest exit), with
 //   LB(s, cube) = max over the cube's literals of LB(s, literal).
+//   The same walk bound towards one BA state (walk_bound) bounds the cycle
+//   search's way back to an accepting node.
 // LB(s, proposition wanted true/false) walks the compiled PropExpr: And takes
 // the max (every conjunct must hold), Or the min, Not flips the wanted value;
 // an atom that already has the wanted value costs 0; otherwise the things that
@@ -65,6 +70,8 @@ class GuardHeuristic : public Heuristic {
   // included) reads each guard in some TS state on the way, so a path along it
   // costs at least the largest LB(s, guard); walk() is the smallest such
   // largest value over all walks (a minimax path over the useful states).
+  // target = kAnyAccepting: the walk may end in any accepting state.
+  static constexpr std::uint32_t kAnyAccepting = ~std::uint32_t{0};
   double walk(const task::State& s, std::uint32_t q, std::uint32_t target);
   double evaluate(const task::State& s, std::uint32_t q);
   // LB(s, proposition node wanted `want`) — exposed for tests.
@@ -82,7 +89,8 @@ class GuardHeuristic : public Heuristic {
   const automata::Automaton* ba_;
   const MotionCostModel* model_;
   std::vector<bool> accepting_;
-  std::vector<std::vector<automata::Cube>> exits_;  // per BA state
+  std::vector<std::vector<automata::Cube>> exits_;  // per BA state: guards of the edges to other useful states
+  std::vector<bool> direct_;  // every exit of the state enters an accepting state (walk = cheapest exit)
   // walk(): the useful edges (self-loops included) per BA state, literal
   // bounds computed at most once per call (stamped), minimax distances.
   std::vector<std::vector<std::pair<std::uint32_t, automata::Cube>>> steps_;
