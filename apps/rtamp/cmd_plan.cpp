@@ -1,6 +1,8 @@
 // rtamp plan — plan for a scenario's LTL task (plan/planner.hpp), optionally
 // replanning after scripted changes, and print the plans and search
 // statistics readably or as one JSON object (documented in docs/cli.md).
+#include <unistd.h>
+
 #include <cstdio>
 #include <iomanip>
 #include <iostream>
@@ -24,6 +26,7 @@ struct PlanArgs {
   std::string cost = "euclid";
   std::vector<std::string> changes;
   bool json = false;
+  bool no_progress = false;
   std::size_t max_nodes = 20'000'000;
   double time_limit = 60;
 };
@@ -117,6 +120,30 @@ plan::Algorithm parse_algo(const std::string& s) {
   return plan::Algorithm::AStarExperience;
 }
 
+// A one-line report on stderr while a query runs longer than half a second
+// (SearchLimits::on_progress), rewritten in place and cleared when it ends.
+struct ProgressLine {
+  bool shown = false;
+  void operator()(const plan::SearchProgress& p) {
+    std::ostringstream line;
+    line << std::fixed;
+    if (std::string(p.phase) == "constructing") {
+      line << "constructing the full product graph: " << p.graph_nodes << " nodes";
+    } else {
+      line << "searching: " << p.graph_nodes << " nodes, " << p.expanded << " expanded, ";
+      if (p.best < plan::kInf) line << std::setprecision(4) << "best lasso so far " << p.best;
+      else line << std::setprecision(4) << "no lasso yet, optimum >= " << p.bound;
+    }
+    line << std::setprecision(1) << ", " << p.seconds << " s";
+    std::cerr << "\r" << line.str() << "\x1b[K" << std::flush;
+    shown = true;
+  }
+  void clear() {
+    if (shown) std::cerr << "\r\x1b[K" << std::flush;
+    shown = false;
+  }
+};
+
 rtamp::cli::Registrar reg{
     "plan", "Plan for a scenario's LTL task (minimum motion cost lasso), optionally replanning after changes",
     [](CLI::App& sub) -> rtamp::cli::Action {
@@ -141,6 +168,8 @@ rtamp::cli::Registrar reg{
       sub.add_flag("--json", a->json, "Print one JSON object (fields: docs/cli.md)");
       sub.add_option("--max-nodes", a->max_nodes, "Node limit of each search")->capture_default_str();
       sub.add_option("--time-limit", a->time_limit, "Time limit of each search, seconds")->capture_default_str();
+      sub.add_flag("--no-progress", a->no_progress,
+                   "Do not show the progress line that searches longer than 0.5 s print on a terminal's stderr");
       return [a]() -> int {
         std::vector<plan::Change> changes;
         for (const auto& c : a->changes) changes.push_back(plan::Change::parse(c));
@@ -150,6 +179,9 @@ rtamp::cli::Registrar reg{
         opt.cost = a->cost;
         opt.limits.max_nodes = a->max_nodes;
         opt.limits.time_limit = a->time_limit;
+        auto progress = std::make_shared<ProgressLine>();
+        if (!a->no_progress && ::isatty(STDERR_FILENO))
+          opt.limits.on_progress = [progress](const plan::SearchProgress& p) { (*progress)(p); };
         world::Scenario scenario = world::load_scenario(a->scenario);
         if (a->cost == "ik") opt.model = std::make_shared<robot::IkMotionCost>(robot::IkMotionCost::params_for(scenario));
         plan::Planner planner(std::move(scenario), opt);
@@ -171,6 +203,7 @@ rtamp::cli::Registrar reg{
         for (std::size_t i = 0; i <= changes.size(); ++i) {
           if (i > 0) planner.apply(changes[i - 1]);
           const plan::PlanResult r = planner.plan();
+          progress->clear();
           all_found = all_found && r.found;
           if (a->json) {
             nlohmann::json j;

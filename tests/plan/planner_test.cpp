@@ -160,18 +160,23 @@ TEST(Planner, ReplanAfterAStepFollowsTheSolvedPath) {
   EXPECT_EQ(rc.stats.reused_path_edges, 0u);
 }
 
+// `rtamp gen --regions M --objects n` with the patrolling task.
+world::Scenario patrol_scenario(int regions, int objects) {
+  world::GeneratorOptions g;
+  g.regions = regions;
+  g.objects = objects;
+  g.task = "G F all_in_r2 & G F all_in_r3";
+  g.propositions = {{"all_in_r3", "all block in r3"}};
+  return world::generate_scenario(g);
+}
+
 // Patrolling ("G F all_in_r2 & G F all_in_r3") starts in an accepting
 // automaton state, so the start node is accepting and gets a cycle search.
 // The hand is at home only before the first move, so no cycle returns to the
 // start: A* must see that at once instead of exhausting the product graph
 // (29,639 expansions before; Dijkstra, without the bound, still does).
 TEST(Planner, PatrolFromAnAcceptingStartDoesNotSearchTheWholeGraph) {
-  world::GeneratorOptions g;
-  g.regions = 16;
-  g.objects = 4;
-  g.task = "G F all_in_r2 & G F all_in_r3";
-  g.propositions = {{"all_in_r3", "all block in r3"}};
-  const world::Scenario sc = world::generate_scenario(g);
+  const world::Scenario sc = patrol_scenario(16, 4);
   plan::PlannerOptions o;
   o.algorithm = plan::Algorithm::AStar;
   plan::Planner astar(sc, o);
@@ -185,6 +190,51 @@ TEST(Planner, PatrolFromAnAcceptingStartDoesNotSearchTheWholeGraph) {
   EXPECT_GT(d.stats.expanded, 10 * r.stats.expanded);
   EXPECT_NEAR(r.plan.cost(), d.plan.cost(), 1e-9);
   EXPECT_NEAR(check_plan(astar, r, "euclid"), r.plan.cost(), 1e-9);
+}
+
+// Long queries report progress (SearchLimits::on_progress); with interval 0
+// every clock check reports. Reports of one query grow monotonically, the
+// search is not changed by them, and full construction reports its phase.
+TEST(Planner, ReportsProgressDuringLongQueries) {
+  const world::Scenario sc = patrol_scenario(5, 8);
+  for (auto graph : {plan::GraphConstruction::Partial, plan::GraphConstruction::Full}) {
+    plan::PlannerOptions o;
+    o.algorithm = plan::Algorithm::AStar;
+    o.graph = graph;
+    plan::Planner quiet(sc, o);
+    const auto r0 = quiet.plan();
+    ASSERT_TRUE(r0.found);
+    std::vector<plan::SearchProgress> reports;
+    o.limits.progress_interval = 0;
+    o.limits.on_progress = [&](const plan::SearchProgress& p) { reports.push_back(p); };
+    plan::Planner loud(sc, o);
+    const auto r = loud.plan();
+    ASSERT_TRUE(r.found);
+    EXPECT_EQ(r.stats.expanded, r0.stats.expanded);
+    EXPECT_NEAR(r.plan.cost(), r0.plan.cost(), 1e-9);
+    ASSERT_GE(reports.size(), 5u);
+    bool constructing = false, searching = false;
+    for (std::size_t i = 0; i < reports.size(); ++i) {
+      const auto& p = reports[i];
+      const std::string phase = p.phase;
+      constructing = constructing || phase == "constructing";
+      searching = searching || phase == "searching";
+      EXPECT_LE(p.graph_nodes, r.stats.graph_nodes);
+      EXPECT_LE(p.expanded, r.stats.expanded);
+      if (p.best < plan::kInf) {
+        EXPECT_GE(p.best, r.plan.cost() - 1e-9);
+      }
+      if (i > 0) {
+        EXPECT_GE(p.seconds, reports[i - 1].seconds);
+        EXPECT_GE(p.graph_nodes, reports[i - 1].graph_nodes);
+        if (phase == reports[i - 1].phase) {
+          EXPECT_GE(p.expanded, reports[i - 1].expanded);
+        }
+      }
+    }
+    EXPECT_TRUE(searching);
+    EXPECT_EQ(constructing, graph == plan::GraphConstruction::Full);
+  }
 }
 
 TEST(Planner, NoPlanReasons) {

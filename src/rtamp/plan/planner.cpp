@@ -334,7 +334,20 @@ PlanResult Planner::search(task::System& ts, task::Labeling& lab, bool allow_dia
   bool hit_node = false, hit_time = false;
   if (options_.graph == GraphConstruction::Full) {
     const std::int64_t c0 = steady_now_ns();
-    if (!g->expand_all(init, options_.limits.max_nodes, deadline)) {
+    std::function<void(std::int64_t)> tick;
+    if (options_.limits.on_progress) {
+      std::int64_t next = c0 + static_cast<std::int64_t>(options_.limits.progress_interval * 1e9);
+      tick = [&, next](std::int64_t now) mutable {
+        if (now < next) return;
+        next = now + static_cast<std::int64_t>(options_.limits.progress_interval * 1e9);
+        SearchProgress p;
+        p.phase = "constructing";
+        p.graph_nodes = g->size();
+        p.seconds = double(now - t0) * 1e-9;
+        options_.limits.on_progress(p);
+      };
+    }
+    if (!g->expand_all(init, options_.limits.max_nodes, deadline, tick)) {
       if (g->size() >= options_.limits.max_nodes) hit_node = true;
       else hit_time = true;
     }
@@ -356,7 +369,15 @@ PlanResult Planner::search(task::System& ts, task::Labeling& lab, bool allow_dia
       hp = h.get();
     }
     const bool astar = options_.algorithm != Algorithm::Dijkstra;
-    r = ls->run(*g, init, *hp, astar, exp, options_.limits, deadline, res.stats);
+    SearchLimits limits = options_.limits;
+    if (limits.on_progress) {  // the search counts from its own start; report from the query's
+      const double offset = double(steady_now_ns() - t0) * 1e-9;
+      limits.on_progress = [this, offset](SearchProgress p) {
+        p.seconds += offset;
+        options_.limits.on_progress(p);
+      };
+    }
+    r = ls->run(*g, init, *hp, astar, exp, limits, deadline, res.stats);
     hit_node = r.hit_node_limit;
     hit_time = r.hit_time_limit;
   }

@@ -132,7 +132,8 @@ void ProductGraph::expand(NodeId n) {
   edge_end_[n] = static_cast<std::uint32_t>(edges_.size());
 }
 
-bool ProductGraph::expand_all(NodeId from, std::size_t max_nodes, std::int64_t deadline_ns) {
+bool ProductGraph::expand_all(NodeId from, std::size_t max_nodes, std::int64_t deadline_ns,
+                              const std::function<void(std::int64_t now_ns)>& tick) {
   std::vector<NodeId> queue{from};
   std::vector<bool> queued;
   queued.resize(size(), false);
@@ -149,7 +150,11 @@ bool ProductGraph::expand_all(NodeId from, std::size_t max_nodes, std::int64_t d
       }
     }
     if (size() >= max_nodes) return false;
-    if (deadline_ns && (head & 255) == 0 && now_ns() > deadline_ns) return false;
+    if ((deadline_ns || tick) && (head & 255) == 0) {
+      const std::int64_t now = now_ns();
+      if (deadline_ns && now > deadline_ns) return false;
+      if (tick) tick(now);
+    }
   }
   return true;
 }

@@ -20,6 +20,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <limits>
 #include <vector>
 
@@ -78,8 +79,10 @@ class ProductGraph {
 
   // Full construction: expands every node reachable from `from`. Returns false
   // if it stopped because size() reached max_nodes or the deadline passed
-  // (deadline_ns: steady_clock nanoseconds; 0 = none).
-  bool expand_all(NodeId from, std::size_t max_nodes, std::int64_t deadline_ns);
+  // (deadline_ns: steady_clock nanoseconds; 0 = none). `tick`, if given, is
+  // called every 256 expansions with the current time (for progress reports).
+  bool expand_all(NodeId from, std::size_t max_nodes, std::int64_t deadline_ns,
+                  const std::function<void(std::int64_t now_ns)>& tick = {});
 
   // Per-node experience (Section III.C): a learned lower bound on the cost of
   // the best lasso from the node, and the minimum cycle cost through it

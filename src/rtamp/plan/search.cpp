@@ -90,14 +90,27 @@ void LassoSearch::drop_loops(const ProductGraph& g, NodeId from, std::vector<std
 }
 
 bool LassoSearch::out_of_budget(const ProductGraph& g, const SearchLimits& limits, std::int64_t deadline_ns,
-                                LassoResult& r) {
+                                const SearchStats& stats, LassoResult& r) {
   if (g.size() > limits.max_nodes) {
     r.hit_node_limit = true;
     return true;
   }
-  if (deadline_ns && (++ticks_ & 127) == 0 && steady_now_ns() > deadline_ns) {
-    r.hit_time_limit = true;
-    return true;
+  if ((deadline_ns || limits.on_progress) && (++ticks_ & 127) == 0) {
+    const std::int64_t now = steady_now_ns();
+    if (deadline_ns && now > deadline_ns) {
+      r.hit_time_limit = true;
+      return true;
+    }
+    if (limits.on_progress && now >= next_progress_ns_) {
+      next_progress_ns_ = now + static_cast<std::int64_t>(limits.progress_interval * 1e9);
+      SearchProgress p;
+      p.graph_nodes = g.size();
+      p.expanded = stats.expanded;
+      p.best = progress_best_;
+      p.bound = progress_bound_;
+      p.seconds = double(now - start_ns_) * 1e-9;
+      limits.on_progress(p);
+    }
   }
   return r.hit_time_limit;
 }
@@ -154,7 +167,7 @@ double LassoSearch::cycle(ProductGraph& g, NodeId n, double bound, Heuristic* h,
       ++stats.successor_generations;
     }
     for (std::uint32_t e = g.edge_begin(it.n); e < g.edge_end(it.n); ++e) relax(it.n, e);
-    if (out_of_budget(g, limits, deadline_ns, r)) return kInf;
+    if (out_of_budget(g, limits, deadline_ns, stats, r)) return kInf;
   }
   if (found < kInf) {
     g.set_cycle(n, {found, true});
@@ -175,6 +188,10 @@ LassoResult LassoSearch::run(ProductGraph& g, NodeId init, Heuristic& h, bool cy
                              const SearchLimits& limits, std::int64_t deadline_ns, SearchStats& stats) {
   LassoResult r;
   Heuristic* const cycle_h = cycle_heuristic ? &h : nullptr;
+  start_ns_ = steady_now_ns();
+  next_progress_ns_ = start_ns_ + static_cast<std::int64_t>(limits.progress_interval * 1e9);
+  progress_best_ = kInf;
+  progress_bound_ = 0;
   Space& S = prefix_;
   S.begin(g.size());
   closed_list_.clear();
@@ -209,6 +226,7 @@ LassoResult LassoSearch::run(ProductGraph& g, NodeId init, Heuristic& h, bool cy
     if (S.closed[n]) continue;
     S.closed[n] = 1;
     closed_list_.push_back(n);
+    progress_bound_ = it.f;
     // Nothing through a solved node beats the lasso it already offered.
     if (learn && g.solved(n)) continue;
     ++stats.expanded;
@@ -248,7 +266,8 @@ LassoResult LassoSearch::run(ProductGraph& g, NodeId init, Heuristic& h, bool cy
       if (S.h[m] < kInf) S.push({ng + S.h[m], ng, m});
       offer_solved(m, ng);
     }
-    if (out_of_budget(g, limits, deadline_ns, r)) {
+    progress_best_ = best;
+    if (out_of_budget(g, limits, deadline_ns, stats, r)) {
       complete = false;
       break;
     }

@@ -42,6 +42,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 #include "rtamp/plan/heuristic.hpp"
@@ -55,9 +56,24 @@ enum class GraphConstruction { Partial, Full };
 const char* to_string(Algorithm a);
 const char* to_string(GraphConstruction g);
 
+// What a long query reports while it runs (SearchLimits::on_progress).
+struct SearchProgress {
+  const char* phase = "searching";  // or "constructing" (the full graph, before the search)
+  std::uint64_t graph_nodes = 0;    // product nodes in the graph so far
+  std::uint64_t expanded = 0;       // expansions of this query so far
+  double best = kInf;               // cost of the best lasso found so far (kInf: none yet)
+  double bound = 0;                 // f of the last node the prefix search took (a lower bound
+                                    // on the optimum while no better lasso is known)
+  double seconds = 0;               // since the query started
+};
+
 struct SearchLimits {
   std::size_t max_nodes = 20'000'000;  // product nodes in the graph
   double time_limit = 60;              // seconds; <= 0: none
+  // Called about every `progress_interval` seconds while a query runs (never
+  // if it ends sooner), from the planning thread; it must not use the planner.
+  std::function<void(const SearchProgress&)> on_progress;
+  double progress_interval = 0.5;
 };
 
 struct LassoResult {
@@ -100,13 +116,17 @@ class LassoSearch {
   double cycle(ProductGraph& g, NodeId n, double bound, Heuristic* h, const SearchLimits& limits,
                std::int64_t deadline_ns, SearchStats& stats, LassoResult& r);
   void drop_loops(const ProductGraph& g, NodeId from, std::vector<std::uint32_t>& edges);
-  bool out_of_budget(const ProductGraph& g, const SearchLimits& limits, std::int64_t deadline_ns, LassoResult& r);
+  // Node and time limits; reports progress. Checks the clock every 128 calls.
+  bool out_of_budget(const ProductGraph& g, const SearchLimits& limits, std::int64_t deadline_ns,
+                     const SearchStats& stats, LassoResult& r);
 
   Space prefix_, cycle_;
   std::vector<NodeId> closed_list_;
   std::vector<std::uint32_t> cycle_path_;
   std::vector<NodeId> path_nodes_;
   std::uint64_t ticks_ = 0;
+  std::int64_t start_ns_ = 0, next_progress_ns_ = 0;
+  double progress_best_ = kInf, progress_bound_ = 0;
 };
 
 std::int64_t steady_now_ns();
