@@ -33,6 +33,11 @@ GuardHeuristic::GuardHeuristic(const ProductGraph& g)
   literal_stamp_.assign(literal_.size(), 0);
   walk_d_.resize(n);
   walk_done_.resize(n);
+  if (ts_->num_containers() == 0) {  // ChainBound needs one thing per move
+    chain_ = std::make_unique<ChainBound>(*ts_, *lab_, *ba_, *model_, useful_);
+    if (chain_->enabled()) chain_first_.resize(chain_->forcing_cubes().size());
+    else chain_.reset();
+  }
   scratch_.resize(64);  // per recursion depth; each grows on first use
   points_.resize(64);
   nearest_.assign(ts_->num_regions(), kInf);
@@ -43,22 +48,30 @@ GuardHeuristic::GuardHeuristic(const ProductGraph& g)
 
 double GuardHeuristic::evaluate(const task::State& s, std::uint32_t q) {
   if (!useful_[q]) return kInf;
-  if (accepting_[q]) return 0;
-  if (!direct_[q]) return walk(s, q, kAnyAccepting);
-  // Every exit of q enters an accepting state: the walk bound is the cheapest exit.
-  hand_ = ts_->hand_point(s);
-  double best = kInf;
-  for (const auto& cube : exits_[q]) {
-    double lb = 0;
-    for (unsigned i = 0; i < lab_->num_atoms() && lb < best; ++i) {
-      const automata::Letter bit = automata::Letter{1} << i;
-      if (cube.pos & bit) lb = std::max(lb, literal_bound(s, lab_->root(i), true));
-      if (cube.neg & bit) lb = std::max(lb, literal_bound(s, lab_->root(i), false));
+  begin_call(s);  // literal bounds are shared by the walk and the chain bound
+  double h = 0;
+  if (!accepting_[q]) {
+    if (direct_[q]) {  // every exit of q enters an accepting state: the cheapest exit
+      h = kInf;
+      for (const auto& cube : exits_[q]) h = std::min(h, cube_bound(s, cube));
+    } else {
+      h = walk_from(s, q, kAnyAccepting);
     }
-    best = std::min(best, lb);
-    if (best == 0) break;
   }
-  return best;
+  if (chain_ && h < kInf) {
+    const auto& cubes = chain_->forcing_cubes();
+    for (std::size_t i = 0; i < cubes.size(); ++i) chain_first_[i] = cube_bound(s, cubes[i]);
+    h = std::max(h, chain_->bound(q, chain_first_));
+  }
+  return h;
+}
+
+void GuardHeuristic::begin_call(const task::State& s) {
+  if (++call_ == 0) {  // stamps wrapped: forget them all
+    std::fill(literal_stamp_.begin(), literal_stamp_.end(), 0);
+    call_ = 1;
+  }
+  hand_ = ts_->hand_point(s);
 }
 
 double GuardHeuristic::cube_bound(const task::State& s, const automata::Cube& cube) {
@@ -79,13 +92,13 @@ double GuardHeuristic::cube_bound(const task::State& s, const automata::Cube& cu
 }
 
 double GuardHeuristic::walk(const task::State& s, std::uint32_t q, std::uint32_t target) {
-  const std::uint32_t n = ba_->num_states();
   if (!useful_[q] || (target != kAnyAccepting && !useful_[target])) return kInf;
-  if (++call_ == 0) {  // stamps wrapped: forget them all
-    std::fill(literal_stamp_.begin(), literal_stamp_.end(), 0);
-    call_ = 1;
-  }
-  hand_ = ts_->hand_point(s);
+  begin_call(s);
+  return walk_from(s, q, target);
+}
+
+double GuardHeuristic::walk_from(const task::State& s, std::uint32_t q, std::uint32_t target) {
+  const std::uint32_t n = ba_->num_states();
   std::fill(walk_d_.begin(), walk_d_.end(), kInf);
   std::fill(walk_done_.begin(), walk_done_.end(), 0);
   // First step out of q (it may return to q), then a minimax Dijkstra.

@@ -14,6 +14,9 @@
 //   LB(s, cube) = max over the cube's literals of LB(s, literal).
 //   The same walk bound towards one BA state (walk_bound) bounds the cycle
 //   search's way back to an accepting node.
+//   Without containers, h is also at least ChainBound's sum of the motion
+//   between the locations the guards force, plus the least such sum around an
+//   accepting cycle (plan/chain_bound.hpp) — a bound on the whole lasso.
 // LB(s, proposition wanted true/false) walks the compiled PropExpr: And takes
 // the max (every conjunct must hold), Or the min, Not flips the wanted value;
 // an atom that already has the wanted value costs 0; otherwise the things that
@@ -33,9 +36,11 @@
 // ExperienceHeuristic = max(GuardHeuristic, the graph's learned bounds).
 #pragma once
 
+#include <memory>
 #include <string>
 #include <vector>
 
+#include "rtamp/plan/chain_bound.hpp"
 #include "rtamp/plan/product_graph.hpp"
 
 namespace rtamp::plan {
@@ -100,6 +105,10 @@ class GuardHeuristic : public Heuristic {
   std::vector<double> walk_d_;
   std::vector<std::uint8_t> walk_done_;
   double cube_bound(const task::State& s, const automata::Cube& cube);
+  void begin_call(const task::State& s);  // new literal-cache stamp, hand point of s
+  double walk_from(const task::State& s, std::uint32_t q, std::uint32_t target);  // walk() after begin_call
+  std::unique_ptr<ChainBound> chain_;  // null when it cannot help
+  std::vector<double> chain_first_;
   std::vector<bool> useful_;
   std::vector<std::vector<double>> scratch_;  // per recursion depth
   std::vector<std::vector<world::Vec3>> points_;  // per recursion depth

@@ -99,6 +99,11 @@ class MotionCostModel {
   // Which MotionQuery fields cost() reads (Depends bits).
   virtual unsigned depends() const = 0;
   virtual double transport_bound(const TransportQuery& t) const;
+  // Lower bound on the total cost of the moves of one thing, each carrying
+  // only that thing, that take it from point `from` to point `to`, wherever
+  // the hand is (plan/chain_bound.hpp sums these over things). 0 is always
+  // correct.
+  virtual double carry_bound(const world::Vec3& /*from*/, const world::Vec3& /*to*/) const { return 0; }
   // Costs of this model are expensive enough to be worth caching (the
   // planner's experience cache is used only then). Models are assumed
   // expensive unless they say otherwise; the closed-form ones below are
@@ -123,6 +128,8 @@ class EuclidCost final : public MotionCostModel {
   unsigned depends() const override { return kDependsHand | kDependsFrom | kDependsTo; }
   bool expensive() const override { return false; }
   double transport_bound(const TransportQuery& t) const override;
+  // Each move adds |p - t| for the thing's own stretch (triangle inequality).
+  double carry_bound(const world::Vec3& from, const world::Vec3& to) const override { return distance(from, to); }
 };
 
 class RegionCost final : public MotionCostModel {
@@ -135,6 +142,7 @@ class RegionCost final : public MotionCostModel {
   unsigned depends() const override { return kDependsFrom | kDependsTo; }
   bool expensive() const override { return false; }
   double transport_bound(const TransportQuery& t) const override;
+  double carry_bound(const world::Vec3& from, const world::Vec3& to) const override { return distance(from, to); }
 };
 
 class UnitCost final : public MotionCostModel {
@@ -147,6 +155,8 @@ class UnitCost final : public MotionCostModel {
   bool expensive() const override { return false; }
   // Every one of the m things needs a move of its own.
   double transport_bound(const TransportQuery& t) const override { return double(t.m); }
+  // A thing that changes place needs at least one move (callers pass distinct places).
+  double carry_bound(const world::Vec3&, const world::Vec3&) const override { return 1.0; }
 };
 
 // "euclid", "region" or "unit"; throws rtamp::Error otherwise.

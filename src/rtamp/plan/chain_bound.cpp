@@ -1,0 +1,214 @@
+#include "rtamp/plan/chain_bound.hpp"
+
+#include <algorithm>
+
+namespace rtamp::plan {
+
+namespace {
+
+using Kind = world::PropExpr::Kind;
+
+// Records in `at` the locations that proposition node `node`, wanted `want`,
+// forces (see the header); false if it forces a thing to two places (the
+// literal set can then never hold). Anything else forces nothing.
+bool force(const task::Labeling& lab, std::uint32_t node, bool want, std::vector<int>& at) {
+  const auto& nd = lab.nodes()[node];
+  auto put = [&](unsigned t, int loc) {
+    if (at[t] >= 0 && at[t] != loc) return false;
+    at[t] = loc;
+    return true;
+  };
+  if (want) {
+    switch (nd.kind) {
+      case Kind::In:
+        return nd.thing < 0 || nd.loc < 0 || put(static_cast<unsigned>(nd.thing), nd.loc);
+      case Kind::All:
+        if (nd.cls < 0 || nd.loc < 0) return true;
+        for (unsigned t : lab.class_things(nd.cls))
+          if (!put(t, nd.loc)) return false;
+        return true;
+      case Kind::And:
+        for (auto c : nd.children)
+          if (!force(lab, c, true, at)) return false;
+        return true;
+      case Kind::Not:
+        return force(lab, nd.children[0], false, at);
+      default:
+        return true;
+    }
+  }
+  switch (nd.kind) {
+    case Kind::Or:
+      for (auto c : nd.children)
+        if (!force(lab, c, false, at)) return false;
+      return true;
+    case Kind::Not:
+      return force(lab, nd.children[0], true, at);
+    default:
+      return true;
+  }
+}
+
+constexpr std::uint32_t kMaxNodes = 48;
+
+}  // namespace
+
+ChainBound::ChainBound(const task::System& ts, const task::Labeling& lab, const automata::Automaton& ba,
+                       const MotionCostModel& model, const std::vector<bool>& useful) {
+  n_states_ = ba.num_states();
+  kappa_.assign(n_states_, 0);
+  if (ts.num_containers() > 0) return;  // a container move carries several things
+  struct Step {
+    std::uint32_t src, dst;
+    int forcing;  // index into cubes_, or -1
+  };
+  std::vector<Step> steps;
+  std::vector<std::vector<int>> forced;  // per forcing cube: location per thing, -1 free
+  for (std::uint32_t q = 0; q < n_states_; ++q) {
+    if (!useful[q]) continue;
+    for (const auto& e : ba.edges[q]) {
+      if (!useful[e.dst] || e.guard.is_false()) continue;
+      std::vector<int> at(ts.num_things(), -1);
+      bool holds = true;
+      for (unsigned i = 0; i < lab.num_atoms() && holds; ++i) {
+        const automata::Letter bit = automata::Letter{1} << i;
+        if (e.guard.pos & bit) holds = force(lab, lab.root(i), true, at);
+        if (holds && (e.guard.neg & bit)) holds = force(lab, lab.root(i), false, at);
+      }
+      if (!holds) continue;  // forces a thing to two places: never read
+      int idx = -1;
+      if (std::any_of(at.begin(), at.end(), [](int l) { return l >= 0; })) {
+        // One index per distinct guard (D depends only on the guard).
+        idx = static_cast<int>(std::find(cubes_.begin(), cubes_.end(), e.guard) - cubes_.begin());
+        if (idx == static_cast<int>(cubes_.size())) {
+          cubes_.push_back(e.guard);
+          forced.push_back(std::move(at));
+        }
+      }
+      steps.push_back({q, e.dst, idx});
+    }
+  }
+  n_forcing_ = static_cast<std::uint32_t>(cubes_.size());
+  const std::uint32_t n = n_states_ * (n_forcing_ + 1);
+  if (n_forcing_ == 0 || n > kMaxNodes) {
+    cubes_.clear();
+    return;
+  }
+  d_.assign(std::size_t{n_forcing_} * n_forcing_, 0);
+  bool positive = false;
+  for (std::uint32_t i = 0; i < n_forcing_; ++i)
+    for (std::uint32_t j = 0; j < n_forcing_; ++j) {
+      double sum = 0;
+      for (unsigned t = 0; t < ts.num_things(); ++t) {
+        const int a = forced[i][t], b = forced[j][t];
+        if (a >= 0 && b >= 0 && a != b)
+          sum += model.carry_bound(ts.region_center(static_cast<unsigned>(a)),
+                                   ts.region_center(static_cast<unsigned>(b)));
+      }
+      d_[std::size_t{i} * n_forcing_ + j] = sum;
+      positive = positive || sum > 0;
+    }
+  if (!positive) {
+    cubes_.clear();
+    return;
+  }
+  arcs_.assign(n, {});
+  for (const auto& st : steps)
+    for (std::uint32_t l = 0; l <= n_forcing_; ++l) {
+      if (st.forcing < 0) {
+        arcs_[node(st.src, l)].push_back({node(st.dst, l), 0.0});
+      } else if (l < n_forcing_) {
+        const auto c = static_cast<std::uint32_t>(st.forcing);
+        arcs_[node(st.src, l)].push_back({node(st.dst, c), d_[std::size_t{l} * n_forcing_ + c]});
+      }
+    }
+  accepting_.assign(n_states_, false);
+  for (std::uint32_t q = 0; q < n_states_; ++q) accepting_[q] = useful[q] && ba.is_accepting_state(q);
+  dist_.resize(n);
+  done_.resize(n);
+  for (std::uint32_t q = 0; q < n_states_; ++q) {
+    double best = kInf;
+    if (accepting_[q])
+      for (std::uint32_t l = 0; l <= n_forcing_; ++l) {
+        dijkstra(node(q, l), true);
+        best = std::min(best, dist_[node(q, l)]);
+      }
+    kappa_[q] = best;
+  }
+  // tail of a forcing edge with guard c into state d: from node (d, c) of G
+  // on, the least distance to an accepting state plus its kappa (computed once
+  // per node).
+  std::vector<double> tail(n, -1.0);
+  auto tail_of = [&](std::uint32_t d, std::uint32_t c) {
+    double& t = tail[node(d, c)];
+    if (t >= 0) return t;
+    dijkstra(node(d, c), false);
+    t = kInf;
+    for (std::uint32_t qa = 0; qa < n_states_; ++qa)
+      if (accepting_[qa] && kappa_[qa] < kInf)
+        for (std::uint32_t l = 0; l <= n_forcing_; ++l) t = std::min(t, dist_[node(qa, l)] + kappa_[qa]);
+    return t;
+  };
+  // Per state q: the states reachable by non-forcing edges, their kappa, and
+  // the forcing edges leaving them (one entry per guard: the least tail).
+  zero_tail_.assign(n_states_, kInf);
+  entries_.assign(n_states_, {});
+  std::vector<std::uint8_t> seen(n_states_);
+  std::vector<std::uint32_t> todo;
+  std::vector<double> best_tail(n_forcing_);
+  for (std::uint32_t q = 0; q < n_states_; ++q) {
+    std::fill(seen.begin(), seen.end(), 0);
+    std::fill(best_tail.begin(), best_tail.end(), kInf);
+    todo.assign(1, q);
+    seen[q] = 1;
+    while (!todo.empty()) {
+      const std::uint32_t u = todo.back();
+      todo.pop_back();
+      if (accepting_[u]) zero_tail_[q] = std::min(zero_tail_[q], kappa_[u]);
+      for (const auto& st : steps) {
+        if (st.src != u) continue;
+        if (st.forcing >= 0) {
+          const auto c = static_cast<std::uint32_t>(st.forcing);
+          best_tail[c] = std::min(best_tail[c], tail_of(st.dst, c));
+        } else if (!seen[st.dst]) {
+          seen[st.dst] = 1;
+          todo.push_back(st.dst);
+        }
+      }
+    }
+    for (std::uint32_t c = 0; c < n_forcing_; ++c)
+      if (best_tail[c] < kInf) entries_[q].push_back({c, best_tail[c]});
+  }
+  enabled_ = true;
+}
+
+void ChainBound::dijkstra(std::uint32_t src, bool skip_src) {
+  const auto n = static_cast<std::uint32_t>(arcs_.size());
+  std::fill(dist_.begin(), dist_.end(), kInf);
+  std::fill(done_.begin(), done_.end(), 0);
+  auto relax = [&](std::uint32_t u, double du) {
+    for (const Arc& a : arcs_[u]) {
+      const double d = du + a.weight;
+      if (d < dist_[a.to]) dist_[a.to] = d;
+    }
+  };
+  if (skip_src) relax(src, 0);
+  else dist_[src] = 0;
+  for (;;) {
+    std::uint32_t u = n;
+    for (std::uint32_t v = 0; v < n; ++v)
+      if (!done_[v] && dist_[v] < kInf && (u == n || dist_[v] < dist_[u])) u = v;
+    if (u == n) return;
+    done_[u] = 1;
+    if (skip_src && u == src) continue;  // back at the source: the cycle is closed
+    relax(u, dist_[u]);
+  }
+}
+
+double ChainBound::bound(std::uint32_t q, const std::vector<double>& first) const {
+  double best = zero_tail_[q];
+  for (const auto& [c, t] : entries_[q]) best = std::min(best, first[c] + t);
+  return best;
+}
+
+}  // namespace rtamp::plan

@@ -1,0 +1,83 @@
+// ChainBound: a lower bound on the motion a lasso needs *between* the guards
+// its automaton run reads, from the locations those guards force (part of the
+// A* heuristic, plan/heuristic.hpp; admissibility argued below and checked by
+// tests/plan/components_test.cpp against the brute force).
+//
+// A guard (cube) *forces* thing t to location L when one of its literals
+// requires `t in L` or `all C in L` for t's class (through And, and Not/Or of
+// unwanted literals). A path of the product reads one automaton edge per step,
+// each edge's guard holding in the state where it is read. If it reads guards
+// c, then later c', every thing that c forces to L and c' to L' != L moves from
+// L to L' in between: with no containers every move carries exactly one thing,
+// so that part of the path costs at least
+//   D(c, c') = sum over such things of the model's carry_bound(L, L').
+// Along a path, sum D over consecutive *forcing* guards (the segments do not
+// overlap); the first forcing guard c1 costs LB(s, c1) from the start state s.
+// A lasso through an accepting node with automaton state qa also pays, in its
+// cycle, the D-sum around some automaton cycle through qa: kappa(qa) = the
+// least such sum. So, with the graph G over (automaton state q, last forcing
+// guard l or none) — an edge e with guard c: (q, l) -> (dst(e), c) weighted
+// D(l, c) (LB for l = none) if c forces something, else (q, l) -> (dst(e), l)
+// weighted 0 —
+//   bound(s, q) = min over accepting qa of dist_G((q, none), (qa, .)) + kappa(qa)
+// is at most the cost of the best lasso from (s, q). Guards that force one
+// thing to two places can never hold: their edges are left out.
+// Everything but the first forcing guard's LB(s, c) is state-independent, so
+// it is computed once: bound(s, q) = min(kappa of an accepting state reachable
+// from q by non-forcing edges, min over the forcing edges c that start there
+// of LB(s, c) + tail(c)), tail(c) = the least D-distance in G from c to an
+// accepting state plus its kappa. Enabled only without containers, when some
+// D is positive, and when G is small (<= 48 nodes: set-up is a few Dijkstras
+// on G per automaton state).
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "rtamp/automata/automaton.hpp"
+#include "rtamp/plan/motion_cost.hpp"
+#include "rtamp/plan/product_graph.hpp"  // kInf
+#include "rtamp/task/labeling.hpp"
+#include "rtamp/task/transition_system.hpp"
+
+namespace rtamp::plan {
+
+class ChainBound {
+ public:
+  // `useful`: per automaton state, whether it can reach an accepting cycle.
+  ChainBound(const task::System& ts, const task::Labeling& lab, const automata::Automaton& ba,
+             const MotionCostModel& model, const std::vector<bool>& useful);
+  bool enabled() const { return enabled_; }
+  // The forcing guards; bound() takes LB(s, cube) for each, in this order.
+  const std::vector<automata::Cube>& forcing_cubes() const { return cubes_; }
+  // The bound above from automaton state q, given first[i] = LB(s, forcing_cubes()[i]).
+  double bound(std::uint32_t q, const std::vector<double>& first) const;
+  // kInf if no automaton cycle passes through q.
+  double kappa(std::uint32_t q) const { return kappa_[q]; }
+
+ private:
+  struct Arc {
+    std::uint32_t to;
+    double weight;
+  };
+  // Node (q, l) of G; l = n_forcing_ is "none". G has no arcs out of "none"
+  // nodes along forcing edges (their weight LB(s, c) depends on the state;
+  // bound() adds them).
+  std::uint32_t node(std::uint32_t q, std::uint32_t l) const { return q * (n_forcing_ + 1) + l; }
+  // Dijkstra on G from `src` into dist_; with skip_src, paths of at least one arc.
+  void dijkstra(std::uint32_t src, bool skip_src);
+
+  bool enabled_ = false;
+  std::uint32_t n_states_ = 0, n_forcing_ = 0;
+  std::vector<automata::Cube> cubes_;
+  std::vector<double> d_;                   // D(i, j) at i * n_forcing_ + j
+  std::vector<std::vector<Arc>> arcs_;      // per node of G
+  std::vector<bool> accepting_;
+  std::vector<double> kappa_;               // per automaton state
+  std::vector<double> zero_tail_;           // per automaton state
+  std::vector<std::vector<std::pair<std::uint32_t, double>>> entries_;  // per state: (forcing c, tail(c))
+  std::vector<double> dist_;                // Dijkstra work space
+  std::vector<std::uint8_t> done_;
+};
+
+}  // namespace rtamp::plan
