@@ -18,8 +18,9 @@
 //   3. Stop when the smallest f in the open list is >= best.
 // Optimality: let L* = P + C be an optimal lasso through accepting node N*.
 // Every node m on its prefix has f(m) <= g*(m) + V(m) <= L*, where V(m) is the
-// cost of the best lasso continuing from m and h(m) <= V(m) (h bounds the
-// distance to *some* accepting node, and V(m) is at least that). So until N*
+// cost of the best lasso continuing from m and h(m) <= V(m) (the guard
+// heuristic's parts bound the distance to some accepting node or the whole
+// lasso; plan/heuristic.hpp). So until N*
 // is popped with g = g*(N*) the open list holds a node with f <= L*, and the
 // search cannot stop with best > L*; when N* is popped its cycle search finds
 // C (the bound best - g(N*) > C unless best is already optimal). Learned
