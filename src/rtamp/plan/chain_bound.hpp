@@ -52,8 +52,6 @@ class ChainBound {
   const std::vector<automata::Cube>& forcing_cubes() const { return cubes_; }
   // The bound above from automaton state q, given first[i] = LB(s, forcing_cubes()[i]).
   double bound(std::uint32_t q, const std::vector<double>& first) const;
-  // kInf if no automaton cycle passes through q.
-  double kappa(std::uint32_t q) const { return kappa_[q]; }
 
  private:
   struct Arc {
@@ -73,7 +71,7 @@ class ChainBound {
   std::vector<double> d_;                   // D(i, j) at i * n_forcing_ + j
   std::vector<std::vector<Arc>> arcs_;      // per node of G
   std::vector<bool> accepting_;
-  std::vector<double> kappa_;               // per automaton state
+  std::vector<double> kappa_;               // per automaton state; kInf: no cycle through it
   std::vector<double> zero_tail_;           // per automaton state
   std::vector<std::vector<std::pair<std::uint32_t, double>>> entries_;  // per state: (forcing c, tail(c))
   std::vector<double> dist_;                // Dijkstra work space

@@ -336,10 +336,10 @@ PlanResult Planner::search(task::System& ts, task::Labeling& lab, bool allow_dia
     const std::int64_t c0 = steady_now_ns();
     std::function<void(std::int64_t)> tick;
     if (options_.limits.on_progress) {
-      std::int64_t next = c0 + static_cast<std::int64_t>(options_.limits.progress_interval * 1e9);
+      std::int64_t next = c0 + options_.limits.progress_interval_ns();
       tick = [&, next](std::int64_t now) mutable {
         if (now < next) return;
-        next = now + static_cast<std::int64_t>(options_.limits.progress_interval * 1e9);
+        next = now + options_.limits.progress_interval_ns();
         SearchProgress p;
         p.phase = "constructing";
         p.graph_nodes = g->size();

@@ -102,7 +102,7 @@ bool LassoSearch::out_of_budget(const ProductGraph& g, const SearchLimits& limit
       return true;
     }
     if (limits.on_progress && now >= next_progress_ns_) {
-      next_progress_ns_ = now + static_cast<std::int64_t>(limits.progress_interval * 1e9);
+      next_progress_ns_ = now + limits.progress_interval_ns();
       SearchProgress p;
       p.graph_nodes = g.size();
       p.expanded = stats.expanded;
@@ -189,7 +189,7 @@ LassoResult LassoSearch::run(ProductGraph& g, NodeId init, Heuristic& h, bool cy
   LassoResult r;
   Heuristic* const cycle_h = cycle_heuristic ? &h : nullptr;
   start_ns_ = steady_now_ns();
-  next_progress_ns_ = start_ns_ + static_cast<std::int64_t>(limits.progress_interval * 1e9);
+  next_progress_ns_ = start_ns_ + limits.progress_interval_ns();
   progress_best_ = kInf;
   progress_bound_ = 0;
   Space& S = prefix_;

@@ -75,6 +75,7 @@ struct SearchLimits {
   // if it ends sooner), from the planning thread; it must not use the planner.
   std::function<void(const SearchProgress&)> on_progress;
   double progress_interval = 0.5;
+  std::int64_t progress_interval_ns() const { return static_cast<std::int64_t>(progress_interval * 1e9); }
 };
 
 struct LassoResult {
