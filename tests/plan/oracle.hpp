@@ -171,8 +171,10 @@ struct Product {
   std::vector<Node> nodes;
   std::vector<std::vector<std::pair<int, double>>> adj;
 
+  // `q0`: the automaton state of the start node (default: the initial state).
   Product(const rtamp::world::Scenario& sc, const rtamp::world::Placement& p, const std::string& hand,
-          const rtamp::automata::Automaton& ba, const std::string& model, bool symmetry = true) {
+          const rtamp::automata::Automaton& ba, const std::string& model, bool symmetry = true,
+          std::optional<std::uint32_t> q0 = {}) {
     World w(sc);
     if (symmetry) w.find_groups(ba.atoms);
     std::map<std::pair<std::vector<int>, std::pair<int, std::uint32_t>>, int> index;
@@ -187,7 +189,7 @@ struct Product {
       adj.emplace_back();
       return n;
     };
-    id(start(w, p, hand), ba.initial);
+    id(start(w, p, hand), q0 ? *q0 : ba.initial);
     for (std::size_t n = 0; n < nodes.size(); ++n) {
       const St s = nodes[n].s;
       const std::uint32_t q = nodes[n].q;
@@ -239,11 +241,12 @@ struct Product {
   }
 };
 
-// Minimum lasso cost, or nullopt if there is none.
+// Minimum lasso cost from (start, q0) (default: the initial state), or nullopt if there is none.
 inline std::optional<double> min_lasso(const rtamp::world::Scenario& sc, const rtamp::world::Placement& p,
                                        const std::string& hand, const rtamp::automata::Automaton& ba,
-                                       const std::string& model, bool symmetry = true) {
-  const Product g(sc, p, hand, ba, model, symmetry);
+                                       const std::string& model, bool symmetry = true,
+                                       std::optional<std::uint32_t> q0 = {}) {
+  const Product g(sc, p, hand, ba, model, symmetry, q0);
   const std::size_t N = g.nodes.size();
   const auto d0 = g.dijkstra(0, false);
   std::vector<int> acc;
@@ -257,6 +260,19 @@ inline std::optional<double> min_lasso(const rtamp::world::Scenario& sc, const r
     best = std::min(best, d0[static_cast<std::size_t>(n)] + dc[static_cast<std::size_t>(n)]);
   }
   if (best == INFINITY) return std::nullopt;
+  return best;
+}
+
+// Minimum over the start automaton states `qs` of min_lasso (the multi-source
+// optimum), or nullopt if there is none from any of them.
+inline std::optional<double> min_lasso_from(const rtamp::world::Scenario& sc, const rtamp::world::Placement& p,
+                                            const std::string& hand, const rtamp::automata::Automaton& ba,
+                                            const std::string& model, const std::vector<std::uint32_t>& qs) {
+  std::optional<double> best;
+  for (std::uint32_t q : qs) {
+    const auto c = min_lasso(sc, p, hand, ba, model, true, q);
+    if (c && (!best || *c < *best)) best = c;
+  }
   return best;
 }
 

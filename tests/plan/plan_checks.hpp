@@ -38,7 +38,7 @@ inline world::Region region(const std::string& name, double x, double y, int cap
   world::Region r;
   r.name = name;
   r.center = {x, y, 0};
-  r.size = {0.2, 0.2, 0};
+  r.size = {0.3, 0.3, 0};  // a default tray (0.24 x 0.16) and everything else fits: footprints never bind
   r.capacity = cap;
   return r;
 }
@@ -141,8 +141,15 @@ inline double check_plan(plan::Planner& planner, const plan::PlanResult& r, cons
   if (!r.plan.cycle.empty()) {
     EXPECT_EQ(r.plan.cycle.back().ba_to, r.plan.cycle.front().ba_from);
     EXPECT_TRUE(ba.is_accepting_state(r.plan.cycle.front().ba_from));
-    EXPECT_TRUE(automata::lasso_accept(ba, word));
-    if (!planner.formula().is_null()) {
+    // The plan starts at one of the planner's automaton states, and the
+    // automaton started there accepts its word.
+    const std::uint32_t q0 = r.plan.prefix.empty() ? r.plan.cycle.front().ba_from : r.plan.prefix.front().ba_from;
+    const auto& qs = planner.automaton_states();
+    EXPECT_NE(std::find(qs.begin(), qs.end(), q0), qs.end()) << "the plan starts at automaton state " << q0;
+    automata::Automaton from_q0 = ba;
+    from_q0.initial = q0;
+    EXPECT_TRUE(automata::lasso_accept(from_q0, word));
+    if (!planner.formula().is_null() && q0 == ba.initial) {
       ltl::LassoWord lw;
       auto names = [&](automata::Letter l) {
         ltl::LassoWord::Letter out;

@@ -146,6 +146,7 @@ Planner::Planner(world::Scenario scenario, automata::Automaton automaton, Planne
 Planner::~Planner() = default;
 
 void Planner::init() {
+  ba_starts_.assign(1, ba_.initial);
   model_ = options_.model ? options_.model : std::shared_ptr<MotionCostModel>(make_cost_model(options_.cost));
   cache_.set_depends(model_->depends());
   placement_ = world::initial_placement(scenario_);
@@ -189,6 +190,16 @@ void Planner::set_placement(world::Placement placement, std::string hand) {
   if (!same) throw Error("set_placement: the placement names other things than the scenario (use apply())");
   placement_ = std::move(placement);
   hand_ = std::move(hand);
+}
+
+void Planner::set_automaton_states(std::vector<std::uint32_t> states) {
+  for (const std::uint32_t q : states)
+    if (q >= ba_.num_states())
+      throw Error("set_automaton_states: automaton state " + std::to_string(q) + " does not exist (the automaton has " +
+                  std::to_string(ba_.num_states()) + " states)");
+  std::sort(states.begin(), states.end());
+  states.erase(std::unique(states.begin(), states.end()), states.end());
+  ba_starts_ = std::move(states);
 }
 
 void Planner::execute(const task::Action& a) {
@@ -329,7 +340,16 @@ PlanResult Planner::search(task::System& ts, task::Labeling& lab, bool allow_dia
   if (ba_.num_states() == 0 || !g->useful(ba_.initial))
     return finish(NoPlanReason::Unsatisfiable, "the task is unsatisfiable: its Büchi automaton accepts no word");
   const std::size_t before = g->size();
-  const NodeId init = g->find_or_add(ts.canonical(ts.initial()), ba_.initial);
+  std::vector<NodeId> starts;
+  for (const std::uint32_t q : ba_starts_)
+    if (g->useful(q)) starts.push_back(g->find_or_add(ts.canonical(ts.initial()), q));
+  if (starts.empty()) {
+    std::string list;
+    for (const std::uint32_t q : ba_starts_) list += (list.empty() ? "" : ", ") + std::to_string(q);
+    return finish(NoPlanReason::NoAcceptingCycle,
+                  "no accepting lasso is possible: from none of the automaton states the run is in {" + list +
+                      "} can the automaton still reach an accepting cycle");
+  }
   res.stats.reused_nodes = before;
   bool hit_node = false, hit_time = false;
   if (options_.graph == GraphConstruction::Full) {
@@ -347,7 +367,7 @@ PlanResult Planner::search(task::System& ts, task::Labeling& lab, bool allow_dia
         options_.limits.on_progress(p);
       };
     }
-    if (!g->expand_all(init, options_.limits.max_nodes, deadline, tick)) {
+    if (!g->expand_all(starts, options_.limits.max_nodes, deadline, tick)) {
       if (g->size() >= options_.limits.max_nodes) hit_node = true;
       else hit_time = true;
     }
@@ -377,7 +397,7 @@ PlanResult Planner::search(task::System& ts, task::Labeling& lab, bool allow_dia
         options_.limits.on_progress(p);
       };
     }
-    r = ls->run(*g, init, *hp, astar, exp, limits, deadline, res.stats);
+    r = ls->run(*g, starts, *hp, astar, exp, limits, deadline, res.stats);
     hit_node = r.hit_node_limit;
     hit_time = r.hit_time_limit;
   }
@@ -427,7 +447,7 @@ PlanResult Planner::search(task::System& ts, task::Labeling& lab, bool allow_dia
     };
     p.prefix.reserve(r.prefix_edges.size());
     p.cycle.reserve(r.cycle_edges.size());
-    add_steps(init, r.prefix_edges, p.prefix);
+    add_steps(r.start, r.prefix_edges, p.prefix);
     add_steps(r.accepting, r.cycle_edges, p.cycle);
     p.prefix_cost = r.prefix_cost;
     p.cycle_cost = r.cycle_cost;

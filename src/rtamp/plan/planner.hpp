@@ -14,8 +14,11 @@
 // things or regions are added or removed; names stay the identity), and the
 // experience: the motion-cost cache (for models whose costs are expensive(),
 // e.g. ik) and, while the TS is unchanged, the product graph with its learned
-// bounds, solved paths and cycle costs. Each plan() starts
-// the automaton afresh at the current state ((s, q_b0), Algorithm 1 line 12).
+// bounds, solved paths and cycle costs. Each plan() starts the product at the
+// current state and every automaton state of automaton_states() (default:
+// the initial state, i.e. (s, q_b0) of Algorithm 1 line 12; the executor sets
+// the states consistent with the run so far, plan/task_progress.hpp) and
+// returns the cheapest lasso from any of them.
 // Algorithms dijkstra and astar plan cold every time (new graph, no cache);
 // astar-exp keeps and reuses all experience.
 // Errors a user can cause (unknown names in a change, a bad task) are
@@ -92,6 +95,16 @@ class Planner {
   void execute(const task::Action& a);
   // Replace the current state (e.g. from perception).
   void set_placement(world::Placement placement, std::string hand = {});
+  // The automaton states plan() starts from: every (current state, q) with q
+  // in the set is a start node at cost 0 (multi-source), and the plan's first
+  // step (prefix, or cycle if the prefix is empty) has ba_from = the state it
+  // used. States from which no accepting cycle is reachable are skipped; if
+  // none is left, plan() is not found with NoAcceptingCycle. Default
+  // {automaton().initial}; kept until changed (apply(), execute() and
+  // set_placement() keep it). Stored sorted, without duplicates. Throws
+  // rtamp::Error for a state >= automaton().num_states().
+  void set_automaton_states(std::vector<std::uint32_t> states);
+  const std::vector<std::uint32_t>& automaton_states() const { return ba_starts_; }
 
   const world::Scenario& scenario() const { return scenario_; }
   const task::System& system();
@@ -117,6 +130,7 @@ class Planner {
   PlannerOptions options_;
   ltl::Formula formula_;
   automata::Automaton ba_;
+  std::vector<std::uint32_t> ba_starts_;  // sorted, unique; see set_automaton_states
   std::shared_ptr<MotionCostModel> model_;
   world::Placement placement_;
   std::string hand_;

@@ -134,10 +134,19 @@ void ProductGraph::expand(NodeId n) {
 
 bool ProductGraph::expand_all(NodeId from, std::size_t max_nodes, std::int64_t deadline_ns,
                               const std::function<void(std::int64_t now_ns)>& tick) {
-  std::vector<NodeId> queue{from};
+  return expand_all(std::vector<NodeId>{from}, max_nodes, deadline_ns, tick);
+}
+
+bool ProductGraph::expand_all(const std::vector<NodeId>& from, std::size_t max_nodes, std::int64_t deadline_ns,
+                              const std::function<void(std::int64_t now_ns)>& tick) {
+  std::vector<NodeId> queue;
   std::vector<bool> queued;
   queued.resize(size(), false);
-  queued[from] = true;
+  for (const NodeId n : from)
+    if (n != kNoNode && !queued[n]) {
+      queued[n] = true;
+      queue.push_back(n);
+    }
   for (std::size_t head = 0; head < queue.size(); ++head) {
     const NodeId n = queue[head];
     expand(n);

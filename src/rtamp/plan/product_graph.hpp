@@ -83,6 +83,9 @@ class ProductGraph {
   // called every 256 expansions with the current time (for progress reports).
   bool expand_all(NodeId from, std::size_t max_nodes, std::int64_t deadline_ns,
                   const std::function<void(std::int64_t now_ns)>& tick = {});
+  // From several nodes (kNoNode entries are skipped).
+  bool expand_all(const std::vector<NodeId>& from, std::size_t max_nodes, std::int64_t deadline_ns,
+                  const std::function<void(std::int64_t now_ns)>& tick = {});
 
   // Per-node experience (Section III.C): a learned lower bound on the cost of
   // the best lasso from the node, and the minimum cycle cost through it

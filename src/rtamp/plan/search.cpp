@@ -186,6 +186,12 @@ double LassoSearch::cycle(ProductGraph& g, NodeId n, double bound, Heuristic* h,
 
 LassoResult LassoSearch::run(ProductGraph& g, NodeId init, Heuristic& h, bool cycle_heuristic, bool learn,
                              const SearchLimits& limits, std::int64_t deadline_ns, SearchStats& stats) {
+  starts_.assign(1, init);
+  return run(g, starts_, h, cycle_heuristic, learn, limits, deadline_ns, stats);
+}
+
+LassoResult LassoSearch::run(ProductGraph& g, const std::vector<NodeId>& starts, Heuristic& h, bool cycle_heuristic,
+                             bool learn, const SearchLimits& limits, std::int64_t deadline_ns, SearchStats& stats) {
   LassoResult r;
   Heuristic* const cycle_h = cycle_heuristic ? &h : nullptr;
   start_ns_ = steady_now_ns();
@@ -210,13 +216,17 @@ LassoResult LassoSearch::run(ProductGraph& g, NodeId init, Heuristic& h, bool cy
     }
   };
 
-  S.stamp[init] = S.gen;
-  S.g[init] = 0;
-  S.h[init] = h.estimate(g, init);
-  S.parent[init] = kNoNode;
-  S.closed[init] = 0;
-  if (S.h[init] < kInf) S.push({S.h[init], 0.0, init});
-  offer_solved(init, 0.0);
+  // Multi-source: every start node at g = 0 (duplicates are harmless).
+  for (const NodeId init : starts) {
+    if (init == kNoNode || S.seen(init)) continue;
+    S.stamp[init] = S.gen;
+    S.g[init] = 0;
+    S.h[init] = h.estimate(g, init);
+    S.parent[init] = kNoNode;
+    S.closed[init] = 0;
+    if (S.h[init] < kInf) S.push({S.h[init], 0.0, init});
+    offer_solved(init, 0.0);
+  }
   bool complete = true;
   while (!S.heap.empty()) {
     const Item it = S.pop();
@@ -274,8 +284,10 @@ LassoResult LassoSearch::run(ProductGraph& g, NodeId init, Heuristic& h, bool cy
   }
   if (best_node != kNoNode) {
     r.found = true;
-    for (NodeId cur = best_node; cur != init; cur = S.parent[cur]) r.prefix_edges.push_back(S.pedge[cur]);
+    NodeId init = best_node;
+    for (; S.parent[init] != kNoNode; init = S.parent[init]) r.prefix_edges.push_back(S.pedge[init]);
     std::reverse(r.prefix_edges.begin(), r.prefix_edges.end());
+    r.start = init;
     NodeId acc = best_node;
     if (best_solved) {
       // Follow the solved path to its accepting node (terminates: see set_solved below).
@@ -324,7 +336,7 @@ LassoResult LassoSearch::run(ProductGraph& g, NodeId init, Heuristic& h, bool cy
       // their via edge, so via chains only lead to nodes solved no later and,
       // among nodes solved together, along one simple path: they end.
       double gx = 0;
-      NodeId x = init;
+      NodeId x = r.start;
       for (std::uint32_t e : r.prefix_edges) {
         if (!g.solved(x)) g.set_solved(x, total - gx, e);
         gx += g.edge(e).cost;

@@ -1,11 +1,13 @@
 // Search strategies over the product graph and the lasso search (paper
 // Section III.B: graph search with motion costs; DESIGN.md "Plans are lassos").
 //
-// A lasso plan is a path from the initial node to an accepting node N plus a
-// cycle (>= 1 edge) from N back to N; its cost is prefix + cycle. LassoSearch
-// minimises it exactly:
-//   1. Best-first search from the initial node in order of f = g + h (h = 0:
-//      Dijkstra; h admissible: A*). Nodes are re-opened when a cheaper path is
+// A lasso plan is a path from one of the start nodes to an accepting node N
+// plus a cycle (>= 1 edge) from N back to N; its cost is prefix + cycle.
+// LassoSearch minimises it exactly over all start nodes at once:
+//   1. Best-first search from the start nodes (multi-source: all at g = 0; the
+//      planner passes (s, q) for every tracked automaton state q) in order of
+//      f = g + h (h = 0: Dijkstra; h admissible: A*). g(m) is then the distance
+//      from the nearest start. Nodes are re-opened when a cheaper path is
 //      found, so admissibility suffices for exact g at the end.
 //   2. Whenever an accepting node N is popped, find its cheapest cycle by a
 //      second best-first search from N's successors back to N, pruned at
@@ -16,24 +18,30 @@
 //      not depend on the start, so they are kept in the graph (exact, or "none
 //      below b") and reused by later queries.
 //   3. Stop when the smallest f in the open list is >= best.
-// Optimality: let L* = P + C be an optimal lasso through accepting node N*.
+// Optimality: let L* = P + C be an optimal lasso (over all starts) through
+// accepting node N*, its prefix P from start node s*.
 // Every node m on its prefix has f(m) <= g*(m) + V(m) <= L*, where V(m) is the
 // cost of the best lasso continuing from m and h(m) <= V(m) (the guard
 // heuristic's parts bound the distance to some accepting node or the whole
 // lasso; plan/heuristic.hpp). So until N*
 // is popped with g = g*(N*) the open list holds a node with f <= L*, and the
 // search cannot stop with best > L*; when N* is popped its cycle search finds
-// C (the bound best - g(N*) > C unless best is already optimal). Learned
-// values (experience) are C*_old - g_old(m) for nodes m closed by an earlier
-// complete search on the same graph: since g_old(m) >= the true distance and
-// C*_old <= g_old(m) + V(m), they are <= V(m) too.
+// C (the bound best - g(N*) > C unless best is already optimal). Several
+// starts change nothing in this: s* is pushed with g = 0 like the others.
+// Learned values (experience) are C*_old - g_old(m) for nodes m closed by an
+// earlier complete search on the same graph, from any set of starts: g_old(m)
+// >= the distance from some old start s, and C*_old <= dist(s, m) + V(m) (the
+// old optimum is at most the lasso from s through m), so they are <= V(m),
+// whatever the starts of a later query.
 // Solved paths (experience, `learn`): the prefix nodes of an optimal lasso
 // found by a complete search are marked solved in the graph (their best lasso
 // cost is then known exactly, ProductGraph::set_solved). A later search on
 // the same graph that reaches a solved node m with cost g(m) has a lasso of
 // cost g(m) + V(m) at once (the path to m, then m's recorded lasso); it keeps
 // it as the incumbent and never expands solved nodes (nothing through m can
-// be cheaper). The stopping rule above then ends the search as soon as no
+// be cheaper). With several starts the value of a prefix node x is C* minus
+// its cost from the start s* the lasso used, again exact (V(x) >= C* -
+// g(x) by the learned-bound argument). The stopping rule above then ends the search as soon as no
 // open node could beat it, so a replan that starts on or next to an earlier
 // plan expands few or no nodes. Optimality is unchanged: the incumbent is a
 // real lasso, and the argument above only needs h admissible.
@@ -81,6 +89,7 @@ struct SearchLimits {
 struct LassoResult {
   bool found = false;
   bool hit_node_limit = false, hit_time_limit = false;
+  NodeId start = kNoNode;      // the start node the prefix leaves from
   NodeId accepting = kNoNode;
   std::vector<std::uint32_t> prefix_edges, cycle_edges;  // edge indices in the graph
   double prefix_cost = 0, cycle_cost = 0;
@@ -90,6 +99,10 @@ class LassoSearch {
  public:
   // `learn`: use and store experience (learned bounds, solved paths) in the graph.
   // `cycle_heuristic`: use state_distance_bound and h.walk_bound in cycle searches (else 0).
+  // `starts`: the start nodes (kNoNode entries are skipped); the best lasso
+  // from any of them.
+  LassoResult run(ProductGraph& g, const std::vector<NodeId>& starts, Heuristic& h, bool cycle_heuristic, bool learn,
+                  const SearchLimits& limits, std::int64_t deadline_ns, SearchStats& stats);
   LassoResult run(ProductGraph& g, NodeId init, Heuristic& h, bool cycle_heuristic, bool learn,
                   const SearchLimits& limits, std::int64_t deadline_ns, SearchStats& stats);
   std::size_t memory_bytes() const { return prefix_.bytes() + cycle_.bytes(); }
@@ -124,6 +137,7 @@ class LassoSearch {
 
   Space prefix_, cycle_;
   std::vector<NodeId> closed_list_;
+  std::vector<NodeId> starts_;
   std::vector<std::uint32_t> cycle_path_;
   std::vector<NodeId> path_nodes_;
   std::uint64_t ticks_ = 0;
