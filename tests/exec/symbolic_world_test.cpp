@@ -1,0 +1,802 @@
+// SymbolicWorld (exec/symbolic_world.hpp): the timing model, observed
+// locations along a move, every intervention in every phase, failures, halts,
+// scripted and random interventions, invariants and determinism.
+#include "rtamp/exec/symbolic_world.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <map>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "rtamp/exec/subtree_builder.hpp"
+#include "rtamp/world/scenario_io.hpp"
+
+namespace rtamp::exec {
+namespace {
+
+using Kind = world::Intervention::Kind;
+
+// r1 (cap 3): o1 and tray t1 (cap 2) holding o2; r2 (cap 3): o3; r3 (cap 1): o4 (full); r4 (cap 2): empty.
+constexpr const char* kTiny = R"(
+name: tiny
+robot: {model: ur5, base: [0, 0, 0], yaw: 0}
+regions:
+  - {name: r1, center: [0.40, 0.30, 0], size: [0.36, 0.36], capacity: 3}
+  - {name: r2, center: [0.40, -0.30, 0], size: [0.36, 0.36], capacity: 3}
+  - {name: r3, center: [0.70, 0.00, 0], size: [0.20, 0.20], capacity: 1}
+  - {name: r4, center: [0.70, 0.40, 0], size: [0.20, 0.20], capacity: 2}
+containers:
+  - {name: t1, class: tray, position: [0.40, 0.25, 0], size: [0.24, 0.16, 0.03], capacity: 2}
+objects:
+  - {name: o1, class: block, position: [0.40, 0.42, 0]}
+  - {name: o2, class: block, position: [0.40, 0.25, 0.01]}
+  - {name: o3, class: block, position: [0.40, -0.30, 0]}
+  - {name: o4, class: block, position: [0.70, 0.00, 0]}
+propositions: {done: "o1 in r2"}
+task: "F done"
+)";
+
+world::Scenario tiny() { return world::parse_scenario(kTiny, "tiny.yaml"); }
+
+Move move(const std::string& thing, const std::string& from, const std::string& to) {
+  return Move{"move(" + thing + ", " + to + ")", thing, from, to};
+}
+
+std::string loc(const SymbolicWorld& w, const std::string& thing) {
+  const std::string* l = w.truth().location_of(thing);
+  return l ? *l : "";
+}
+
+double dist(const world::Vec3& a, const world::Vec3& b) {
+  return std::sqrt((a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) +
+                   (a[2] - b[2]) * (a[2] - b[2]));
+}
+
+// Advances to the end of the current phase.
+void step_phase(SymbolicWorld& w) { w.advance(w.phase_end() - w.time()); }
+
+void run_until_idle(SymbolicWorld& w) {
+  for (int i = 0; i < 100 && w.phase() != Phase::Idle; ++i) {
+    step_phase(w);
+    ASSERT_EQ(w.check_invariants(), "");
+  }
+  ASSERT_EQ(w.phase(), Phase::Idle);
+}
+
+// Advances into the middle of phase `p` of the running move.
+void to_middle_of(SymbolicWorld& w, Phase p) {
+  for (int i = 0; i < 10 && w.phase() != p; ++i) step_phase(w);
+  ASSERT_EQ(w.phase(), p);
+  w.advance((w.phase_end() - w.time()) / 2);
+  ASSERT_EQ(w.phase(), p);
+}
+
+world::Intervention iv(Kind k, std::string subject = "", std::string location = "", std::string cls = "") {
+  world::Intervention i;
+  i.kind = k;
+  i.subject = std::move(subject);
+  i.location = std::move(location);
+  i.cls = std::move(cls);
+  return i;
+}
+
+// ---------------------------------------------------------------- timing
+
+TEST(SymbolicWorld, PhaseTimingsAndObservedLocationsAlongAMove) {
+  const auto s = world::load_scenario("3-block-tray");
+  SymbolicWorld w(s);
+  const world::Vec3 home{0, 0, 0.5}, r1{0.40, 0.32, 0}, r2{0.40, -0.32, 0};
+  EXPECT_EQ(w.hand(), "");
+  EXPECT_EQ(w.poll(nullptr), MoveStatus::Idle);
+  EXPECT_EQ(w.next_event_time(), std::numeric_limits<double>::infinity());
+  w.start(move("o1", "r1", "r2"));
+  ASSERT_EQ(w.poll(nullptr), MoveStatus::Running);
+
+  struct Expect {
+    Phase phase;
+    double duration;
+    const char* observed;  // o1's location during the phase
+  };
+  const std::vector<Expect> phases{{Phase::Approach, 0.5 + dist(home, r1) / 0.25, "r1"},
+                                   {Phase::Grasp, 0.5, "r1"},
+                                   {Phase::Carry, 0.5 + dist(r1, r2) / 0.25, kInHand},
+                                   {Phase::Place, 0.5, kInHand},
+                                   {Phase::Retreat, 0.5, "r2"}};
+  double t = 0;
+  for (const auto& e : phases) {
+    SCOPED_TRACE(to_string(e.phase));
+    ASSERT_EQ(w.phase(), e.phase);
+    EXPECT_NEAR(w.phase_end(), t + e.duration, 1e-12);
+    EXPECT_NEAR(w.next_event_time(), t + e.duration, 1e-12);
+    w.advance(e.duration * 0.99);
+    EXPECT_EQ(w.phase(), e.phase);
+    EXPECT_EQ(*w.observe().location_of("o1"), e.observed);
+    EXPECT_EQ(w.poll(nullptr), MoveStatus::Running);
+    EXPECT_EQ(w.check_invariants(), "");
+    t += e.duration;
+    w.advance(t - w.time());
+  }
+  EXPECT_EQ(w.phase(), Phase::Idle);
+  EXPECT_EQ(w.poll(nullptr), MoveStatus::Succeeded);
+  EXPECT_EQ(loc(w, "o1"), "r2");
+  EXPECT_EQ(w.hand(), "r2");
+  EXPECT_NEAR(w.time(), t, 1e-12);
+
+  // The next approach starts from r2; a tray move carries its contents.
+  w.start(move("o2", "r1", "r3"));
+  EXPECT_NEAR(w.phase_end() - w.time(), 0.5 + dist(r2, r1) / 0.25, 1e-12);
+  run_until_idle(w);
+  ASSERT_EQ(w.poll(nullptr), MoveStatus::Succeeded);
+  w.start(move("r3", "r1", "r2"));
+  step_phase(w);
+  step_phase(w);
+  EXPECT_EQ(loc(w, "r3"), kInHand);
+  EXPECT_EQ(loc(w, "o2"), "r3");
+  run_until_idle(w);
+  EXPECT_EQ(w.poll(nullptr), MoveStatus::Succeeded);
+  EXPECT_EQ(loc(w, "r3"), "r2");
+  EXPECT_EQ(loc(w, "o2"), "r3");
+}
+
+TEST(SymbolicWorld, TimingOptionsAreUsed) {
+  SymbolicWorldOptions o;
+  o.approach_base = 1;
+  o.grasp = 2;
+  o.carry_base = 3;
+  o.place = 4;
+  o.retreat = 5;
+  o.speed = 1;
+  SymbolicWorld w(tiny(), o);
+  w.start(move("o1", "r1", "r2"));
+  const world::Vec3 home{0, 0, 0.5}, r1{0.4, 0.3, 0}, r2{0.4, -0.3, 0};
+  EXPECT_NEAR(w.phase_end(), 1 + dist(home, r1), 1e-12);
+  run_until_idle(w);
+  EXPECT_NEAR(w.time(), 1 + dist(home, r1) + 2 + 3 + dist(r1, r2) + 4 + 5, 1e-12);
+}
+
+TEST(SymbolicWorld, AdvanceProcessesEveryEventInOneCall) {
+  SymbolicWorld w(tiny());
+  w.start(move("o1", "r1", "r2"));
+  w.advance(100);
+  EXPECT_EQ(w.poll(nullptr), MoveStatus::Succeeded);
+  EXPECT_EQ(w.time(), 100);
+  EXPECT_EQ(loc(w, "o1"), "r2");
+}
+
+TEST(SymbolicWorld, StartFailsAtOnceOnBadMoves) {
+  struct Case {
+    Move m;
+    const char* why;
+  };
+  const std::vector<Case> cases{{move("o9", "r1", "r2"), "not in the world"},
+                                {move("o1", "r2", "r3"), "is in r1, not in r2"},
+                                {move("o1", "r1", "r9"), "unknown location r9"},
+                                {move("t1", "r1", "t1"), "cannot go into itself"},
+                                {move("t1", "r1", "t1x"), "unknown location"}};
+  for (const auto& c : cases) {
+    SymbolicWorld w(tiny());
+    w.start(c.m);
+    std::string why;
+    EXPECT_EQ(w.poll(&why), MoveStatus::Failed) << c.m.action;
+    EXPECT_NE(why.find(c.why), std::string::npos) << why;
+    EXPECT_EQ(w.phase(), Phase::Idle);
+    EXPECT_FALSE(w.busy());
+    EXPECT_EQ(w.truth(), SymbolicWorld(tiny()).truth());
+  }
+  world::Intervention add = iv(Kind::AddContainer, "t2", "r4");
+  SymbolicWorldOptions o;
+  o.script = {add};
+  SymbolicWorld w(tiny(), o);
+  w.start(move("t1", "r1", "t2"));
+  std::string why;
+  EXPECT_EQ(w.poll(&why), MoveStatus::Failed);
+  EXPECT_NE(why.find("only goes into a region"), std::string::npos) << why;
+  w.start(move("o1", "", "r2"));  // no `from`: picked wherever it is
+  EXPECT_EQ(w.poll(nullptr), MoveStatus::Running);
+  EXPECT_THROW(w.start(move("o3", "r2", "r1")), std::logic_error);
+}
+
+// ---------------------------------------------------------------- interventions in every phase
+
+struct Outcome {
+  bool applied;
+  MoveStatus status;  // of the move, once the world is idle
+  const char* why;    // substring of the reason when Failed
+  const char* o1;     // where o1 ends ("" = gone)
+};
+
+struct InterventionCase {
+  const char* name;
+  std::vector<world::Intervention> what;    // applied in order; `applied` refers to the last one
+  Outcome before_grasp;                     // in Approach or Grasp
+  Outcome held;                             // in Carry or Place
+  Outcome placed;                           // in Retreat
+  std::map<std::string, std::string> also;  // other things' final locations ("" = gone)
+};
+
+std::vector<InterventionCase> intervention_cases() {
+  using S = MoveStatus;
+  const Outcome ok{true, S::Succeeded, "", "r2"};
+  const Outcome refused_ok{false, S::Succeeded, "", "r2"};
+  world::Intervention by_position = iv(Kind::Relocate, "o1");
+  by_position.position = world::Vec3{0.70, 0.40, 0};
+  return {
+      {"relocate o1 to r4",
+       {iv(Kind::Relocate, "o1", "r4")},
+       {true, S::Failed, "no longer in r1", "r4"},
+       {true, S::Failed, "taken from the gripper", "r4"},
+       {true, S::Succeeded, "", "r4"},
+       {}},
+      {"relocate o1 by position (r4)",
+       {by_position},
+       {true, S::Failed, "no longer in r1", "r4"},
+       {true, S::Failed, "taken from the gripper", "r4"},
+       {true, S::Succeeded, "", "r4"},
+       {}},
+      {"relocate o1 into full r3",
+       {iv(Kind::Relocate, "o1", "r3")},
+       refused_ok,
+       refused_ok,
+       refused_ok,
+       {{"o4", "r3"}}},
+      {"relocate o1 into tray t1",
+       {iv(Kind::Relocate, "o1", "t1")},
+       {true, S::Failed, "no longer in r1", "t1"},
+       {true, S::Failed, "taken from the gripper", "t1"},
+       {true, S::Succeeded, "", "t1"},
+       {}},
+      {"relocate tray t1 to r4 (carries o2)",
+       {iv(Kind::Relocate, "t1", "r4")},
+       ok,
+       ok,
+       ok,
+       {{"t1", "r4"}, {"o2", "t1"}}},
+      {"relocate tray into itself",
+       {iv(Kind::Relocate, "t1", "t1")},
+       refused_ok,
+       refused_ok,
+       refused_ok,
+       {{"t1", "r1"}}},
+      {"relocate unknown thing", {iv(Kind::Relocate, "o9", "r4")}, refused_ok, refused_ok, refused_ok, {}},
+      {"relocate to unknown location",
+       {iv(Kind::Relocate, "o3", "r9")},
+       refused_ok,
+       refused_ok,
+       refused_ok,
+       {{"o3", "r2"}}},
+      {"remove o1",
+       {iv(Kind::Remove, "o1")},
+       {true, S::Failed, "gone", ""},
+       {true, S::Failed, "taken from the gripper", ""},
+       {true, S::Succeeded, "", ""},
+       {}},
+      {"remove o3", {iv(Kind::Remove, "o3")}, ok, ok, ok, {{"o3", ""}}},
+      {"remove a container with remove",
+       {iv(Kind::Remove, "t1")},
+       refused_ok,
+       refused_ok,
+       refused_ok,
+       {{"t1", "r1"}}},
+      {"add x to r2", {iv(Kind::Add, "x", "r2", "block")}, ok, ok, ok, {{"x", "r2"}}},
+      {"add with a taken name",
+       {iv(Kind::Add, "o3", "r4")},
+       refused_ok,
+       refused_ok,
+       refused_ok,
+       {{"o3", "r2"}}},
+      {"add with a container class",
+       {iv(Kind::Add, "x", "r4", "tray")},
+       refused_ok,
+       refused_ok,
+       refused_ok,
+       {{"x", ""}}},
+      {"add into full r3", {iv(Kind::Add, "x", "r3")}, refused_ok, refused_ok, refused_ok, {{"x", ""}}},
+      {"fill r2 (two adds)",
+       {iv(Kind::Add, "x", "r2"), iv(Kind::Add, "y", "r2")},
+       {true, S::Failed, "r2 has no room", "r1"},
+       {true, S::Failed, "r2 has no room", "r1"},
+       {false, S::Succeeded, "", "r2"},
+       {}},
+      {"add container t2 to r4", {iv(Kind::AddContainer, "t2", "r4")}, ok, ok, ok, {{"t2", "r4"}}},
+      {"add container into a container",
+       {iv(Kind::AddContainer, "t2", "t1")},
+       refused_ok,
+       refused_ok,
+       refused_ok,
+       {{"t2", ""}}},
+      {"remove container t1 (o2 drops into r1)",
+       {iv(Kind::RemoveContainer, "t1")},
+       ok,
+       ok,
+       ok,
+       {{"t1", ""}, {"o2", "r1"}}},
+      {"remove container of an object",
+       {iv(Kind::RemoveContainer, "o3")},
+       refused_ok,
+       refused_ok,
+       refused_ok,
+       {{"o3", "r2"}}},
+      {"take from gripper (remove)",
+       {iv(Kind::TakeFromGripper)},
+       refused_ok,
+       {true, S::Failed, "taken from the gripper", ""},
+       refused_ok,
+       {}},
+      {"take from gripper to r4",
+       {iv(Kind::TakeFromGripper, "", "r4")},
+       refused_ok,
+       {true, S::Failed, "taken from the gripper", "r4"},
+       refused_ok,
+       {}},
+      {"take from gripper to full r3",
+       {iv(Kind::TakeFromGripper, "", "r3")},
+       refused_ok,
+       refused_ok,
+       refused_ok,
+       {{"o4", "r3"}}},
+  };
+}
+
+TEST(SymbolicWorld, EveryInterventionInEveryPhase) {
+  for (const auto& c : intervention_cases()) {
+    for (Phase p : {Phase::Approach, Phase::Grasp, Phase::Carry, Phase::Place, Phase::Retreat}) {
+      SCOPED_TRACE(std::string(c.name) + " in " + to_string(p));
+      SymbolicWorld w(tiny());
+      w.start(move("o1", "r1", "r2"));
+      to_middle_of(w, p);
+      const double t = w.time();
+      WorldEvent last;
+      for (const auto& i : c.what) last = w.apply(i);
+      const Outcome& e = p == Phase::Carry || p == Phase::Place ? c.held
+                         : p == Phase::Retreat                  ? c.placed
+                                                                : c.before_grasp;
+      EXPECT_EQ(last.applied, e.applied) << last.detail;
+      EXPECT_FALSE(last.detail.empty());
+      EXPECT_EQ(last.time, t);
+      EXPECT_EQ(w.check_invariants(), "");
+      const auto events = w.take_events();
+      EXPECT_EQ(events.size(), c.what.size());
+      EXPECT_TRUE(w.take_events().empty());
+      EXPECT_EQ(w.history().size(), c.what.size());
+      if (!e.applied) {  // a refused intervention changes nothing
+        const std::string* o1 = w.truth().location_of("o1");
+        ASSERT_TRUE(o1);
+        EXPECT_EQ(*o1, p == Phase::Carry || p == Phase::Place ? kInHand : p == Phase::Retreat ? "r2" : "r1");
+      }
+      run_until_idle(w);
+      std::string why;
+      EXPECT_EQ(w.poll(&why), e.status) << why;
+      if (e.status == MoveStatus::Failed) {
+        EXPECT_NE(why.find(e.why), std::string::npos) << why;
+      }
+      EXPECT_EQ(loc(w, "o1"), e.o1);
+      for (const auto& [thing, where] : c.also) EXPECT_EQ(loc(w, thing), where) << thing;
+      EXPECT_FALSE(w.busy());
+      EXPECT_EQ(w.check_invariants(), "");
+    }
+  }
+}
+
+TEST(SymbolicWorld, RemovedContainerSpillsIntoTheClosestRegionWithRoom) {
+  SymbolicWorld w(tiny());
+  ASSERT_TRUE(w.apply(iv(Kind::Add, "o5", "t1")).applied);  // t1 full: o2, o5
+  ASSERT_TRUE(w.apply(iv(Kind::Add, "x", "r1")).applied);   // r1 full: o1, t1, x
+  const WorldEvent e = w.apply(iv(Kind::RemoveContainer, "t1"));
+  ASSERT_TRUE(e.applied);
+  EXPECT_EQ(loc(w, "o2"), "r1");  // the freed place
+  EXPECT_EQ(loc(w, "o5"), "r4");  // r4 is 0.32 m from r1, r3 is full, r2 is 0.6 m
+  EXPECT_NE(e.detail.find("r1 has no room"), std::string::npos) << e.detail;
+  EXPECT_EQ(w.check_invariants(), "");
+}
+
+TEST(SymbolicWorld, PlaceIntoARemovedTrayPutsTheThingBack) {
+  SymbolicWorld w(tiny());
+  w.start(move("o1", "r1", "t1"));
+  to_middle_of(w, Phase::Carry);
+  ASSERT_TRUE(w.apply(iv(Kind::RemoveContainer, "t1")).applied);
+  EXPECT_EQ(w.poll(nullptr), MoveStatus::Running);
+  step_phase(w);  // carry ends
+  step_phase(w);  // place fails: return begins
+  EXPECT_EQ(w.phase(), Phase::Return);
+  EXPECT_EQ(loc(w, "o1"), kInHand);
+  EXPECT_EQ(w.poll(nullptr), MoveStatus::Running);
+  run_until_idle(w);
+  std::string why;
+  EXPECT_EQ(w.poll(&why), MoveStatus::Failed);
+  EXPECT_NE(why.find("t1"), std::string::npos) << why;
+  EXPECT_EQ(loc(w, "o1"), "r1");
+  EXPECT_EQ(loc(w, "o2"), "r1");
+  EXPECT_EQ(w.hand(), "r1");
+}
+
+TEST(SymbolicWorld, RelocatingTheHeldTrayKeepsItsContents) {
+  SymbolicWorld w(tiny());
+  w.start(move("t1", "r1", "r2"));
+  to_middle_of(w, Phase::Carry);
+  EXPECT_EQ(loc(w, "t1"), kInHand);
+  EXPECT_EQ(loc(w, "o2"), "t1");
+  EXPECT_FALSE(w.apply(iv(Kind::Relocate, "o3", "t1")).applied);  // the tray is in the gripper
+  ASSERT_TRUE(w.apply(iv(Kind::TakeFromGripper, "", "r4")).applied);
+  EXPECT_EQ(w.poll(nullptr), MoveStatus::Failed);
+  EXPECT_EQ(loc(w, "t1"), "r4");
+  EXPECT_EQ(loc(w, "o2"), "t1");
+  EXPECT_EQ(w.check_invariants(), "");
+}
+
+TEST(SymbolicWorld, RemovingTheHeldTraySpillsItsContents) {
+  SymbolicWorld w(tiny());
+  w.start(move("t1", "r1", "r2"));
+  to_middle_of(w, Phase::Place);  // the hand is over r2
+  const WorldEvent e = w.apply(iv(Kind::TakeFromGripper));
+  ASSERT_TRUE(e.applied);
+  EXPECT_EQ(e.what.subject, "t1");
+  EXPECT_EQ(loc(w, "t1"), "");
+  EXPECT_EQ(loc(w, "o2"), "r2");
+  EXPECT_EQ(w.poll(nullptr), MoveStatus::Failed);
+  EXPECT_EQ(w.check_invariants(), "");
+}
+
+TEST(SymbolicWorld, APositionOutsideEveryLocationIsNone) {
+  SymbolicWorld w(tiny());
+  world::Intervention off = iv(Kind::Relocate, "o3");
+  off.position = world::Vec3{0.0, 0.8, 0};
+  ASSERT_TRUE(w.apply(off).applied);
+  EXPECT_EQ(loc(w, "o3"), world::kNoLocation);
+  EXPECT_FALSE(w.apply(iv(Kind::Relocate, "o4", world::kNoLocation)).applied);  // only by position
+  EXPECT_EQ(w.check_invariants(), "");
+  w.start(move("o3", world::kNoLocation, "r2"));
+  const world::Vec3 home{0, 0, 0.5}, at{0.0, 0.8, 0};
+  EXPECT_NEAR(w.phase_end(), 0.5 + dist(home, at) / 0.25, 1e-12);
+  run_until_idle(w);
+  EXPECT_EQ(w.poll(nullptr), MoveStatus::Succeeded);
+  EXPECT_EQ(loc(w, "o3"), "r2");
+  EXPECT_EQ(w.check_invariants(), "");
+}
+
+// ---------------------------------------------------------------- failures and halts
+
+TEST(SymbolicWorld, DeterministicFailuresInEachPhase) {
+  for (Phase p : {Phase::Approach, Phase::Grasp, Phase::Carry, Phase::Place}) {
+    SCOPED_TRACE(to_string(p));
+    SymbolicWorldOptions o;
+    o.fails = [](const Move& m) { return m.thing == "o1"; };
+    o.fails_in = p;
+    SymbolicWorld w(tiny(), o);
+    w.start(move("o1", "r1", "r2"));
+    to_middle_of(w, p);
+    step_phase(w);
+    std::string why;
+    if (p == Phase::Approach || p == Phase::Grasp) {
+      EXPECT_EQ(w.phase(), Phase::Idle);
+      EXPECT_EQ(w.poll(&why), MoveStatus::Failed);
+      EXPECT_NE(why.find("failed"), std::string::npos) << why;
+      EXPECT_EQ(loc(w, "o1"), "r1");
+      EXPECT_EQ(w.hand(), "");
+    } else {
+      EXPECT_EQ(w.phase(), Phase::Return);
+      EXPECT_EQ(w.poll(nullptr), MoveStatus::Running);
+      EXPECT_EQ(loc(w, "o1"), kInHand);
+      EXPECT_FALSE(w.busy());
+      run_until_idle(w);
+      EXPECT_EQ(w.poll(&why), MoveStatus::Failed);
+      EXPECT_NE(why.find("put back in r1"), std::string::npos) << why;
+      EXPECT_EQ(loc(w, "o1"), "r1");
+      EXPECT_EQ(w.hand(), "r1");
+    }
+    // Other moves do not fail.
+    w.start(move("o3", "r2", "r4"));
+    run_until_idle(w);
+    EXPECT_EQ(w.poll(nullptr), MoveStatus::Succeeded);
+  }
+}
+
+TEST(SymbolicWorld, FailureWithAFullSourceGoesToTheClosestValidLocation) {
+  SymbolicWorldOptions o;
+  o.fails = [](const Move&) { return true; };
+  o.fails_in = Phase::Place;
+  SymbolicWorld w(tiny(), o);
+  w.start(move("o1", "r1", "r2"));
+  to_middle_of(w, Phase::Carry);
+  ASSERT_TRUE(w.apply(iv(Kind::Add, "x", "r1")).applied);
+  ASSERT_TRUE(w.apply(iv(Kind::Add, "y", "r1")).applied);  // r1: t1, x, y
+  run_until_idle(w);
+  EXPECT_EQ(w.poll(nullptr), MoveStatus::Failed);
+  EXPECT_EQ(loc(w, "o1"), "t1");  // the tray stands in r1 (distance 0) and has room
+  EXPECT_EQ(w.check_invariants(), "");
+}
+
+TEST(SymbolicWorld, SeededFailuresHitEveryPhaseAndAreDeterministic) {
+  std::set<std::string> reasons;
+  for (std::uint64_t seed = 1; seed <= 40; ++seed) {
+    SymbolicWorldOptions o;
+    o.failure_probability = 1;
+    o.seed = seed;
+    SymbolicWorld a(tiny(), o), b(tiny(), o);
+    for (SymbolicWorld* w : {&a, &b}) {
+      w->start(move("o1", "r1", "r2"));
+      run_until_idle(*w);
+      EXPECT_EQ(loc(*w, "o1"), "r1");
+    }
+    std::string wa, wb;
+    ASSERT_EQ(a.poll(&wa), MoveStatus::Failed);
+    ASSERT_EQ(b.poll(&wb), MoveStatus::Failed);
+    EXPECT_EQ(wa, wb);
+    EXPECT_EQ(a.time(), b.time());
+    reasons.insert(wa.substr(0, wa.find(' ')));
+  }
+  EXPECT_EQ(reasons, (std::set<std::string>{"approach", "grasp", "carry", "place"}));
+  SymbolicWorldOptions never;
+  never.failure_probability = 0;
+  SymbolicWorld w(tiny(), never);
+  w.start(move("o1", "r1", "r2"));
+  run_until_idle(w);
+  EXPECT_EQ(w.poll(nullptr), MoveStatus::Succeeded);
+}
+
+TEST(SymbolicWorld, HaltInEachPhase) {
+  struct Case {
+    Phase phase;
+    Phase after;     // the phase that makes the arm safe
+    const char* o1;  // where o1 ends
+  };
+  for (const Case& c : {Case{Phase::Approach, Phase::Retreat, "r1"}, Case{Phase::Grasp, Phase::Retreat, "r1"},
+                        Case{Phase::Carry, Phase::Return, "r1"}, Case{Phase::Place, Phase::Return, "r1"},
+                        Case{Phase::Retreat, Phase::Retreat, "r2"}}) {
+    SCOPED_TRACE(to_string(c.phase));
+    SymbolicWorld w(tiny());
+    w.start(move("o1", "r1", "r2"));
+    to_middle_of(w, c.phase);
+    w.halt();
+    std::string why;
+    EXPECT_EQ(w.poll(&why), MoveStatus::Failed);
+    EXPECT_EQ(why, "halted");
+    EXPECT_TRUE(w.busy());
+    EXPECT_EQ(w.phase(), c.after);
+    EXPECT_GT(w.phase_end(), w.time());
+    EXPECT_EQ(w.check_invariants(), "");
+    w.halt();  // again: no change
+    EXPECT_EQ(w.phase(), c.after);
+    run_until_idle(w);
+    EXPECT_FALSE(w.busy());
+    EXPECT_EQ(w.poll(&why), MoveStatus::Failed);
+    EXPECT_EQ(why, "halted");
+    EXPECT_EQ(loc(w, "o1"), c.o1);
+    w.start(move("o3", "r2", "r4"));
+    run_until_idle(w);
+    EXPECT_EQ(w.poll(nullptr), MoveStatus::Succeeded);
+  }
+  SymbolicWorld idle(tiny());
+  idle.halt();
+  EXPECT_FALSE(idle.busy());
+  EXPECT_EQ(idle.poll(nullptr), MoveStatus::Idle);
+}
+
+TEST(SymbolicWorld, HaltReturnTimeFollowsTheModel) {
+  SymbolicWorld w(tiny());
+  w.start(move("o1", "r1", "r2"));
+  to_middle_of(w, Phase::Place);  // the hand is at r2
+  w.halt();
+  const world::Vec3 r1{0.4, 0.3, 0}, r2{0.4, -0.3, 0};
+  EXPECT_NEAR(w.phase_end() - w.time(), 0.5 + dist(r2, r1) / 0.25 + 0.5, 1e-12);
+}
+
+TEST(SymbolicWorld, HaltWithTheSourceGoneReturnsToTheClosestValidLocation) {
+  SymbolicWorld w(tiny());
+  w.start(move("o2", "t1", "r2"));
+  to_middle_of(w, Phase::Carry);
+  ASSERT_TRUE(w.apply(iv(Kind::RemoveContainer, "t1")).applied);
+  w.halt();
+  EXPECT_TRUE(w.busy());
+  run_until_idle(w);
+  EXPECT_EQ(loc(w, "o2"), "r1");  // where the tray stood
+  EXPECT_EQ(w.check_invariants(), "");
+}
+
+TEST(SymbolicWorld, TakingTheThingDuringAHaltReturnEndsIt) {
+  SymbolicWorld w(tiny());
+  w.start(move("o1", "r1", "r2"));
+  to_middle_of(w, Phase::Carry);
+  w.halt();
+  ASSERT_TRUE(w.busy());
+  ASSERT_TRUE(w.apply(iv(Kind::TakeFromGripper, "", "r4")).applied);
+  EXPECT_FALSE(w.busy());
+  std::string why;
+  EXPECT_EQ(w.poll(&why), MoveStatus::Failed);
+  EXPECT_EQ(why, "halted");
+  EXPECT_EQ(loc(w, "o1"), "r4");
+}
+
+// ---------------------------------------------------------------- scripted interventions
+
+TEST(SymbolicWorld, ScriptedInterventionsApplyAtTheirExactTime) {
+  SymbolicWorldOptions o;
+  world::Intervention late = iv(Kind::Relocate, "o3", "r4");
+  late.time = 1.234;
+  world::Intervention first = iv(Kind::Add, "x", "r2");
+  first.time = 0;
+  world::Intervention mid = iv(Kind::Remove, "o4");
+  mid.time = 1.234;  // same time: kept in script order
+  o.script = {late, mid, first};
+  SymbolicWorld w(tiny(), o);
+  EXPECT_EQ(loc(w, "x"), "r2");  // time 0: applied by the constructor
+  EXPECT_EQ(w.next_event_time(), 1.234);
+  w.start(move("o1", "r1", "r2"));
+  const double approach_end = w.phase_end();
+  ASSERT_GT(approach_end, 1.234);
+  w.advance(1.0);
+  EXPECT_EQ(loc(w, "o3"), "r2");
+  EXPECT_EQ(w.next_event_time(), 1.234);
+  w.advance(w.next_event_time() - w.time());
+  EXPECT_EQ(loc(w, "o3"), "r4");
+  EXPECT_EQ(loc(w, "o4"), "");
+  const auto events = w.take_events();
+  ASSERT_EQ(events.size(), 3u);
+  EXPECT_EQ(events[0].what.subject, "x");
+  EXPECT_EQ(events[0].time, 0);
+  EXPECT_EQ(events[1].what.subject, "o3");
+  EXPECT_EQ(events[1].time, 1.234);
+  EXPECT_EQ(events[2].what.subject, "o4");
+  EXPECT_EQ(events[2].time, 1.234);
+  EXPECT_EQ(w.phase_end(), approach_end);  // interventions do not change a running phase
+  EXPECT_EQ(w.next_event_time(), approach_end);
+  run_until_idle(w);
+  EXPECT_EQ(w.poll(nullptr), MoveStatus::Succeeded);
+  EXPECT_TRUE(w.take_events().empty());
+}
+
+TEST(SymbolicWorld, ScriptedInterventionInsideOneAdvanceInterruptsAtItsTime) {
+  // The script takes o1 from the gripper during the carry; one long advance
+  // must stop the move at that moment, not at the end of the carry.
+  SymbolicWorld probe(tiny());
+  probe.start(move("o1", "r1", "r2"));
+  to_middle_of(probe, Phase::Carry);
+  const double t_take = probe.time();
+
+  SymbolicWorldOptions o;
+  world::Intervention take = iv(Kind::TakeFromGripper, "", "r4");
+  take.time = t_take;
+  o.script = {take};
+  SymbolicWorld w(tiny(), o);
+  w.start(move("o1", "r1", "r2"));
+  w.advance(100);
+  EXPECT_EQ(w.poll(nullptr), MoveStatus::Failed);
+  EXPECT_EQ(loc(w, "o1"), "r4");
+  ASSERT_EQ(w.history().size(), 1u);
+  EXPECT_EQ(w.history()[0].time, t_take);
+  EXPECT_TRUE(w.history()[0].applied);
+}
+
+TEST(SymbolicWorld, TheScenarioScriptRunsWhenPassed) {
+  const auto s = world::load_scenario("3-block-tray");
+  SymbolicWorldOptions o;
+  o.script = s.interventions;
+  SymbolicWorld w(s, o);
+  w.start(move("o2", "r1", "r2"));
+  run_until_idle(w);
+  EXPECT_EQ(loc(w, "o2"), "r2");
+  w.advance(20 - w.time());
+  EXPECT_EQ(loc(w, "o2"), "r1");
+  ASSERT_EQ(w.history().size(), 1u);
+  EXPECT_EQ(w.history()[0].time, 20);
+}
+
+// ---------------------------------------------------------------- random interventions
+
+// A crude loop: start random moves, sometimes halt, jump to the next event.
+struct RandomRun {
+  std::vector<WorldEvent> events;
+  std::vector<std::string> outcomes;
+  double end_time = 0;
+};
+
+RandomRun random_run(const world::Scenario& s, std::uint64_t seed, int steps, std::string* broken,
+                     std::map<Kind, int>* applied_kinds = nullptr) {
+  SymbolicWorldOptions o;
+  o.seed = seed;
+  o.random_rate = 0.5;
+  o.failure_probability = 0.2;
+  SymbolicWorld w(s, o);
+  std::uint64_t r = seed * 7919 + 1;
+  auto next = [&r](std::uint64_t n) {
+    r = r * 6364136223846793005ull + 1442695040888963407ull;
+    return (r >> 33) % n;
+  };
+  RandomRun run;
+  for (int i = 0; i < steps && broken->empty(); ++i) {
+    if (w.poll(nullptr) != MoveStatus::Running && !w.busy()) {
+      const auto p = w.observe();
+      std::vector<std::string> things, locations;
+      for (const auto& [n, t] : p.things) things.push_back(n);
+      for (const auto& rg : s.regions) locations.push_back(rg.name);
+      for (const auto& [n, t] : p.things)
+        if (t.container) locations.push_back(n);
+      if (!things.empty()) {
+        const std::string thing = things[next(things.size())];
+        const std::string to = locations[next(locations.size())];
+        w.start(move(thing, next(8) ? *p.location_of(thing) : "r1", to));
+      }
+    } else if (next(20) == 0) {
+      w.halt();
+    }
+    const double t = w.next_event_time();
+    w.advance(std::isfinite(t) ? t - w.time() : 1.0);
+    *broken = w.check_invariants();
+    std::string why;
+    const MoveStatus st = w.poll(&why);
+    run.outcomes.push_back(std::string(to_string(st)) + " " + why + " " + to_string(w.phase()));
+    for (auto& e : w.take_events()) {
+      if (e.applied && applied_kinds) ++(*applied_kinds)[e.what.kind];
+      run.events.push_back(std::move(e));
+    }
+  }
+  run.end_time = w.time();
+  return run;
+}
+
+TEST(SymbolicWorld, RandomInterventionsKeepTheInvariants) {
+  std::map<Kind, int> applied;
+  int refused = 0, steps = 0;
+  for (const char* name : {"tiny", "3-block-tray", "3-block"}) {
+    const auto s = std::string(name) == "tiny" ? tiny() : world::load_scenario(name);
+    for (std::uint64_t seed = 1; seed <= 60; ++seed) {
+      std::string broken;
+      const RandomRun run = random_run(s, seed, 100, &broken, &applied);
+      ASSERT_EQ(broken, "") << name << " seed " << seed;
+      for (const auto& e : run.events) {
+        EXPECT_FALSE(e.detail.empty());
+        if (!e.applied) ++refused;
+      }
+      steps += static_cast<int>(run.outcomes.size());
+    }
+  }
+  EXPECT_GE(steps, 15000);
+  for (Kind k : {Kind::Relocate, Kind::Add, Kind::Remove, Kind::AddContainer, Kind::RemoveContainer,
+                 Kind::TakeFromGripper})
+    EXPECT_GT(applied[k], 0) << static_cast<int>(k);
+  EXPECT_GT(refused, 0);
+}
+
+TEST(SymbolicWorld, DeterministicPerSeed) {
+  const auto s = tiny();
+  std::string broken;
+  const RandomRun a = random_run(s, 5, 300, &broken), b = random_run(s, 5, 300, &broken),
+                  c = random_run(s, 6, 300, &broken);
+  ASSERT_EQ(broken, "");
+  ASSERT_EQ(a.events.size(), b.events.size());
+  for (std::size_t i = 0; i < a.events.size(); ++i) {
+    EXPECT_EQ(a.events[i].time, b.events[i].time);
+    EXPECT_EQ(a.events[i].detail, b.events[i].detail);
+  }
+  EXPECT_EQ(a.outcomes, b.outcomes);
+  EXPECT_EQ(a.end_time, b.end_time);
+  EXPECT_NE(a.end_time, c.end_time);
+}
+
+TEST(SymbolicWorld, RandomInterventionsStayInTheirWindowAndGetFreshNames) {
+  SymbolicWorldOptions o;
+  o.random_rate = 5;
+  o.random_start = 10;
+  o.random_end = 20;
+  o.random_kinds = {Kind::Add};
+  SymbolicWorld w(world::load_scenario("3-block"), o);
+  EXPECT_GE(w.next_event_time(), 10);
+  w.advance(100);
+  ASSERT_FALSE(w.history().empty());
+  std::set<std::string> names;
+  for (const auto& e : w.history()) {
+    EXPECT_GE(e.time, 10);
+    EXPECT_LT(e.time, 20);
+    EXPECT_EQ(e.what.subject[0], 'x');
+    EXPECT_TRUE(names.insert(e.what.subject).second);
+    EXPECT_EQ(e.what.cls, "block");
+  }
+  EXPECT_EQ(w.next_event_time(), std::numeric_limits<double>::infinity());
+  EXPECT_EQ(w.check_invariants(), "");
+}
+
+}  // namespace
+}  // namespace rtamp::exec
