@@ -19,6 +19,7 @@ world::Scenario scene(int regions, int objects, int containers, int cap = 8) {
     world::Region r;
     r.name = "r" + std::to_string(i + 1);
     r.center = {0.5, 0.5 * i, 0};
+    r.size = {0.4, 0.4, 0};  // a default tray (0.24 x 0.16) fits
     r.capacity = cap;
     s.regions.push_back(r);
   }

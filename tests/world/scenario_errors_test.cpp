@@ -185,6 +185,8 @@ TEST(ScenarioErrors, Geometry) {
          "object 'o1' at [0.9, 0.9, 0] is outside every region and container"});
   check({"object below the table", with_line(6, "  - {name: o1, position: [0.4, 0.3, -0.5]}"), 6, "[0.4",
          "outside every"});
+  check({"object bigger than its region", with_line(6, "  - {name: o1, position: [0.4, 0.3, 0], size: [0.31, 0.1, 0.04]}"),
+         6, "[0.31", "object 'o1' (0.31 x 0.1 m) does not fit in region 'r1' (0.3 x 0.3 m"});
   check({"overlapping regions", with_line(4, "  - {name: r2, center: [0.5, 0.35, 0], size: [0.3, 0.3], capacity: 4}"), 4,
          "{", "region 'r2' overlaps region 'r1'"});
   check({"coordinates out of range", with_line(6, "  - {name: o1, position: [4000, 0.3, 0]}"), 6, "[4000",
@@ -197,6 +199,14 @@ TEST(ScenarioErrors, Containers) {
          "container 't1' at [2, 2, 0] is not in any region"});
   check({"containers overlap", valid() + tray + "  - {name: t2, position: [0.45, -0.3, 0]}\n", 12, "{",
          "container 't2' overlaps container 't1'"});
+  check({"container bigger than its region",
+         valid() + "containers:\n  - {name: t1, position: [0.4, -0.3, 0], size: [0.4, 0.2, 0.03]}\n", 11, "[0.4, 0.2",
+         "container 't1' (0.4 x 0.2 m) does not fit in region 'r2' (0.3 x 0.3 m; things keep their orientation)"});
+  check({"object bigger than the floor of its tray",
+         with_line(6, "  - {name: o1, position: [0.4, 0.3, 0]}\n  - {name: o2, position: [0.4, -0.3, 0], "
+                      "size: [0.2, 0.15, 0.04]}") +
+             tray,
+         7, "[0.2", "object 'o2' (0.2 x 0.15 m) does not fit in container 't1' (its floor inside the rims is 0.224 x 0.144 m"});
   check({"container into container",
          valid() + tray + "  - {name: t2, position: [0.4, 0.3, 0], size: [0.1, 0.1, 0.03]}\n" +
              "operator:\n  - {time: 1, action: relocate, container: t2, to: t1}\n",

@@ -159,6 +159,7 @@ void Planner::rebuild() {
   graph_.reset();
   lab_.reset();
   ts_ = std::make_unique<task::System>(scenario_, placement_, hand_);
+  ts_->forbid_moves(forbidden_);
   lab_ = std::make_unique<task::Labeling>(*ts_, ba_.atoms, parse_atom);
   if (options_.symmetry && !(model_->depends() & kDependsThing)) ts_->set_symmetry(lab_->symmetry_groups());
   dirty_ = false;
@@ -190,6 +191,19 @@ void Planner::set_placement(world::Placement placement, std::string hand) {
   if (!same) throw Error("set_placement: the placement names other things than the scenario (use apply())");
   placement_ = std::move(placement);
   hand_ = std::move(hand);
+}
+
+void Planner::forbid_move(const std::string& thing, const std::string& location) {
+  const std::pair<std::string, std::string> m{thing, location};
+  if (std::find(forbidden_.begin(), forbidden_.end(), m) != forbidden_.end()) return;
+  forbidden_.push_back(m);
+  dirty_ = true;
+}
+
+void Planner::clear_forbidden_moves() {
+  if (forbidden_.empty()) return;
+  forbidden_.clear();
+  dirty_ = true;
 }
 
 void Planner::set_automaton_states(std::vector<std::uint32_t> states) {

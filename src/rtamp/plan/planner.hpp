@@ -105,6 +105,16 @@ class Planner {
   // rtamp::Error for a state >= automaton().num_states().
   void set_automaton_states(std::vector<std::uint32_t> states);
   const std::vector<std::uint32_t>& automaton_states() const { return ba_starts_; }
+  // Moves that failed physically (e.g. the arm found no free spot), fed back
+  // by the executor: move(thing, location) is in no plan until
+  // clear_forbidden_moves(). Kept by name across TS rebuilds (a name the TS
+  // does not know, e.g. a removed thing, is ignored while it is unknown);
+  // listed once each, in the order forbidden. A new entry or a clear marks the
+  // TS dirty: the next plan() rebuilds the TS and the product graph (the
+  // motion-cost cache is kept).
+  void forbid_move(const std::string& thing, const std::string& location);
+  void clear_forbidden_moves();
+  const std::vector<std::pair<std::string, std::string>>& forbidden_moves() const { return forbidden_; }
 
   const world::Scenario& scenario() const { return scenario_; }
   const task::System& system();
@@ -135,6 +145,7 @@ class Planner {
   world::Placement placement_;
   std::string hand_;
   bool dirty_ = true;  // TS must be rebuilt
+  std::vector<std::pair<std::string, std::string>> forbidden_;  // (thing, location) by name
   std::unique_ptr<task::System> ts_;
   std::unique_ptr<task::Labeling> lab_;
   std::unique_ptr<ProductGraph> graph_;  // astar-exp: kept while the TS is unchanged

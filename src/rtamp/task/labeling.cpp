@@ -137,15 +137,14 @@ std::vector<bool> Labeling::named_things() const {
 std::vector<std::vector<unsigned>> Labeling::symmetry_groups() const {
   const auto named = named_things();
   std::vector<std::vector<unsigned>> groups;
-  std::vector<std::string> classes;
   for (unsigned t = 0; t < ts_->num_objects(); ++t) {
     if (named[t]) continue;
+    // Same class and the same moves (footprint rules, forbidden moves).
     std::size_t g = 0;
-    while (g < classes.size() && classes[g] != ts_->thing_class(t)) ++g;
-    if (g == classes.size()) {
-      classes.push_back(ts_->thing_class(t));
-      groups.emplace_back();
-    }
+    while (g < groups.size() &&
+           !(ts_->thing_class(groups[g][0]) == ts_->thing_class(t) && ts_->same_moves(groups[g][0], t)))
+      ++g;
+    if (g == groups.size()) groups.emplace_back();
     groups[g].push_back(t);
   }
   return groups;

@@ -59,7 +59,10 @@ class Labeling {
   const System& system() const { return *ts_; }
   // Things named individually by some atom (`x in L`): they are never interchangeable.
   std::vector<bool> named_things() const;
-  // The symmetry groups the labeling allows: objects of one class that no atom names.
+  // The symmetry groups the labeling allows: objects of one class that no atom
+  // names and that have the same moves in the System (System::same_moves():
+  // the same footprint rules and forbidden moves), so labels and enabled moves
+  // are invariant under permuting a group.
   std::vector<std::vector<unsigned>> symmetry_groups() const;
 
  private:

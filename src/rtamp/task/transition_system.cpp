@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <bit>
 #include <cmath>
+#include <limits>
 
 #include "rtamp/util/error.hpp"
 #include "rtamp/world/geometry.hpp"
@@ -46,6 +47,7 @@ System::System(const world::Scenario& scenario, const world::Placement& placemen
   for (const auto& n : thing_names_) uids_.push_back(fnv1a(n));
   for (const auto& r : scenario_.regions) capacities_.push_back(r.capacity);
   for (const auto& c : scenario_.containers) capacities_.push_back(c.capacity);
+  build_fit_tables();
 
   // Field width: values 0..num_locations() (home included).
   layout_.init(std::max(1u, static_cast<unsigned>(std::bit_width(num_locations()))), num_things() + 1);
@@ -61,18 +63,88 @@ System::System(const world::Scenario& scenario, const world::Placement& placemen
   next_.assign(num_things(), -1);
 }
 
+void System::build_fit_tables() {
+  const unsigned T = num_things(), L = num_locations();
+  const world::FitRules& rules = options_.fit;
+  std::vector<world::Extent> usable;
+  for (const auto& r : scenario_.regions) usable.push_back(world::usable_extent(r));
+  for (const auto& c : scenario_.containers) usable.push_back(world::usable_extent(c, rules));
+  auto size_of = [&](unsigned t) -> const world::Vec3& {
+    return is_container(t) ? scenario_.containers[t - n_objects_].size : scenario_.objects[t].size;
+  };
+  fits_.assign(std::size_t{T} * L, 0);
+  allowed_.assign(std::size_t{T} * L, 0);
+  cells_.assign(T, 0);
+  rooms_.assign(L, std::numeric_limits<std::int64_t>::max() / 4);
+  for (unsigned t = 0; t < T; ++t) {
+    if (!options_.ignore_geometry)
+      cells_[t] = static_cast<std::int64_t>(std::floor(world::cell_area(size_of(t), is_container(t), rules) / kAreaUnit));
+    for (unsigned l = 0; l < L; ++l) {
+      const bool f = options_.ignore_geometry || world::fits(size_of(t), usable[l]);
+      fits_[std::size_t{t} * L + l] = f;
+      // Containers only into regions (never into themselves or other containers).
+      allowed_[std::size_t{t} * L + l] = f && (!is_container(t) || l < n_regions_);
+    }
+  }
+  if (!options_.ignore_geometry)
+    for (unsigned l = 0; l < L; ++l)
+      rooms_[l] = static_cast<std::int64_t>(std::ceil(world::room_area(usable[l], rules) / kAreaUnit));
+}
+
+void System::forbid_move(unsigned thing, unsigned loc) {
+  if (thing >= num_things() || loc >= num_locations() || forbidden(thing, loc)) return;
+  forbidden_.emplace_back(thing, loc);
+  allowed_[std::size_t{thing} * num_locations() + loc] = 0;
+  if (group_[thing] < 0) return;
+  // No longer interchangeable with the rest of its group.
+  std::vector<std::vector<unsigned>> groups = groups_;
+  for (auto& g : groups) g.erase(std::remove(g.begin(), g.end(), thing), g.end());
+  set_symmetry(groups);
+}
+
+void System::forbid_moves(const std::vector<std::pair<std::string, std::string>>& moves) {
+  for (const auto& [thing, loc] : moves) {
+    const int t = find_thing(thing), l = find_location(loc);
+    if (t >= 0 && l >= 0) forbid_move(static_cast<unsigned>(t), static_cast<unsigned>(l));
+  }
+}
+
+bool System::forbidden(unsigned thing, unsigned loc) const {
+  return std::find(forbidden_.begin(), forbidden_.end(), std::make_pair(thing, loc)) != forbidden_.end();
+}
+
+bool System::same_moves(unsigned a, unsigned b) const {
+  if (a >= num_things() || b >= num_things()) return false;
+  if (is_container(a) != is_container(b) || cells_[a] != cells_[b]) return false;
+  const unsigned L = num_locations();
+  return std::equal(allowed_.begin() + std::ptrdiff_t(std::size_t{a} * L), allowed_.begin() + std::ptrdiff_t(std::size_t{a + 1} * L),
+                    allowed_.begin() + std::ptrdiff_t(std::size_t{b} * L));
+}
+
 void System::set_symmetry(const std::vector<std::vector<unsigned>>& groups) {
-  group_.assign(num_things(), -1);
-  prev_.assign(num_things(), -1);
-  next_.assign(num_things(), -1);
-  groups_.clear();
+  // Checked before anything changes (a bad call leaves the symmetry as it was).
+  std::vector<std::vector<unsigned>> clean;
+  std::vector<bool> taken(num_things(), false);
   for (auto g : groups) {
     std::sort(g.begin(), g.end());
     g.erase(std::unique(g.begin(), g.end()), g.end());
     if (g.size() < 2) continue;
-    for (unsigned t : g)
-      if (t >= num_things() || is_container(t) || group_[t] >= 0)
+    for (unsigned t : g) {
+      if (t >= num_things() || is_container(t) || taken[t])
         throw Error("bad symmetry group (containers and overlapping groups are not allowed)");
+      taken[t] = true;
+    }
+    for (unsigned t : g)
+      if (!same_moves(t, g[0]))
+        throw Error("bad symmetry group ('" + thing_names_[t] + "' and '" + thing_names_[g[0]] +
+                    "' differ in footprint or forbidden moves)");
+    clean.push_back(std::move(g));
+  }
+  group_.assign(num_things(), -1);
+  prev_.assign(num_things(), -1);
+  next_.assign(num_things(), -1);
+  groups_.clear();
+  for (auto& g : clean) {
     const int id = static_cast<int>(groups_.size());
     for (std::size_t i = 0; i < g.size(); ++i) {
       group_[g[i]] = id;
@@ -139,16 +211,31 @@ void System::occupancy(const State& s, int* counts) const {
   for (unsigned t = 0; t < num_things(); ++t) ++counts[location(s, t)];
 }
 
+void System::occupancy(const State& s, int* counts, std::int64_t* used) const {
+  std::fill(counts, counts + num_locations(), 0);
+  std::fill(used, used + num_locations(), std::int64_t{0});
+  for (unsigned t = 0; t < num_things(); ++t) {
+    const std::uint32_t l = location(s, t);
+    ++counts[l];
+    used[l] += cells_[t];
+  }
+}
+
 bool System::enabled(const State& s, const Action& a) const {
   if (a.is_stay()) return true;
   if (a.thing >= num_things() || a.to >= num_locations()) return false;
   const std::uint32_t at = location(s, a.thing);
   if (a.to == at) return false;
-  if (is_container(a.thing) && a.to >= n_regions_) return false;
+  if (!allowed_[std::size_t{a.thing} * num_locations() + a.to]) return false;
   if (options_.ignore_capacity) return true;
   int n = 0;
-  for (unsigned t = 0; t < num_things(); ++t) n += location(s, t) == a.to;
-  return n < capacities_[a.to];
+  std::int64_t used = 0;
+  for (unsigned t = 0; t < num_things(); ++t)
+    if (location(s, t) == a.to) {
+      ++n;
+      used += cells_[t];
+    }
+  return n < capacities_[a.to] && used + cells_[a.thing] <= rooms_[a.to];
 }
 
 State System::successor(const State& s, const Action& a) const {
@@ -161,16 +248,18 @@ State System::successor(const State& s, const Action& a) const {
 
 bool System::valid(const State& s) const {
   int counts[kMaxLocations + 1];
+  std::int64_t used[kMaxLocations + 1];
   for (unsigned t = 0; t < num_things(); ++t) {
     const std::uint32_t l = location(s, t);
     if (l >= num_locations()) return false;
     if (is_container(t) && l >= n_regions_) return false;
+    if (!fits(t, l)) return false;
   }
   if (hand(s) > num_locations()) return false;
   if (options_.ignore_capacity) return true;
-  occupancy(s, counts);
+  occupancy(s, counts, used);
   for (unsigned l = 0; l < num_locations(); ++l)
-    if (counts[l] > capacities_[l]) return false;
+    if (counts[l] > capacities_[l] || used[l] > rooms_[l]) return false;
   return true;
 }
 

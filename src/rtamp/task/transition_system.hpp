@@ -10,11 +10,31 @@
 //               and only occurs as the hand's location.
 // Actions: move(t, l) picks thing t wherever it is and places it at l. It is
 // enabled iff l is not t's current location, l is not t itself, a container is
-// only placed in a region (containers do not nest), and l has room
-// (things directly at l < capacity(l); a container counts 1 in its region, its
-// contents count only in the container). Moving a container carries its
-// contents: their location stays the container. After move(t, l) the hand is
-// at l. stay is always enabled and changes nothing. δ_t is deterministic.
+// only placed in a region (containers do not nest), t's footprint fits l, the
+// move is not forbidden, and l has room: fewer things directly at l than
+// capacity(l) (a container counts 1 in its region, its contents count only in
+// the container) and the area bound below holds. Moving a container carries
+// its contents: their location stays the container. After move(t, l) the hand
+// is at l. stay is always enabled and changes nothing. δ_t is deterministic.
+//
+// Footprints (world/fit.hpp has the rules and why they are sound): things keep
+// their orientation when placed (the skills do not rotate them), so t *fits* l
+// iff t's x and y sizes are at most l's usable extents (a region's size; a
+// container's size minus its rims) — exactly when world::free_spot() finds a
+// spot in the empty location. *Room* is an area bound: every thing at l takes
+// a cell (its footprint grown by the placement gap) and l offers its usable
+// area grown by the gap; move(t, l) needs used(l) + cell(t) <= room(l).
+// Guarantee: if the bound refuses a move, no arrangement of the things at l
+// plus t that keeps the skills' clearances (world::FitRules) exists — it never
+// rules out a placement that can succeed; it may allow one that a greedy spot
+// search then fails (dense packings), which the executor reports and the
+// planner learns through forbid_move(). Cells and rooms are integers (units of
+// 1e-8 m², cells rounded down, rooms up, so rounding never refuses more).
+// fits, cells and rooms are tabulated per (thing, location) at construction:
+// for_each_move and enabled() do no geometry and no allocation.
+//
+// Forbidden moves (thing, location) are excluded from for_each_move and
+// enabled() (a move that failed physically, fed back by the executor).
 //
 // Geometry used by motion-cost models (plan/motion_cost.hpp): the *point* of a
 // region is its centre; of a container, the point of the region it stands in;
@@ -30,6 +50,7 @@
 #include <vector>
 
 #include "rtamp/task/state.hpp"
+#include "rtamp/world/fit.hpp"
 #include "rtamp/world/placement.hpp"
 #include "rtamp/world/scenario.hpp"
 
@@ -41,15 +62,18 @@ inline constexpr unsigned kMaxLocations = 254;  // regions + containers (fields 
 class System {
  public:
   struct Options {
-    bool ignore_capacity = false;  // used to diagnose "capacity" failures
+    bool ignore_capacity = false;  // ignore how much a location holds (capacity and room): diagnoses "capacity"
+    bool ignore_geometry = false;  // every thing fits every location and rooms are unbounded
+    world::FitRules fit;           // clearances and rims of the footprint rules
   };
 
   // Things and locations from the scenario; the initial state from
   // `placement` (every thing must be listed) and the hand's location `hand`
   // ("" or "home": home). Throws rtamp::Error on unknown names, things in no
   // location ("none") and containers inside containers. An over-full location
-  // is accepted (a person may have over-filled it): nothing more can be put
-  // there until things are taken out; valid() reports it.
+  // (by count or by room), or a thing where it does not fit, is accepted (a
+  // person may have put it there): nothing more can be put there until things
+  // are taken out; valid() reports it.
   System(const world::Scenario& scenario, const world::Placement& placement, const std::string& hand, Options options);
   System(const world::Scenario& scenario, const world::Placement& placement, const std::string& hand = {})
       : System(scenario, placement, hand, Options{}) {}
@@ -80,6 +104,25 @@ class System {
   int find_thing(const std::string& name) const;
   int find_location(const std::string& name) const;  // regions and containers
   int capacity(unsigned loc) const { return capacities_[loc]; }
+  // Footprint tables (see the header comment): t fits l at all; t's cell and
+  // l's room in area units (kAreaUnit m²; room is unbounded with ignore_geometry).
+  bool fits(unsigned thing, unsigned loc) const { return fits_[thing * num_locations() + loc] != 0; }
+  std::int64_t cell(unsigned thing) const { return cells_[thing]; }
+  std::int64_t room(unsigned loc) const { return rooms_[loc]; }
+  static constexpr double kAreaUnit = 1e-8;  // m²
+
+  // Forbidden moves. forbid_move(t, l) excludes move(t, l) from for_each_move
+  // and enabled(); out-of-range indices are ignored. If t is in a symmetry
+  // group it leaves it (it is no longer interchangeable). By name: unknown
+  // names are ignored (the thing may be gone). Listed in the order forbidden.
+  void forbid_move(unsigned thing, unsigned loc);
+  void forbid_moves(const std::vector<std::pair<std::string, std::string>>& moves);
+  bool forbidden(unsigned thing, unsigned loc) const;
+  const std::vector<std::pair<unsigned, unsigned>>& forbidden_moves() const { return forbidden_; }
+  // Two things have the same enabled-move rule (same fits row, cell and
+  // forbidden moves, both objects or both containers): what symmetry needs
+  // besides labels and costs.
+  bool same_moves(unsigned a, unsigned b) const;
 
   std::uint32_t location(const State& s, unsigned thing) const { return layout_.get(s, thing); }
   std::uint32_t hand(const State& s) const { return layout_.get(s, hand_field()); }
@@ -89,6 +132,8 @@ class System {
 
   // Things directly at each location; `counts` has num_locations() entries.
   void occupancy(const State& s, int* counts) const;
+  // Also the sum of their cells (area units) at each location, in `used`.
+  void occupancy(const State& s, int* counts, std::int64_t* used) const;
   bool enabled(const State& s, const Action& a) const;
   State successor(const State& s, const Action& a) const;
   // Calls f(Action) for every enabled move (not stay), in a fixed order.
@@ -96,7 +141,9 @@ class System {
   void for_each_move(const State& s, F&& f) const;
   // Symmetry (interchangeable objects): each group lists objects (not
   // containers) that nothing tells apart — same class, never named by a
-  // proposition, and a cost model that ignores which thing it moves. The
+  // proposition, the same moves (same_moves(): same footprint rules, no
+  // forbidden move of their own), and a cost model that ignores which thing
+  // it moves. set_symmetry() throws if members of a group differ in moves. The
   // planner searches the quotient: a *canonical* state has the locations of
   // each group's members in ascending order of member index, and
   // for_each_move skips a member whose predecessor in its group is at the same
@@ -114,7 +161,7 @@ class System {
   // successor() followed by canonicalisation (cheap: one member moved).
   State canonical_successor(const State& s, const Action& a) const;
 
-  // Capacities respected, no container in a container, fields in range.
+  // Capacities and rooms respected, no container in a container, fields in range.
   bool valid(const State& s) const;
 
   // Where every thing is, by name (the hand is hand_name(s)).
@@ -133,6 +180,8 @@ class System {
   const world::Vec3& home_point() const { return home_point_; }
 
  private:
+  void build_fit_tables();
+
   world::Scenario scenario_;
   Options options_;
   Layout layout_;
@@ -140,6 +189,11 @@ class System {
   std::vector<std::string> thing_names_, thing_classes_;
   std::vector<std::uint64_t> uids_;
   std::vector<int> capacities_;  // per location
+  std::vector<std::uint8_t> fits_;    // [thing * num_locations() + loc]: fits (see fits())
+  std::vector<std::uint8_t> allowed_;  // [thing * num_locations() + loc]: fits, legal kind, not forbidden
+  std::vector<std::int64_t> cells_;    // per thing, area units
+  std::vector<std::int64_t> rooms_;    // per location, area units
+  std::vector<std::pair<unsigned, unsigned>> forbidden_;
   world::Vec3 home_point_{0, 0, 0};
   State initial_;
   bool has_symmetry_ = false;
@@ -151,17 +205,20 @@ class System {
 template <class F>
 void System::for_each_move(const State& s, F&& f) const {
   int counts[kMaxLocations + 1];
-  occupancy(s, counts);
+  std::int64_t used[kMaxLocations + 1];
+  occupancy(s, counts, used);
   const unsigned L = num_locations();
+  const bool bounded = !options_.ignore_capacity;
   for (unsigned t = 0; t < num_things(); ++t) {
     const std::uint32_t at = location(s, t);
     // An interchangeable twin at the same place gives the same canonical successors.
     if (has_symmetry_ && prev_[t] >= 0 && location(s, static_cast<unsigned>(prev_[t])) == at) continue;
-    const bool container = is_container(t);
-    const unsigned limit = container ? n_regions_ : L;
+    const unsigned limit = is_container(t) ? n_regions_ : L;
+    const std::uint8_t* row = allowed_.data() + std::size_t{t} * L;
+    const std::int64_t c = cells_[t];
     for (unsigned l = 0; l < limit; ++l) {
-      if (l == at) continue;
-      if (!options_.ignore_capacity && counts[l] >= capacities_[l]) continue;
+      if (!row[l] || l == at) continue;
+      if (bounded && (counts[l] >= capacities_[l] || used[l] + c > rooms_[l])) continue;
       f(Action::move(static_cast<std::uint16_t>(t), static_cast<std::uint16_t>(l)));
     }
   }

@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <random>
 
+#include "rtamp/world/fit.hpp"
 #include "rtamp/world/geometry.hpp"
 #include "rtamp/world/propositions.hpp"
 #include "rtamp/world/validate.hpp"
@@ -16,6 +17,7 @@ namespace {
 constexpr double kBlock = 0.04;      // block edge
 constexpr double kPitch = 0.06;      // grid pitch of the initial blocks
 constexpr double kMinSide = 0.26;    // smallest region side (a tray fits)
+constexpr Vec3 kTraySize{0.24, 0.16, 0.03};
 constexpr double kLineSpacing = 0.5;
 constexpr double kRegionGap = 0.02;  // minimum clearance between random regions
 constexpr int kTries = 10000;
@@ -53,7 +55,11 @@ Scenario generate_scenario(const GeneratorOptions& o) {
   const int n = o.objects, m = o.regions, c = o.containers;
   const int cols = static_cast<int>(std::ceil(std::sqrt(static_cast<double>(n)) - 1e-9));
   const int rows = (n + cols - 1) / cols;
-  const double side = round_mm(std::max(kMinSide, cols * kPitch + 0.02));
+  // Every region has room (fit.hpp's area bound) for all blocks and a tray at once.
+  const FitRules rules;
+  const double cells = n * cell_area({kBlock, kBlock, kBlock}, false, rules) + (c > 0 ? cell_area(kTraySize, true, rules) : 0);
+  const double roomy = std::ceil((std::sqrt(cells) - rules.gap) * 1000.0 + 1e-6) / 1000.0;
+  const double side = round_mm(std::max({kMinSide, cols * kPitch + 0.02, roomy}));
 
   Scenario s;
   std::string name = "gen-" + layout_name(o.layout) + "-m" + std::to_string(m) + "-n" + std::to_string(n);
@@ -104,7 +110,7 @@ Scenario generate_scenario(const GeneratorOptions& o) {
     t.name = "t" + std::to_string(k + 1);
     t.cls = "tray";
     t.position = s.regions[static_cast<std::size_t>(m - 1 - k)].center;
-    t.size = {0.24, 0.16, 0.03};
+    t.size = kTraySize;
     t.capacity = 4;
     s.containers.push_back(t);
   }

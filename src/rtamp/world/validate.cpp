@@ -7,6 +7,7 @@
 #include <set>
 #include <sstream>
 
+#include "rtamp/world/fit.hpp"
 #include "rtamp/world/geometry.hpp"
 #include "rtamp/world/propositions.hpp"
 #include "rtamp/world/suggest.hpp"
@@ -209,6 +210,7 @@ class Validator {
       if (loc == kNoLocation)
         fail(at(c.where, "position"), "container " + quote(c.name) + " at " + fmt(c.position) +
                                           " is not in any region (a container must stand in a region)");
+      check_fits(c.size, "container " + quote(c.name), loc, c.where);
       ++load[loc];
     }
     for (const Object& o : s_.objects) {
@@ -216,6 +218,7 @@ class Validator {
       if (loc == kNoLocation)
         fail(at(o.where, "position"), "object " + quote(o.name) + " at " + fmt(o.position) +
                                           " is outside every region and container");
+      check_fits(o.size, "object " + quote(o.name), loc, o.where);
       ++load[loc];
     }
     for (const Region& r : s_.regions)
@@ -226,6 +229,25 @@ class Validator {
       if (load[c.name] > c.capacity)
         fail(at(c.where, "capacity"), "container " + quote(c.name) + " initially holds " + std::to_string(load[c.name]) +
                                           " objects but its capacity is " + std::to_string(c.capacity));
+  }
+
+  // The thing's footprint fits the location it starts in (fit.hpp: no
+  // rotation; a container's floor inside its rims), as the planner requires.
+  void check_fits(const Vec3& size, const std::string& owner, const std::string& loc, const SourceLocation& where) const {
+    const FitRules rules;
+    if (const Region* r = s_.find_region(loc)) {
+      const Extent u = usable_extent(*r);
+      if (!fits(size, u))
+        fail(at(where, "size"), owner + " (" + fmt(size[0]) + " x " + fmt(size[1]) + " m) does not fit in region " +
+                                    quote(loc) + " (" + fmt(u.x) + " x " + fmt(u.y) +
+                                    " m; things keep their orientation)");
+    } else if (const Container* c = s_.find_container(loc)) {
+      const Extent u = usable_extent(*c, rules);
+      if (!fits(size, u))
+        fail(at(where, "size"), owner + " (" + fmt(size[0]) + " x " + fmt(size[1]) + " m) does not fit in container " +
+                                    quote(loc) + " (its floor inside the rims is " + fmt(u.x) + " x " + fmt(u.y) +
+                                    " m; things keep their orientation)");
+    }
   }
 
   // Names that interventions add, so that propositions may mention them.

@@ -11,7 +11,9 @@
 // containers; coordinates are finite and within ±1000 m; sizes are positive
 // (regions: x and y) and at most 100 m; capacities are >= 1; regions do not
 // overlap; containers do not overlap each other and each stands in a region;
-// every object lies in a container or a region (geometry.hpp); no location
+// every object lies in a container or a region (geometry.hpp); every thing's
+// footprint fits the location it starts in (fit.hpp: x and y sizes within the
+// region's size or the container's floor inside its rims; no rotation); no location
 // initially holds more things than its capacity (a region counts the objects
 // directly in it and the containers standing in it); proposition names are
 // [a-z_][A-Za-z0-9_]* and not true/false, and every name their expressions
