@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "rtamp/exec/subtree_builder.hpp"
+#include "rtamp/util/error.hpp"
 #include "rtamp/world/scenario_io.hpp"
 
 namespace rtamp::exec {
@@ -457,6 +458,54 @@ TEST(SymbolicWorld, APositionOutsideEveryLocationIsNone) {
   EXPECT_EQ(w.check_invariants(), "");
 }
 
+TEST(SymbolicWorld, MovingTheSourceTrayBeforeTheGraspTakesTheThingFromItsNewPlace) {
+  SymbolicWorld w(tiny());
+  w.start(move("o2", "t1", "r2"));
+  to_middle_of(w, Phase::Approach);
+  ASSERT_TRUE(w.apply(iv(Kind::Relocate, "t1", "r4")).applied);
+  run_until_idle(w);
+  EXPECT_EQ(w.poll(nullptr), MoveStatus::Succeeded);  // the location is the tray, wherever it stands
+  EXPECT_EQ(loc(w, "o2"), "r2");
+  EXPECT_EQ(loc(w, "t1"), "r4");
+}
+
+TEST(SymbolicWorld, AddedContainersGetTheCapacityOfTheirClass) {
+  SymbolicWorld w(tiny());
+  ASSERT_TRUE(w.apply(iv(Kind::AddContainer, "t2", "r4")).applied);
+  ASSERT_TRUE(w.apply(iv(Kind::AddContainer, "b1", "r4", "box")).applied);
+  EXPECT_EQ(w.capacity("t2"), 2);  // like t1
+  EXPECT_EQ(w.capacity("b1"), 4);  // added_container_capacity
+  EXPECT_EQ(w.capacity("r3"), 1);
+  EXPECT_EQ(w.capacity("nowhere"), -1);
+  EXPECT_FALSE(w.apply(iv(Kind::AddContainer, "t3", "r4")).applied);  // r4 (capacity 2) is full
+  EXPECT_TRUE(w.truth().things.at("b1").container);
+  EXPECT_EQ(w.truth().things.at("b1").cls, "box");
+  // An added container is a location like any other.
+  ASSERT_TRUE(w.apply(iv(Kind::Relocate, "o3", "t2")).applied);
+  w.start(move("o1", "r1", "b1"));
+  run_until_idle(w);
+  EXPECT_EQ(w.poll(nullptr), MoveStatus::Succeeded);
+  EXPECT_EQ(loc(w, "o1"), "b1");
+  EXPECT_EQ(w.check_invariants(), "");
+}
+
+TEST(SymbolicWorld, AnOverfullInitialPlacementIsAnError) {
+  world::Scenario s;
+  s.name = "overfull";
+  world::Region r;
+  r.name = "r1";
+  r.center = {0.4, 0, 0};
+  r.capacity = 1;
+  s.regions = {r};
+  for (const char* n : {"a", "b"}) {
+    world::Object o;
+    o.name = n;
+    o.position = {0.4, 0, 0};
+    s.objects.push_back(o);
+  }
+  EXPECT_THROW(SymbolicWorld{s}, Error);
+}
+
 // ---------------------------------------------------------------- failures and halts
 
 TEST(SymbolicWorld, DeterministicFailuresInEachPhase) {
@@ -682,6 +731,52 @@ TEST(SymbolicWorld, TheScenarioScriptRunsWhenPassed) {
   EXPECT_EQ(loc(w, "o2"), "r1");
   ASSERT_EQ(w.history().size(), 1u);
   EXPECT_EQ(w.history()[0].time, 20);
+}
+
+TEST(SymbolicWorld, APhaseEndGoesBeforeAnInterventionAtTheSameTime) {
+  SymbolicWorld probe(tiny());
+  probe.start(move("o1", "r1", "r2"));
+  to_middle_of(probe, Phase::Grasp);
+  const double grasp_end = probe.phase_end();
+  SymbolicWorldOptions o;
+  world::Intervention take = iv(Kind::TakeFromGripper, "", "r4");
+  take.time = grasp_end;
+  o.script = {take};
+  SymbolicWorld w(tiny(), o);
+  w.start(move("o1", "r1", "r2"));
+  w.advance(grasp_end);
+  ASSERT_EQ(w.history().size(), 1u);
+  EXPECT_TRUE(w.history()[0].applied) << w.history()[0].detail;  // o1 was already in the gripper
+  EXPECT_EQ(loc(w, "o1"), "r4");
+}
+
+TEST(SymbolicWorld, RandomInterventionsHappenWhenAnnounced) {
+  SymbolicWorldOptions o;
+  o.random_rate = 1;
+  o.seed = 3;
+  SymbolicWorld w(tiny(), o);
+  w.start(move("o1", "r1", "r2"));
+  int mid_phase = 0;
+  for (int i = 0; i < 200; ++i) {
+    const double t = w.next_event_time();
+    const bool phase_event = t == w.phase_end();
+    const std::size_t before = w.history().size();
+    w.advance(t - w.time());
+    ASSERT_NEAR(w.time(), t, 1e-9);
+    if (!phase_event) {
+      ASSERT_EQ(w.history().size(), before + 1);
+      EXPECT_EQ(w.history().back().time, t);
+      mid_phase += w.phase() != Phase::Idle;
+    }
+    ASSERT_EQ(w.check_invariants(), "");
+    if (w.poll(nullptr) == MoveStatus::Running || w.busy()) continue;
+    for (const auto& [name, thing] : w.truth().things) {  // move some object somewhere else
+      if (thing.container) continue;
+      w.start(move(name, "", thing.location == "r2" ? "r4" : "r2"));
+      break;
+    }
+  }
+  EXPECT_GT(mid_phase, 10);
 }
 
 // ---------------------------------------------------------------- random interventions

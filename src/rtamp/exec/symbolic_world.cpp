@@ -483,7 +483,8 @@ WorldEvent SymbolicWorld::apply_now(world::Intervention iv) {
       if (cls != class_is_container_.end() && cls->second != cont)
         return done(false, "class " + iv.cls + " is a class of " + (cont ? "objects" : "containers"));
       const std::string to = locate(iv);
-      if (to.empty()) return done(false, std::string(cont ? "add_container" : "add") + " needs a location or a position");
+      if (to.empty())
+        return done(false, std::string(cont ? "add_container" : "add") + " needs a location or a position");
       if (cont && !loose_ok(iv, to) && !is_region(to) && is_container(to))
         return done(false, to + " is not a region: containers do not nest");
       std::string why;
