@@ -85,6 +85,24 @@ world::Intervention iv(Kind k, std::string subject = "", std::string location = 
   return i;
 }
 
+// When the middle (or the end) of phase `p` of move(o1, r1 -> r2) in tiny() comes.
+double time_in(Phase p, bool end) {
+  SymbolicWorld probe(tiny());
+  probe.start(move("o1", "r1", "r2"));
+  to_middle_of(probe, p);
+  return end ? probe.phase_end() : probe.time();
+}
+
+// tiny() with `what` scripted at time `t`, running move(o1, r1 -> r2).
+SymbolicWorld moving_o1_with(world::Intervention what, double t) {
+  what.time = t;
+  SymbolicWorldOptions o;
+  o.script = {what};
+  SymbolicWorld w(tiny(), o);
+  w.start(move("o1", "r1", "r2"));
+  return w;
+}
+
 // ---------------------------------------------------------------- timing
 
 TEST(SymbolicWorld, PhaseTimingsAndObservedLocationsAlongAMove) {
@@ -700,17 +718,8 @@ TEST(SymbolicWorld, ScriptedInterventionsApplyAtTheirExactTime) {
 TEST(SymbolicWorld, ScriptedInterventionInsideOneAdvanceInterruptsAtItsTime) {
   // The script takes o1 from the gripper during the carry; one long advance
   // must stop the move at that moment, not at the end of the carry.
-  SymbolicWorld probe(tiny());
-  probe.start(move("o1", "r1", "r2"));
-  to_middle_of(probe, Phase::Carry);
-  const double t_take = probe.time();
-
-  SymbolicWorldOptions o;
-  world::Intervention take = iv(Kind::TakeFromGripper, "", "r4");
-  take.time = t_take;
-  o.script = {take};
-  SymbolicWorld w(tiny(), o);
-  w.start(move("o1", "r1", "r2"));
+  const double t_take = time_in(Phase::Carry, false);
+  SymbolicWorld w = moving_o1_with(iv(Kind::TakeFromGripper, "", "r4"), t_take);
   w.advance(100);
   EXPECT_EQ(w.poll(nullptr), MoveStatus::Failed);
   EXPECT_EQ(loc(w, "o1"), "r4");
@@ -734,16 +743,8 @@ TEST(SymbolicWorld, TheScenarioScriptRunsWhenPassed) {
 }
 
 TEST(SymbolicWorld, APhaseEndGoesBeforeAnInterventionAtTheSameTime) {
-  SymbolicWorld probe(tiny());
-  probe.start(move("o1", "r1", "r2"));
-  to_middle_of(probe, Phase::Grasp);
-  const double grasp_end = probe.phase_end();
-  SymbolicWorldOptions o;
-  world::Intervention take = iv(Kind::TakeFromGripper, "", "r4");
-  take.time = grasp_end;
-  o.script = {take};
-  SymbolicWorld w(tiny(), o);
-  w.start(move("o1", "r1", "r2"));
+  const double grasp_end = time_in(Phase::Grasp, true);
+  SymbolicWorld w = moving_o1_with(iv(Kind::TakeFromGripper, "", "r4"), grasp_end);
   w.advance(grasp_end);
   ASSERT_EQ(w.history().size(), 1u);
   EXPECT_TRUE(w.history()[0].applied) << w.history()[0].detail;  // o1 was already in the gripper
