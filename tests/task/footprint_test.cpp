@@ -183,6 +183,27 @@ TEST(Footprint, CommonImpossibleCasesAreRefused) {
   EXPECT_TRUE(ts2.fits(1, ts2.location_of_container(tray_t)));
 }
 
+// Trays side by side keep only container_gap (1.5 cm) from each other: a grid
+// of 16 trays of 10 cm in 50 cm is placeable, and the bound allows all 16.
+TEST(Footprint, RoomAllowsAGridOfTrays) {
+  world::Scenario s;
+  s.name = "trays";
+  s.regions.push_back(region("r0", 0, 0, 4, 4));
+  s.regions.push_back(region("r1", 5, 0, 0.5, 0.5));
+  for (int i = 0; i < 16; ++i) s.containers.push_back(tray("t" + std::to_string(i), {-1.8 + 0.2 * i, 0, 0}, 0.1, 0.1));
+  const System ts(s, in_store(s));
+  State st = ts.initial();
+  std::vector<world::Footprint> occ;
+  for (unsigned t = ts.num_objects(); t < ts.num_things(); ++t) {
+    const auto spot = world::free_spot(world::footprint(s.regions[1]), 0, occ, {0.1, 0.1, 0.03}, 0.015);
+    ASSERT_TRUE(spot) << t;
+    const Action a = Action::move(static_cast<std::uint16_t>(t), 1);
+    ASSERT_TRUE(ts.enabled(st, a)) << ts.thing_name(t);
+    occ.push_back(world::footprint_at(*spot, {0.1, 0.1, 0}));
+    st = ts.successor(st, a);
+  }
+}
+
 // `rtamp gen` scenes: every region can hold all blocks and a tray at once, so
 // "all block in r2" stays achievable whatever the size.
 TEST(Footprint, GeneratedScenesHaveRoomForEverything) {
