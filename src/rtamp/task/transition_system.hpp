@@ -26,7 +26,9 @@
 // area grown by the gap; move(t, l) needs used(l) + cell(t) <= room(l).
 // Guarantee: if the bound refuses a move, no arrangement of the things at l
 // plus t that keeps the skills' clearances (world::FitRules) exists — it never
-// rules out a placement that can succeed; it may allow one that a greedy spot
+// rules out a placement that can succeed while the things already at l keep
+// those clearances too (a person may pack them tighter; then it may refuse a
+// move the arm could still make); it may allow one that a greedy spot
 // search then fails (dense packings), which the executor reports and the
 // planner learns through forbid_move(). Cells and rooms are integers (units of
 // 1e-8 m², cells rounded down, rooms up, so rounding never refuses more).
