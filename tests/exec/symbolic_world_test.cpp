@@ -524,6 +524,30 @@ TEST(SymbolicWorld, AnOverfullInitialPlacementIsAnError) {
   EXPECT_THROW(SymbolicWorld{s}, Error);
 }
 
+TEST(SymbolicWorld, PositionsOfContainersFallInRegions) {
+  SymbolicWorld w(tiny());
+  world::Intervention stay = iv(Kind::Relocate, "t1");
+  stay.position = world::Vec3{0.40, 0.25, 0};  // where t1 stands: the region r1, not t1 itself
+  const WorldEvent e = w.apply(stay);
+  EXPECT_TRUE(e.applied) << e.detail;
+  EXPECT_EQ(loc(w, "t1"), "r1");
+  world::Intervention add = iv(Kind::AddContainer, "t2");
+  add.position = world::Vec3{0.40, 0.25, 0};
+  EXPECT_TRUE(w.apply(add).applied);
+  EXPECT_EQ(loc(w, "t2"), "r1");
+  world::Intervention block = iv(Kind::Add, "x");
+  block.position = world::Vec3{0.40, 0.25, 0.01};  // on a tray
+  EXPECT_TRUE(w.apply(block).applied);
+  EXPECT_TRUE(loc(w, "x") == "t1" || loc(w, "x") == "t2") << loc(w, "x");
+  // A tray moved by the person is found where it went.
+  ASSERT_TRUE(w.apply(iv(Kind::Relocate, "t2", "r4")).applied);
+  world::Intervention onto = iv(Kind::Relocate, "o3");
+  onto.position = world::Vec3{0.70, 0.40, 0.01};
+  EXPECT_TRUE(w.apply(onto).applied);
+  EXPECT_EQ(loc(w, "o3"), "t2");
+  EXPECT_EQ(w.check_invariants(), "");
+}
+
 // ---------------------------------------------------------------- failures and halts
 
 TEST(SymbolicWorld, DeterministicFailuresInEachPhase) {

@@ -198,8 +198,18 @@ void SymbolicWorld::put(const std::string& thing, const std::string& loc, const 
     loose_[thing] = p;
   else
     loose_.erase(thing);
-  if (is_container(thing) && loc != kInHand)
-    geometry_.move_container(thing, loc == world::kNoLocation ? p : point_of_location(loc));
+  if (!is_container(thing)) return;
+  // Geometry knows the containers that stand somewhere (at their region's centre), not the held one.
+  geometry_.remove_container(thing);
+  if (loc == kInHand) return;
+  const ContainerInfo& info = containers_.at(thing);
+  world::Container c;
+  c.name = thing;
+  c.cls = info.cls;
+  c.position = loc == world::kNoLocation ? p : point_of_location(loc);
+  c.size = info.size;
+  c.capacity = info.capacity;
+  geometry_.add_container(c);
 }
 
 void SymbolicWorld::erase(const std::string& thing) {
@@ -207,9 +217,9 @@ void SymbolicWorld::erase(const std::string& thing) {
   loose_.erase(thing);
 }
 
-std::string SymbolicWorld::locate(const world::Intervention& iv) const {
+std::string SymbolicWorld::locate(const world::Intervention& iv, bool container) const {
   if (!iv.location.empty()) return iv.location;
-  if (iv.position) return geometry_.locate(*iv.position);
+  if (iv.position) return container ? geometry_.locate_region(*iv.position) : geometry_.locate(*iv.position);
   return "";
 }
 
@@ -460,7 +470,7 @@ WorldEvent SymbolicWorld::apply_now(world::Intervention iv) {
   switch (iv.kind) {
     case Kind::Relocate: {
       if (!where) return done(false, "no object or container " + (iv.subject.empty() ? "given" : iv.subject));
-      const std::string to = locate(iv);
+      const std::string to = locate(iv, is_container(iv.subject));
       if (to.empty()) return done(false, "relocate needs a location or a position");
       const bool held_now = *where == kInHand;
       if (!held_now && *where == to) return done(true, iv.subject + " already in " + to);
@@ -482,7 +492,7 @@ WorldEvent SymbolicWorld::apply_now(world::Intervention iv) {
       auto cls = class_is_container_.find(iv.cls);
       if (cls != class_is_container_.end() && cls->second != cont)
         return done(false, "class " + iv.cls + " is a class of " + (cont ? "objects" : "containers"));
-      const std::string to = locate(iv);
+      const std::string to = locate(iv, cont);
       if (to.empty())
         return done(false, std::string(cont ? "add_container" : "add") + " needs a location or a position");
       if (cont && !loose_ok(iv, to) && !is_region(to) && is_container(to))
@@ -497,13 +507,6 @@ WorldEvent SymbolicWorld::apply_now(world::Intervention iv) {
                                  : ContainerInfo{iv.cls, options_.added_container_capacity};
         containers_[iv.subject] = info;
         container_order_.push_back(iv.subject);
-        world::Container c;
-        c.name = iv.subject;
-        c.cls = iv.cls;
-        c.position = p;
-        c.size = info.size;
-        c.capacity = info.capacity;
-        geometry_.add_container(c);
       } else if (cls == class_is_container_.end()) {
         object_classes_.push_back(iv.cls);
       }
@@ -541,7 +544,7 @@ WorldEvent SymbolicWorld::apply_now(world::Intervention iv) {
       const std::string h = held();
       if (h.empty()) return done(false, "nothing in the gripper");
       iv.subject = h;
-      const std::string to = locate(iv);
+      const std::string to = locate(iv, is_container(h));
       if (to.empty()) {
         std::string detail = h + " taken from the gripper and removed";
         if (is_container(h))

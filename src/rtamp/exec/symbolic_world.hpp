@@ -149,8 +149,9 @@ class SymbolicWorld final : public World {
   // declaration order); regions only if `regions_only`; "none" if nothing has room.
   std::string closest_valid(const std::string& thing, const world::Vec3& p, bool regions_only) const;
   void put(const std::string& thing, const std::string& loc, const world::Vec3& p);
-  std::string locate(const world::Intervention& iv) const;  // `to`, else where `position` falls, else ""
-  std::vector<std::string> location_names() const;          // regions then containers, declaration order
+  // `to`, else where `position` falls (for a container: the region), else "".
+  std::string locate(const world::Intervention& iv, bool container) const;
+  std::vector<std::string> location_names() const;  // regions then containers, declaration order
 
   // The move.
   void begin_phase(Phase p, double duration, const world::Vec3& from, const world::Vec3& to);
