@@ -548,6 +548,21 @@ TEST(SymbolicWorld, PositionsOfContainersFallInRegions) {
   EXPECT_EQ(w.check_invariants(), "");
 }
 
+TEST(SymbolicWorld, OptionsOutOfRangeAreErrors) {
+  auto with = [](auto change) {
+    SymbolicWorldOptions o;
+    change(o);
+    return o;
+  };
+  EXPECT_THROW(SymbolicWorld(tiny(), with([](auto& o) { o.speed = 0; })), Error);
+  EXPECT_THROW(SymbolicWorld(tiny(), with([](auto& o) { o.grasp = -1; })), Error);
+  EXPECT_THROW(SymbolicWorld(tiny(), with([](auto& o) { o.failure_probability = 1.5; })), Error);
+  EXPECT_THROW(SymbolicWorld(tiny(), with([](auto& o) { o.random_rate = -1; })), Error);
+  EXPECT_THROW(SymbolicWorld(tiny(), with([](auto& o) { o.fails_in = Phase::Retreat; })), Error);
+  EXPECT_THROW(SymbolicWorld(tiny(), with([](auto& o) { o.added_container_capacity = 0; })), Error);
+  EXPECT_NO_THROW(SymbolicWorld(tiny(), with([](auto& o) { o.grasp = 0; })));
+}
+
 // ---------------------------------------------------------------- failures and halts
 
 TEST(SymbolicWorld, DeterministicFailuresInEachPhase) {

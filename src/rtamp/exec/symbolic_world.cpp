@@ -31,6 +31,20 @@ bool loose_ok(const world::Intervention& iv, const std::string& to) {
 
 bool holding_phase(Phase p) { return p == Phase::Carry || p == Phase::Place || p == Phase::Return; }
 
+void check(const SymbolicWorldOptions& o) {
+  for (double d : {o.approach_base, o.grasp, o.carry_base, o.place, o.retreat, o.return_base})
+    if (!(d >= 0 && std::isfinite(d))) throw Error("symbolic world: phase durations must be finite and >= 0");
+  if (!(o.speed > 0 && std::isfinite(o.speed))) throw Error("symbolic world: speed must be finite and > 0");
+  if (!(o.failure_probability >= 0 && o.failure_probability <= 1))
+    throw Error("symbolic world: failure_probability must be in [0, 1]");
+  if (!(o.random_rate >= 0 && std::isfinite(o.random_rate)))
+    throw Error("symbolic world: random_rate must be finite and >= 0");
+  if (o.fails_in != Phase::Approach && o.fails_in != Phase::Grasp && o.fails_in != Phase::Carry &&
+      o.fails_in != Phase::Place)
+    throw Error("symbolic world: fails_in must be approach, grasp, carry or place");
+  if (o.added_container_capacity < 1) throw Error("symbolic world: added_container_capacity must be >= 1");
+}
+
 }  // namespace
 
 const char* to_string(Phase p) {
@@ -55,6 +69,7 @@ const char* to_string(Phase p) {
 
 SymbolicWorld::SymbolicWorld(const world::Scenario& scenario, SymbolicWorldOptions options)
     : options_(std::move(options)), regions_(scenario.regions), geometry_(scenario) {
+  check(options_);
   for (const auto& c : scenario.containers) {
     ContainerInfo info{c.cls, c.capacity, c.size};
     containers_[c.name] = info;
@@ -270,8 +285,6 @@ void SymbolicWorld::start(const Move& m) {
   static constexpr Phase kFailPhases[] = {Phase::Approach, Phase::Grasp, Phase::Carry, Phase::Place};
   if (options_.fails && options_.fails(m)) {
     fail_at_ = options_.fails_in;
-    if (std::find(std::begin(kFailPhases), std::end(kFailPhases), *fail_at_) == std::end(kFailPhases))
-      fail_at_ = Phase::Grasp;
   } else if (u < options_.failure_probability) {
     fail_at_ = kFailPhases[k];
   }

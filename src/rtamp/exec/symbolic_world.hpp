@@ -89,7 +89,9 @@ struct SymbolicWorldOptions {
 class SymbolicWorld final : public World {
  public:
   // Throws rtamp::Error if the scenario's initial placement breaks a
-  // capacity (the planner would reject it too).
+  // capacity (the planner would reject it too) or an option is out of range
+  // (durations < 0, speed <= 0, a probability outside [0, 1], rate < 0,
+  // fails_in not one of the four failing phases, capacity < 1).
   explicit SymbolicWorld(const world::Scenario& scenario, SymbolicWorldOptions options = {});
 
   // --- exec::World
