@@ -170,6 +170,7 @@ struct Product {
   };
   std::vector<Node> nodes;
   std::vector<std::vector<std::pair<int, double>>> adj;
+  std::vector<std::vector<int>> adj_moves;  // per edge of adj: 1 for a move, 0 for stay
 
   // `q0`: the automaton state of the start node (default: the initial state).
   Product(const rtamp::world::Scenario& sc, const rtamp::world::Placement& p, const std::string& hand,
@@ -187,6 +188,7 @@ struct Product {
       index.emplace(key, n);
       nodes.push_back({s, q});
       adj.emplace_back();
+      adj_moves.emplace_back();
       return n;
     };
     id(start(w, p, hand), q0 ? *q0 : ba.initial);
@@ -198,6 +200,7 @@ struct Product {
         if (!e.guard.matches(l)) continue;
         const int a = id(s, e.dst);
         adj[n].emplace_back(a, 0.0);
+        adj_moves[n].push_back(0);
         for (auto [t, to] : moves(w, s)) {
           St s2 = s;
           const double c = move_cost(w, s, t, to, model);
@@ -205,6 +208,7 @@ struct Product {
           s2.hand = to;
           const int b = id(s2, e.dst);
           adj[n].emplace_back(b, c);
+          adj_moves[n].push_back(1);
         }
       }
     }
@@ -236,6 +240,43 @@ struct Product {
           d[static_cast<std::size_t>(m)] = dv + c;
           pq.push({dv + c, m});
         }
+    }
+    return d;
+  }
+
+  // dijkstra() in the order (cost, moves), costs equal within 1e-9
+  // (label-correcting: a node is taken again whenever its label improves).
+  using Lex = std::pair<double, int>;
+  static bool lex_less(const Lex& a, const Lex& b) {
+    return a.first < b.first - 1e-9 || (a.first <= b.first + 1e-9 && a.second < b.second);
+  }
+  std::vector<Lex> lex_dijkstra(int src, bool skip_src) const {
+    std::vector<Lex> d(nodes.size(), Lex{INFINITY, 0});
+    using QI = std::pair<Lex, int>;
+    std::priority_queue<QI, std::vector<QI>, std::greater<QI>> pq;
+    auto relax = [&](int v, const Lex& dv) {
+      const auto& out = adj[static_cast<std::size_t>(v)];
+      for (std::size_t i = 0; i < out.size(); ++i) {
+        const int m = out[i].first;
+        const Lex nd{dv.first + out[i].second, dv.second + adj_moves[static_cast<std::size_t>(v)][i]};
+        if (lex_less(nd, d[static_cast<std::size_t>(m)])) {
+          d[static_cast<std::size_t>(m)] = nd;
+          pq.push({nd, m});
+        }
+      }
+    };
+    if (skip_src) {
+      relax(src, Lex{0, 0});
+    } else {
+      d[static_cast<std::size_t>(src)] = {0, 0};
+      pq.push({{0, 0}, src});
+    }
+    while (!pq.empty()) {
+      auto [dv, v] = pq.top();
+      pq.pop();
+      if (dv != d[static_cast<std::size_t>(v)]) continue;
+      if (skip_src && v == src) continue;
+      relax(v, dv);
     }
     return d;
   }
@@ -272,6 +313,27 @@ inline std::optional<double> min_lasso_from(const rtamp::world::Scenario& sc, co
   for (std::uint32_t q : qs) {
     const auto c = min_lasso(sc, p, hand, ba, model, true, q);
     if (c && (!best || *c < *best)) best = c;
+  }
+  return best;
+}
+
+// The least lasso in the order (cost, number of moves) from (start, q0):
+// among the cheapest lassos, the fewest moves. nullopt if there is none.
+inline std::optional<std::pair<double, int>> min_lasso_lex(const rtamp::world::Scenario& sc,
+                                                           const rtamp::world::Placement& p, const std::string& hand,
+                                                           const rtamp::automata::Automaton& ba,
+                                                           const std::string& model,
+                                                           std::optional<std::uint32_t> q0 = {}) {
+  const Product g(sc, p, hand, ba, model, true, q0);
+  const auto d0 = g.lex_dijkstra(0, false);
+  std::optional<Product::Lex> best;
+  for (std::size_t n = 0; n < g.nodes.size(); ++n) {
+    if (!ba.is_accepting_state(g.nodes[n].q) || d0[n].first == INFINITY) continue;
+    if (best && best->first < d0[n].first - 1e-9) continue;
+    const auto dc = g.lex_dijkstra(static_cast<int>(n), true)[n];
+    if (dc.first == INFINITY) continue;
+    const Product::Lex total{d0[n].first + dc.first, d0[n].second + dc.second};
+    if (!best || Product::lex_less(total, *best)) best = total;
   }
   return best;
 }

@@ -97,6 +97,44 @@ inline world::Scenario random_scenario(std::mt19937& rng, const std::vector<std:
   }
 }
 
+// Is prefix·cycle a lasso of the product from automaton state q0: some run
+// reads the prefix into a state q from which the cycle's letters lead back to
+// q, with q accepting (join_anywhere false: the cycle starts and ends at an
+// accepting node) or through an accepting state somewhere on the cycle
+// (join_anywhere true)? (Weaker than automata::lasso_accept, which also takes
+// runs that need several turns of the cycle to close.)
+inline bool product_lasso(const automata::Automaton& ba, std::uint32_t q0, const automata::LassoWord& w,
+                          bool join_anywhere) {
+  const std::uint32_t n = ba.num_states();
+  std::vector<bool> cur(n, false);
+  cur[q0] = true;
+  for (automata::Letter l : w.prefix) {
+    std::vector<bool> next(n, false);
+    for (std::uint32_t q = 0; q < n; ++q)
+      if (cur[q])
+        for (const auto& e : ba.edges[q])
+          if (e.guard.matches(l)) next[e.dst] = true;
+    cur = next;
+  }
+  for (std::uint32_t q = 0; q < n; ++q) {
+    if (!cur[q] || (!join_anywhere && !ba.is_accepting_state(q))) continue;
+    std::vector<std::uint8_t> at(n, 0);  // bit 0: reached, no accepting state yet; bit 1: reached after one
+    at[q] = 1;
+    for (automata::Letter l : w.cycle) {
+      std::vector<std::uint8_t> next(n, 0);
+      for (std::uint32_t p = 0; p < n; ++p) {
+        if (!at[p]) continue;
+        const std::uint8_t seen = ba.is_accepting_state(p) ? 2 : at[p];
+        for (const auto& e : ba.edges[p])
+          if (e.guard.matches(l)) next[e.dst] |= seen;
+      }
+      at = next;
+    }
+    if (at[q] & 2) return true;
+  }
+  return false;
+}
+
 // Checks r.plan independently; returns the recomputed cost.
 inline double check_plan(plan::Planner& planner, const plan::PlanResult& r, const std::string& model) {
   const auto& sc = planner.scenario();

@@ -173,11 +173,13 @@ void ProductGraph::learn(NodeId n, double v) {
   learned_[n] = std::max(learned_[n], v);
 }
 
-void ProductGraph::set_solved(NodeId n, double value, std::uint32_t via) {
+void ProductGraph::set_solved(NodeId n, double value, std::uint32_t moves, std::uint32_t via) {
   if (learned_.size() <= n) learned_.resize(std::max<std::size_t>(size(), n + 1), 0.0);
   if (via_.size() <= n) via_.resize(std::max<std::size_t>(size(), n + 1), kNoVia);
+  if (solved_moves_.size() <= n) solved_moves_.resize(std::max<std::size_t>(size(), n + 1), 0);
   learned_[n] = value;
   via_[n] = via;
+  solved_moves_[n] = moves;
 }
 
 bool ProductGraph::cycle_path(NodeId n, std::vector<std::uint32_t>& out) const {
@@ -207,7 +209,7 @@ std::size_t ProductGraph::memory_bytes() const {
          edge_end_.capacity() * 4 + labels_.capacity() * sizeof(automata::Letter) +
          edges_.capacity() * sizeof(ProductEdge) + table_.capacity() * 4 + learned_.capacity() * sizeof(double) +
          cycles_.capacity() * sizeof(Cycle) + hcache_.capacity() * sizeof(double) + via_.capacity() * 4 +
-         cycle_at_.capacity() * 4 + cycle_store_.capacity() * 4;
+         cycle_at_.capacity() * 4 + cycle_store_.capacity() * 4 + solved_moves_.capacity() * 4;
 }
 
 }  // namespace rtamp::plan

@@ -92,9 +92,12 @@ class ProductGraph {
   // (exact, or a lower bound).
   double learned(NodeId n) const { return n < learned_.size() ? learned_[n] : 0.0; }
   void learn(NodeId n, double v);
+  // Costs are compared lexicographically as (motion cost, number of moves)
+  // (ties in cost go to fewer moves; plan/search.hpp).
   struct Cycle {
-    double lower = 0;       // no cycle through the node is cheaper
-    bool exact = false;     // lower is the cost of the cheapest cycle
+    double lower = 0;         // no cycle through the node is lexicographically below (lower, moves)
+    std::uint32_t moves = 0;
+    bool exact = false;       // (lower, moves) is the cheapest cycle
   };
   // Cached heuristic value of a node (start-independent; NaN if unknown).
   double cached_h(NodeId n) const { return n < hcache_.size() ? hcache_[n] : kUnknownH; }
@@ -119,8 +122,10 @@ class ProductGraph {
   static constexpr std::uint32_t kViaCycle = kNoVia - 1;
   std::uint32_t via(NodeId n) const { return n < via_.size() ? via_[n] : kNoVia; }
   bool solved(NodeId n) const { return via(n) != kNoVia; }
-  // Marks n solved: the best lasso from n costs exactly `value` and starts with edge `via`.
-  void set_solved(NodeId n, double value, std::uint32_t via);
+  // Marks n solved: the best lasso from n costs exactly `value` with `moves`
+  // moves (the lexicographic minimum) and starts with edge `via`.
+  void set_solved(NodeId n, double value, std::uint32_t moves, std::uint32_t via);
+  std::uint32_t solved_moves(NodeId n) const { return n < solved_moves_.size() ? solved_moves_[n] : 0; }
 
   std::uint64_t expansions() const { return expansions_; }
   std::size_t num_edges() const { return edges_.size(); }
@@ -149,6 +154,7 @@ class ProductGraph {
   std::vector<Cycle> cycles_;
   std::vector<double> hcache_;
   std::vector<std::uint32_t> via_;
+  std::vector<std::uint32_t> solved_moves_;
   std::vector<std::uint32_t> cycle_at_;     // per node: 1 + offset in cycle_store_, 0 = none
   std::vector<std::uint32_t> cycle_store_;  // length, then the edges, per recorded cycle
   std::vector<std::uint32_t> succ_q_;  // scratch: BA successors of the node being expanded

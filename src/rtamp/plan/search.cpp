@@ -9,9 +9,15 @@ namespace rtamp::plan {
 
 namespace {
 constexpr double kEps = 1e-9;
+constexpr std::uint32_t kManyMoves = ~std::uint32_t{0};
+// (c1, m1) below (c2, m2) in the order (cost, moves), costs equal within kEps.
+bool lex_less(double c1, std::uint32_t m1, double c2, std::uint32_t m2) {
+  return c1 < c2 - kEps || (c1 <= c2 + kEps && m1 < m2);
+}
 bool heap_less(const auto& a, const auto& b) {  // max-heap comparator: "a after b"
   if (a.f != b.f) return a.f > b.f;
-  return a.g < b.g;  // ties: larger g first
+  if (a.g != b.g) return a.g < b.g;  // ties: larger g first (deeper)
+  return a.m > b.m;                  // then fewer moves
 }
 }  // namespace
 
@@ -35,6 +41,7 @@ void LassoSearch::Space::ensure(std::size_t n) {
   if (stamp.size() >= n) return;
   const std::size_t cap = std::max<std::size_t>(n, stamp.size() * 2);
   g.resize(cap);
+  m.resize(cap);
   h.resize(cap);
   parent.resize(cap);
   pedge.resize(cap);
@@ -64,7 +71,7 @@ LassoSearch::Item LassoSearch::Space::pop() {
 }
 
 std::size_t LassoSearch::Space::bytes() const {
-  return g.capacity() * 8 + h.capacity() * 8 + parent.capacity() * 4 + pedge.capacity() * 4 + stamp.capacity() * 4 +
+  return g.capacity() * 8 + m.capacity() * 4 + h.capacity() * 8 + parent.capacity() * 4 + pedge.capacity() * 4 + stamp.capacity() * 4 +
          closed.capacity() + heap.capacity() * sizeof(Item);
 }
 
@@ -115,50 +122,63 @@ bool LassoSearch::out_of_budget(const ProductGraph& g, const SearchLimits& limit
   return r.hit_time_limit;
 }
 
-double LassoSearch::cycle(ProductGraph& g, NodeId n, double bound, Heuristic* h, const SearchLimits& limits,
-                          std::int64_t deadline_ns, SearchStats& stats, LassoResult& r) {
+LassoSearch::Cost LassoSearch::cycle(ProductGraph& g, NodeId n, Cost bound, Heuristic* h,
+                                     const SearchLimits& limits, std::int64_t deadline_ns, SearchStats& stats,
+                                     LassoResult& r) {
   const ProductGraph::Cycle known = g.cycle(n);
-  if (known.exact) return known.lower < bound ? known.lower : kInf;
-  if (known.lower >= bound) return kInf;
+  if (known.exact)
+    return lex_less(known.lower, known.moves, bound.c, bound.m) ? Cost{known.lower, known.moves} : kNoCost;
+  if (!lex_less(known.lower, known.moves, bound.c, bound.m)) return kNoCost;
   ++stats.cycle_searches;
   const task::State target = g.state(n);
   const std::uint32_t target_q = g.ba_state(n);
+  const std::uint32_t stay = task::Action::stay().packed();
   Space& S = cycle_;
   S.begin(g.size());
+  Cost best = bound;  // the incumbent: a cycle below it is sought; lowered by each one found
+  bool found = false;
   auto relax = [&](NodeId from, std::uint32_t e) {
     const ProductEdge& pe = g.edge(e);
     const NodeId m = pe.dst;
     const double ng = (from == n ? 0.0 : S.g[from]) + pe.cost;
+    const std::uint32_t nm = (from == n ? 0 : S.m[from]) + (pe.action != stay ? 1 : 0);
+    if (m == n) {  // back at n: a cycle
+      if (lex_less(ng, nm, best.c, best.m)) {
+        best = {ng, nm};
+        found = true;
+        S.parent[n] = from;
+        S.pedge[n] = e;
+      }
+      return;
+    }
     S.ensure(g.size());
     if (!S.seen(m)) {
       S.stamp[m] = S.gen;
       S.closed[m] = 0;
-      S.h[m] = (m == n || !h) ? 0.0
-                              : std::max(state_distance_bound(g.system(), g.model(), g.state(m), target),
-                                         h->walk_bound(g, m, target_q));
-    } else if (ng >= S.g[m] - kEps) {
+      S.h[m] = !h ? 0.0
+                  : std::max(state_distance_bound(g.system(), g.model(), g.state(m), target),
+                             h->walk_bound(g, m, target_q));
+    } else if (!lex_less(ng, nm, S.g[m], S.m[m])) {
       return;
     }
     S.g[m] = ng;
+    S.m[m] = nm;
     S.parent[m] = from;
     S.pedge[m] = e;
     S.closed[m] = 0;
-    if (ng + S.h[m] < bound - kEps) S.push({ng + S.h[m], ng, m});
+    const double f = ng + S.h[m];
+    if (f < kInf && lex_less(f, nm, best.c, best.m)) S.push({f, ng, m, nm});
   };
   if (!g.expanded(n)) {
     g.expand(n);
     ++stats.successor_generations;
   }
   for (std::uint32_t e = g.edge_begin(n); e < g.edge_end(n); ++e) relax(n, e);
-  double found = kInf;
   while (!S.heap.empty()) {
     const Item it = S.pop();
-    if (it.g > S.g[it.n] + kEps) continue;  // stale
-    if (it.f >= bound - kEps) break;
-    if (it.n == n) {
-      found = it.g;
-      break;
-    }
+    if (it.g != S.g[it.n] || it.m != S.m[it.n]) continue;  // stale
+    if (it.f > best.c + kEps) break;
+    if (!lex_less(it.f, it.m, best.c, best.m)) continue;  // cannot beat the incumbent
     if (S.closed[it.n]) continue;
     S.closed[it.n] = 1;
     ++stats.expanded;
@@ -167,10 +187,10 @@ double LassoSearch::cycle(ProductGraph& g, NodeId n, double bound, Heuristic* h,
       ++stats.successor_generations;
     }
     for (std::uint32_t e = g.edge_begin(it.n); e < g.edge_end(it.n); ++e) relax(it.n, e);
-    if (out_of_budget(g, limits, deadline_ns, stats, r)) return kInf;
+    if (out_of_budget(g, limits, deadline_ns, stats, r)) return kNoCost;
   }
-  if (found < kInf) {
-    g.set_cycle(n, {found, true});
+  if (found) {
+    g.set_cycle(n, {best.c, best.m, true});
     cycle_path_.clear();
     NodeId cur = n;
     do {
@@ -178,10 +198,10 @@ double LassoSearch::cycle(ProductGraph& g, NodeId n, double bound, Heuristic* h,
       cur = S.parent[cur];
     } while (cur != n);
     std::reverse(cycle_path_.begin(), cycle_path_.end());
-  } else {
-    g.set_cycle(n, {std::max(known.lower, bound), false});
+    return best;
   }
-  return found;
+  g.set_cycle(n, {bound.c, bound.m, false});  // bound is above `known` (checked on entry)
+  return kNoCost;
 }
 
 LassoResult LassoSearch::run(ProductGraph& g, NodeId init, Heuristic& h, bool cycle_heuristic, bool learn,
@@ -198,19 +218,23 @@ LassoResult LassoSearch::run(ProductGraph& g, const std::vector<NodeId>& starts,
   next_progress_ns_ = start_ns_ + limits.progress_interval_ns();
   progress_best_ = kInf;
   progress_bound_ = 0;
+  const std::uint32_t stay = task::Action::stay().packed();
   Space& S = prefix_;
   S.begin(g.size());
   closed_list_.clear();
-  double best = kInf;
+  double best = kInf;  // the incumbent lasso, (best, best_m) in the order (cost, moves)
+  std::uint32_t best_m = kManyMoves;
   NodeId best_node = kNoNode;  // an accepting node, or (best_solved) a solved node
   bool best_solved = false;
-  double best_cycle = kInf;
+  Cost best_cycle = kNoCost;
   // Experience: a solved node m completes a lasso of cost g(m) + learned(m).
-  auto offer_solved = [&](NodeId m, double gm) {
+  auto offer_solved = [&](NodeId m, double gm, std::uint32_t mm) {
     if (!learn || !g.solved(m)) return;
     const double c = gm + g.learned(m);
-    if (c < best - kEps) {
+    const std::uint32_t cm = mm + g.solved_moves(m);
+    if (lex_less(c, cm, best, best_m)) {
       best = c;
+      best_m = cm;
       best_node = m;
       best_solved = true;
     }
@@ -221,18 +245,20 @@ LassoResult LassoSearch::run(ProductGraph& g, const std::vector<NodeId>& starts,
     if (init == kNoNode || S.seen(init)) continue;
     S.stamp[init] = S.gen;
     S.g[init] = 0;
+    S.m[init] = 0;
     S.h[init] = h.estimate(g, init);
     S.parent[init] = kNoNode;
     S.closed[init] = 0;
-    if (S.h[init] < kInf) S.push({S.h[init], 0.0, init});
-    offer_solved(init, 0.0);
+    if (S.h[init] < kInf) S.push({S.h[init], 0.0, init, 0});
+    offer_solved(init, 0.0, 0);
   }
   bool complete = true;
   while (!S.heap.empty()) {
     const Item it = S.pop();
     const NodeId n = it.n;
-    if (it.g > S.g[n] + kEps) continue;  // stale
-    if (it.f >= best - kEps) break;
+    if (it.g != S.g[n] || it.m != S.m[n]) continue;  // stale
+    if (it.f > best + kEps) break;
+    if (!lex_less(it.f, it.m, best, best_m)) continue;  // nothing through n beats the incumbent
     if (S.closed[n]) continue;
     S.closed[n] = 1;
     closed_list_.push_back(n);
@@ -241,13 +267,15 @@ LassoResult LassoSearch::run(ProductGraph& g, const std::vector<NodeId>& starts,
     if (learn && g.solved(n)) continue;
     ++stats.expanded;
     if (g.accepting(n)) {
-      const double c = cycle(g, n, best - S.g[n], cycle_h, limits, deadline_ns, stats, r);
+      const Cost bound{best - S.g[n], best_m > S.m[n] ? best_m - S.m[n] : 0};
+      const Cost c = cycle(g, n, bound, cycle_h, limits, deadline_ns, stats, r);
       if (r.hit_node_limit || r.hit_time_limit) {
         complete = false;
         break;
       }
-      if (S.g[n] + c < best - kEps) {
-        best = S.g[n] + c;
+      if (c.c < kInf && lex_less(S.g[n] + c.c, S.m[n] + c.m, best, best_m)) {
+        best = S.g[n] + c.c;
+        best_m = S.m[n] + c.m;
         best_node = n;
         best_solved = false;
         best_cycle = c;
@@ -259,22 +287,25 @@ LassoResult LassoSearch::run(ProductGraph& g, const std::vector<NodeId>& starts,
     }
     S.ensure(g.size());
     const double gn = S.g[n];
+    const std::uint32_t mn = S.m[n];
     for (std::uint32_t e = g.edge_begin(n); e < g.edge_end(n); ++e) {
       const ProductEdge& pe = g.edge(e);
       const NodeId m = pe.dst;
       const double ng = gn + pe.cost;
+      const std::uint32_t nm = mn + (pe.action != stay ? 1 : 0);
       if (!S.seen(m)) {
         S.stamp[m] = S.gen;
         S.h[m] = h.estimate(g, m);
-      } else if (ng >= S.g[m] - kEps) {
+      } else if (!lex_less(ng, nm, S.g[m], S.m[m])) {
         continue;
       }
       S.g[m] = ng;
+      S.m[m] = nm;
       S.parent[m] = n;
       S.pedge[m] = e;
       S.closed[m] = 0;
-      if (S.h[m] < kInf) S.push({ng + S.h[m], ng, m});
-      offer_solved(m, ng);
+      if (S.h[m] < kInf) S.push({ng + S.h[m], ng, m, nm});
+      offer_solved(m, ng, nm);
     }
     progress_best_ = best;
     if (out_of_budget(g, limits, deadline_ns, stats, r)) {
@@ -296,7 +327,7 @@ LassoResult LassoSearch::run(ProductGraph& g, const std::vector<NodeId>& starts,
         acc = g.edge(e).dst;
         if (++stats.reused_path_edges > g.size()) throw std::logic_error("LassoSearch: solved path loops");
       }
-      best_cycle = g.cycle(acc).lower;  // exact for a solved accepting node
+      best_cycle = {g.cycle(acc).lower, g.cycle(acc).moves};  // exact for a solved accepting node
       drop_loops(g, init, r.prefix_edges);
     }
     r.accepting = acc;
@@ -305,17 +336,18 @@ LassoResult LassoSearch::run(ProductGraph& g, const std::vector<NodeId>& starts,
     if (learn && g.cycle(acc).exact && g.cycle_path(acc, r.cycle_edges)) {
       r.cycle_cost = g.cycle(acc).lower;  // recorded with the exact cost by an earlier query
     } else {
-      // The cycle's path: search again through the (now exactly known) best cycle.
+      // The cycle's path: search again through the (now exactly known) best
+      // cycle: the least cycle below a bound just above its cost is it.
       ProductGraph::Cycle saved = g.cycle(acc);
-      g.set_cycle(acc, {0, false});
+      g.set_cycle(acc, {0, 0, false});
       LassoResult scratch;
       SearchLimits unlimited;
       unlimited.max_nodes = ~std::size_t{0};
-      const double c =
-          cycle(g, acc, best_cycle + 1e-7 * (1 + best_cycle), cycle_h, unlimited, 0, stats, scratch);
+      const Cost c = cycle(g, acc, {best_cycle.c + 1e-7 * (1 + best_cycle.c), kManyMoves}, cycle_h, unlimited, 0,
+                           stats, scratch);
       g.set_cycle(acc, saved);
       r.cycle_edges = cycle_path_;
-      r.cycle_cost = c;
+      r.cycle_cost = c.c;
       if (learn) {
         double sum = 0;
         for (std::uint32_t e : r.cycle_edges) sum += g.edge(e).cost;
@@ -330,19 +362,26 @@ LassoResult LassoSearch::run(ProductGraph& g, const std::vector<NodeId>& starts,
     for (NodeId m : closed_list_)
       if (!g.solved(m)) g.learn(m, total - S.g[m]);
     if (r.found) {
-      // The lasso is optimal, so every node x on its prefix has V(x) exactly
-      // total - (cost of the prefix up to x): the rest of the lasso achieves
-      // it, and V(x) >= C* - dist(init, x) >= that. Nodes solved earlier keep
-      // their via edge, so via chains only lead to nodes solved no later and,
-      // among nodes solved together, along one simple path: they end.
+      // The lasso is optimal in (cost, moves), so every node x on its prefix
+      // has V(x) exactly (total, total moves) - (cost, moves of the prefix up
+      // to x): the rest of the lasso achieves it, and V(x) >= C* - dist(init,
+      // x) >= that (in the same order). Nodes solved earlier keep their via
+      // edge, so via chains only lead to nodes solved no later and, among
+      // nodes solved together, along one simple path: they end.
+      std::uint32_t cycle_moves = 0;
+      for (std::uint32_t e : r.cycle_edges) cycle_moves += g.edge(e).action != stay ? 1 : 0;
+      std::uint32_t total_m = cycle_moves;
+      for (std::uint32_t e : r.prefix_edges) total_m += g.edge(e).action != stay ? 1 : 0;
       double gx = 0;
+      std::uint32_t mx = 0;
       NodeId x = r.start;
       for (std::uint32_t e : r.prefix_edges) {
-        if (!g.solved(x)) g.set_solved(x, total - gx, e);
+        if (!g.solved(x)) g.set_solved(x, total - gx, total_m - mx, e);
         gx += g.edge(e).cost;
+        mx += g.edge(e).action != stay ? 1 : 0;
         x = g.edge(e).dst;
       }
-      if (!g.solved(x)) g.set_solved(x, r.cycle_cost, ProductGraph::kViaCycle);
+      if (!g.solved(x)) g.set_solved(x, r.cycle_cost, cycle_moves, ProductGraph::kViaCycle);
     }
   }
   return r;

@@ -18,6 +18,13 @@
 //      not depend on the start, so they are kept in the graph (exact, or "none
 //      below b") and reused by later queries.
 //   3. Stop when the smallest f in the open list is >= best.
+// Ties: paths, cycles and lassos are compared as (cost, number of moves)
+// lexicographically (costs equal within 1e-9), so among the cheapest lassos
+// the one with the fewest moves is returned. h stays a cost bound (its moves
+// part is 0, admissible in that order); labels are re-opened when (g, moves)
+// improves; an open entry is skipped when (f, moves) is not below the
+// incumbent and the search stops when f exceeds the incumbent's cost; the
+// arguments below hold in that order.
 // Optimality: let L* = P + C be an optimal lasso (over all starts) through
 // accepting node N*, its prefix P from start node s*.
 // Every node m on its prefix has f(m) <= g*(m) + V(m) <= L*, where V(m) is the
@@ -111,9 +118,16 @@ class LassoSearch {
   struct Item {
     double f, g;
     NodeId n;
+    std::uint32_t m;  // moves on the path (second part of the (cost, moves) order)
   };
+  struct Cost {
+    double c;
+    std::uint32_t m;
+  };
+  static constexpr Cost kNoCost{kInf, ~std::uint32_t{0}};
   struct Space {
     std::vector<double> g, h;
+    std::vector<std::uint32_t> m;  // moves of the path with cost g
     std::vector<NodeId> parent;
     std::vector<std::uint32_t> pedge, stamp;
     std::vector<std::uint8_t> closed;
@@ -126,10 +140,11 @@ class LassoSearch {
     Item pop();
     std::size_t bytes() const;
   };
-  // Cheapest cycle through n below `bound`; kInf if none. Fills cycle_path_ when found.
-  // `h` (null: none) gives the walk bounds back to n's automaton state.
-  double cycle(ProductGraph& g, NodeId n, double bound, Heuristic* h, const SearchLimits& limits,
-               std::int64_t deadline_ns, SearchStats& stats, LassoResult& r);
+  // Cheapest cycle through n in the order (cost, moves) below `bound`;
+  // kNoCost if none. Fills cycle_path_ when found. `h` (null: none) gives the
+  // walk bounds back to n's automaton state.
+  Cost cycle(ProductGraph& g, NodeId n, Cost bound, Heuristic* h, const SearchLimits& limits,
+             std::int64_t deadline_ns, SearchStats& stats, LassoResult& r);
   void drop_loops(const ProductGraph& g, NodeId from, std::vector<std::uint32_t>& edges);
   // Node and time limits; reports progress. Checks the clock every 128 calls.
   bool out_of_budget(const ProductGraph& g, const SearchLimits& limits, std::int64_t deadline_ns,
