@@ -30,7 +30,7 @@ using namespace rtamp;
 using Clock = std::chrono::steady_clock;
 
 struct BatchArgs {
-  std::string scenario;
+  std::string scenario, world = "mujoco";
   std::vector<std::string> merge;
   int trials = 30;
   std::vector<std::string> changes;
@@ -138,6 +138,7 @@ int run_batch(const BatchArgs& a) {
   opt.cost = a.cost;
   opt.randomize_initial = !a.no_randomize;
   opt.scripted_operator = a.scripted;
+  opt.world = a.world == "symbolic" ? episode::WorldKind::Symbolic : episode::WorldKind::MuJoCo;
   opt.log_dir = a.log_dir;
 
   // Rows are appended as episodes finish (so a killed batch keeps what it
@@ -279,6 +280,9 @@ rtamp::cli::Registrar reg{
           ->check(CLI::IsMember({"euclid", "region", "unit", "ik"}))
           ->capture_default_str();
       sub.add_option("--log-dir", a->log_dir, "Write each episode's JSON Lines log into this directory");
+      sub.add_option("--world", a->world, "World: mujoco (simulated UR5) | symbolic (no physics, milliseconds an episode)")
+          ->check(CLI::IsMember({"mujoco", "symbolic"}))
+          ->capture_default_str();
       sub.add_flag("--scripted", a->scripted, "Also apply the scenario's own operator script in every episode");
       sub.add_flag("--no-randomize", a->no_randomize, "Keep the scenario's initial object positions");
       sub.add_flag("--quiet,-q", a->quiet, "No progress on standard error");

@@ -1,29 +1,47 @@
-// rtamp run — one episode of the reactive loop (exec/episode.hpp) on a scenario.
+// rtamp run — one episode of the reactive loop (episode/episode.hpp) on a scenario,
+// in the MuJoCo world or the symbolic one. SIGINT / SIGTERM end the episode cleanly
+// (the log gets its end record) with exit code 130 / 143.
+#include <atomic>
+#include <csignal>
+#include <cstdio>
 #include <iostream>
 
 #include "command.hpp"
-#include "rtamp/exec/episode.hpp"
+#include "rtamp/episode/episode.hpp"
+#include "rtamp/exec/episode_log.hpp"
 #include "rtamp/world/scenario_io.hpp"
 
 namespace {
 
+std::atomic<int> g_signal{0};
+static_assert(std::atomic<int>::is_always_lock_free);
+extern "C" void on_signal(int sig) { g_signal.store(sig); }
+
 rtamp::cli::Registrar reg{
     "run",
-    "Run one episode: plan, execute through a behavior tree on the simulated UR5, react to the operator",
+    "Run one episode: plan, execute through a behavior tree (MuJoCo UR5 or symbolic world), react to the operator",
     [](CLI::App& app) -> rtamp::cli::Action {
       struct Opts {
-        std::string scenario, algo = "astar-exp", bt = "online-action", cost = "euclid", log, trees, video, change;
+        std::string scenario, algo = "astar-exp", bt = "online-action", cost = "euclid", log, trees, video, change,
+                              world = "mujoco", planning;
         std::uint64_t seed = 1;
-        double max_time = 900;
+        double max_time = 900, rate = 0, failures = 0;
+        int cycles = 0;
         bool json = false, quiet = false, random_initial = false, no_operator = false;
       };
       auto o = std::make_shared<Opts>();
       app.description(
           "Run one episode of rtamp's reactive loop (the paper's Algorithm 1) on SCENARIO (a YAML file or a\n"
-          "built-in name: 3-block, 3-block-tray): translate the task, plan, build the behavior tree, execute\n"
-          "it on the simulated UR5 while the scenario's operator intervenes, replan and reconfigure the tree\n"
-          "when needed. Prints a timeline (simulated time) unless --quiet; --json prints the metrics.");
+          "built-in name): translate the task, plan, build the behavior tree, execute it while the operator\n"
+          "intervenes, track the task's progress along what actually happens, replan and reconfigure the tree\n"
+          "when needed. --world mujoco (default) runs the simulated UR5; --world symbolic runs a discrete-event\n"
+          "world with no physics (milliseconds an episode; docs/symbolic-world.md). Prints a timeline (world\n"
+          "time) unless --quiet; --json prints only the metrics as JSON on stdout (the timeline then goes to\n"
+          "stderr). Exit code 0 if the task was done, 1 if the episode ended otherwise, 2 on bad input,\n"
+          "130 / 143 when interrupted by SIGINT / SIGTERM.");
       app.add_option("scenario", o->scenario, "Scenario file or built-in name")->required();
+      app.add_option("--world", o->world, "World: mujoco (simulated UR5) | symbolic (no physics)")
+          ->check(CLI::IsMember({"mujoco", "symbolic"}));
       app.add_option("--algo", o->algo, "Search: dijkstra | astar | astar-exp (A* with experience)")
           ->check(CLI::IsMember({"dijkstra", "astar", "astar-exp"}));
       app.add_option("--bt", o->bt,
@@ -32,29 +50,49 @@ rtamp::cli::Registrar reg{
           ->check(CLI::IsMember({"online-action", "online-state", "offline"}));
       app.add_option("--cost", o->cost, "Planner motion cost: euclid | region | unit | ik (UR5 skill paths)")
           ->check(CLI::IsMember({"euclid", "region", "unit", "ik"}));
+      app.add_option("--planning", o->planning,
+                     "worker: plan on a thread, charging its time to world time (default for mujoco) | inline: "
+                     "plan synchronously, charged nothing, deterministic (default for symbolic)")
+          ->check(CLI::IsMember({"worker", "inline"}));
       app.add_option("--seed", o->seed, "Seed of the episode (operator, perception, random initial layout)");
       app.add_option("--change", o->change, "Add one random intervention: relocate | add | remove")
           ->check(CLI::IsMember({"relocate", "add", "remove"}));
+      app.add_option("--rate", o->rate, "Random interventions per second of world time, of every kind (default 0)")
+          ->check(CLI::Range(0.0, 100.0));
+      app.add_option("--failures", o->failures, "Symbolic world: probability that a move fails (default 0)")
+          ->check(CLI::Range(0.0, 1.0));
+      app.add_option("--cycles", o->cycles,
+                     "Recurring tasks (plans that cycle through moves): succeed after K completed cycles "
+                     "(default 0: run until --max-time)")
+          ->check(CLI::Range(0, 1000000));
       app.add_flag("--random-initial", o->random_initial, "Shuffle objects inside their initial locations");
       app.add_flag("--no-operator", o->no_operator, "Ignore the scenario's scripted operator");
-      app.add_option("--max-time", o->max_time, "Give up after this many seconds of simulated time");
+      app.add_option("--max-time", o->max_time, "Give up after this many seconds of world time (default 900)")
+          ->check(CLI::Range(1e-3, 1e7));
       app.add_option("--log", o->log, "Write the episode as JSON Lines to FILE");
       app.add_option("--trees", o->trees, "Write the tree as BehaviorTree.CPP XML after each change into DIR");
-      app.add_option("--video", o->video, "Record the run to FILE.mp4 (offscreen rendering)");
-      app.add_flag("--json", o->json, "Print the episode's metrics as one JSON object at the end");
+      app.add_option("--video", o->video, "Record the run to FILE.mp4 (offscreen rendering; mujoco only)");
+      app.add_flag("--json", o->json, "Print only the episode's metrics, as one JSON object, on stdout");
       app.add_flag("--quiet", o->quiet, "No timeline");
       return [o]() -> int {
         using namespace rtamp;
         const world::Scenario scenario = world::load_scenario(o->scenario);
-        exec::EpisodeOptions opt;
+        episode::EpisodeOptions opt;
+        opt.world = o->world == "symbolic" ? episode::WorldKind::Symbolic : episode::WorldKind::MuJoCo;
         opt.algorithm = o->algo == "dijkstra" ? plan::Algorithm::Dijkstra
                         : o->algo == "astar"  ? plan::Algorithm::AStar
                                               : plan::Algorithm::AStarExperience;
         opt.conditions = o->bt == "online-state" ? exec::ConditionMode::State : exec::ConditionMode::Action;
         opt.reconfiguration = o->bt == "offline" ? exec::Reconfiguration::Offline : exec::Reconfiguration::Online;
+        const std::string planning =
+            !o->planning.empty() ? o->planning : (opt.world == episode::WorldKind::Symbolic ? "inline" : "worker");
+        opt.planning = planning == "inline" ? exec::PlanningMode::Inline : exec::PlanningMode::Worker;
         opt.cost = o->cost;
         opt.seed = o->seed;
         opt.max_time = o->max_time;
+        opt.cycles = o->cycles;
+        opt.random_rate = o->rate;
+        opt.failure_probability = o->failures;
         opt.randomize_initial = o->random_initial;
         opt.scripted_operator = !o->no_operator;
         if (o->change == "relocate") opt.random_change = world::Intervention::Kind::Relocate;
@@ -63,17 +101,35 @@ rtamp::cli::Registrar reg{
         opt.log_path = o->log;
         opt.tree_dir = o->trees;
         opt.video_path = o->video;
-        if (!o->quiet) opt.timeline = [](const std::string& line) { std::cout << line << '\n' << std::flush; };
-        const exec::EpisodeMetrics m = exec::run_episode(scenario, opt);
-        if (o->json) {
-          std::cout << exec::to_json(m).dump(2) << '\n';
-        } else {
-          std::printf("\n%s: %s\n  completion %.2f s (simulated), motion cost %.3f m, %d replans (%.1f us total), "
-                      "first plan %.1f us, %zu tree changes, %d interventions, real-time factor %.1fx\n",
-                      m.success ? "SUCCESS" : "FAILURE", m.reason.c_str(), m.completion_time, m.motion_cost,
-                      m.replans, m.replan_seconds * 1e6, m.first_plan_seconds * 1e6, m.tree_changes,
-                      m.interventions, m.real_time_factor);
+        if (!o->quiet) {
+          std::FILE* to = o->json ? stderr : stdout;
+          opt.timeline = [to](const std::string& line) {
+            std::fputs(line.c_str(), to);
+            std::fputc('\n', to);
+            std::fflush(to);
+          };
         }
+        opt.interrupt = &g_signal;
+        std::signal(SIGINT, on_signal);
+        std::signal(SIGTERM, on_signal);
+        const episode::EpisodeMetrics m = episode::run_episode(scenario, opt);
+        std::signal(SIGINT, SIG_DFL);
+        std::signal(SIGTERM, SIG_DFL);
+        if (o->json) {
+          std::cout << exec::to_json(m, 2) << '\n';
+        } else {
+          char completion[48] = "none";
+          if (m.completion_time) std::snprintf(completion, sizeof completion, "%.2f s", *m.completion_time);
+          std::printf("\n%s: %s\n  completion %s (world time), motion cost %.3f m, %d replans (%.1f us total), "
+                      "first plan %.1f us, %zu tree changes, %d interventions (%d applied, %d refused)%s, "
+                      "real-time factor %.1fx\n",
+                      m.success ? "SUCCESS" : "FAILURE", m.reason.c_str(), completion, m.motion_cost, m.replans,
+                      m.replan_seconds * 1e6, m.first_plan_seconds * 1e6, m.tree_changes, m.interventions,
+                      m.interventions_applied, m.interventions_refused,
+                      m.cycles > 0 ? (", " + std::to_string(m.cycles) + " cycles").c_str() : "",
+                      m.real_time_factor);
+        }
+        if (m.end == exec::EndReason::Interrupted) return g_signal.load() == SIGTERM ? 143 : 130;
         return m.success ? 0 : 1;
       };
     }};

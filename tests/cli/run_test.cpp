@@ -64,6 +64,59 @@ TEST(CliRun, BadInputIsOneClearLine) {
   EXPECT_NE(r.out.find("online-action"), std::string::npos);
 }
 
+TEST(CliRun, SymbolicWorldRunsTheTrayTask) {
+  const Result r = run("run 3-block-tray --world symbolic --json");
+  ASSERT_EQ(r.rc, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);  // only JSON on stdout, the timeline went to stderr
+  EXPECT_EQ(j.at("success"), true);
+  EXPECT_EQ(j.at("end"), "task-done");
+  EXPECT_EQ(j.at("interventions_applied"), 1);
+  EXPECT_NE(r.err.find("first plan in"), std::string::npos);
+}
+
+TEST(CliRun, FailedEpisodeHasNoCompletionTime) {
+  const Result r = run("run 3-block --world symbolic --max-time 3 --quiet --json");
+  EXPECT_EQ(r.rc, 1);
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j.at("end"), "time-limit");
+  EXPECT_TRUE(j.at("completion_time").is_null());
+}
+
+// SIGINT ends the episode cleanly: exit 130 and a log that ends with its "end" record.
+TEST(CliRun, InterruptWritesTheEndRecord) {
+  const auto dir = scratch();
+  const std::string log = (dir / "interrupted.jsonl").string();
+  for (const auto& [sig, code] : {std::pair{"INT", 130}, std::pair{"TERM", 143}}) {
+    std::filesystem::remove(log);
+    // The MuJoCo episode takes seconds of wall time; the signal arrives after one.
+    const Result r = run("run 3-block --quiet --log '" + log + "' & pid=$!; sleep 1; kill -" + std::string(sig) +
+                         " $pid; wait $pid");
+    EXPECT_EQ(r.rc, code) << sig << ": " << r.err;
+    std::istringstream in(slurp(log));
+    std::string line, last;
+    while (std::getline(in, line)) last = line;
+    ASSERT_FALSE(last.empty()) << sig;
+    const auto end = nlohmann::json::parse(last);
+    EXPECT_EQ(end.at("ev"), "end");
+    EXPECT_EQ(end.at("end"), "interrupted");
+    EXPECT_TRUE(end.at("metrics").at("completion_time").is_null());
+  }
+}
+
+TEST(CliRun, PatrolWithCyclesSucceeds) {
+  const auto dir = scratch();
+  const std::string yaml = (dir / "patrol.yaml").string();
+  std::string text = slurp(std::string(RTAMP_SOURCE_DIR) + "/scenarios/3-block.yaml");
+  text.replace(text.find("propositions:"), std::string::npos,
+               "propositions:\n  o1_in_r1: \"o1 in r1\"\n  o1_in_r2: \"o1 in r2\"\ntask: \"G F o1_in_r1 & G F o1_in_r2\"\n");
+  std::ofstream(yaml) << text;
+  const Result r = run("run '" + yaml + "' --world symbolic --cycles 2 --quiet --json");
+  ASSERT_EQ(r.rc, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j.at("end"), "cycles");
+  EXPECT_EQ(j.at("cycles"), 2);
+}
+
 TEST(CliPlan, IkCostModelPlansTheTrayTask) {
   const Result r = run("plan 3-block-tray --cost ik --json");
   ASSERT_EQ(r.rc, 0) << r.err;

@@ -10,7 +10,8 @@ PlanTree::PlanTree(ConditionMode mode, Reconfiguration reconfiguration, ActionRu
       tree_(std::make_shared<bt::Blackboard>(), std::move(clock)) {
   tree_.blackboard().set(kPlacementKey, world::Placement{});
   auto root = std::make_unique<bt::Sequence>("plan");
-  root->set_yield([this] { return pending_.has_value(); });  // a deferred change goes in between two steps
+  // A deferred change (or a plan the executor awaits) goes in between two steps.
+  root->set_yield([this] { return pending_.has_value() || hold_; });
   root_ = tree_.set_root(std::move(root));
 }
 

@@ -23,6 +23,7 @@
 //    retried after each tick until that subtree has returned. While a change
 //    is pending, the root yields after each finished step (bt::Sequence's
 //    yield), so the next step does not start before the change is applied.
+//    The executor can ask for the same while it waits for a replan (hold()).
 //    A change applied while no move runs restarts the root at the first step.
 //  - Offline (baseline): when no move runs, halt the tree, remove every subtree
 //    and build the new ones from scratch.
@@ -58,6 +59,8 @@ class PlanTree {
   // Applies a deferred plan if it can now be applied; nullopt if nothing was pending.
   std::optional<ReconfigurationReport> retry_pending();
   bool has_pending() const { return pending_.has_value(); }
+  // While held, the root yields after each finished step (no new step starts).
+  void hold(bool on) { hold_ = on; }
 
   bt::Status tick() { return tree_.tick(); }
   bt::Tree& tree() { return tree_; }
@@ -89,6 +92,7 @@ class PlanTree {
   std::vector<plan::ActionTuple> tuples_;
   std::optional<std::vector<plan::ActionTuple>> pending_;
   std::size_t changes_ = 0;
+  bool hold_ = false;
 };
 
 }  // namespace rtamp::exec

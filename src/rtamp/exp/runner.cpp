@@ -11,8 +11,9 @@
 
 namespace rtamp::exp {
 
-exec::EpisodeOptions episode_options(const Trial& t, const BatchOptions& o) {
-  exec::EpisodeOptions e;
+episode::EpisodeOptions episode_options(const Trial& t, const BatchOptions& o) {
+  episode::EpisodeOptions e;
+  e.world = o.world;
   switch (t.algorithm) {
     case Algorithm::AStarExperience: e.algorithm = plan::Algorithm::AStarExperience; break;
     case Algorithm::AStar: e.algorithm = plan::Algorithm::AStar; break;
@@ -70,7 +71,7 @@ EpisodeRecord make_record(const std::string& scenario, const Trial& t, const exe
   r.replan_s = m.replan_seconds;
   r.replans = m.replans;
   r.tree_changes = m.tree_changes;
-  r.completion_s = m.completion_time;
+  r.completion_s = m.completion_time.value_or(0);  // summaries average it over successes only
   r.motion_cost = m.motion_cost;
   r.interventions = m.interventions;
   r.wall_s = m.wall_seconds;
@@ -97,7 +98,7 @@ std::vector<EpisodeRecord> run_batch(const world::Scenario& scenario, const std:
       const Trial& t = trials[i];
       EpisodeRecord r;
       try {
-        r = make_record(scenario.name, t, exec::run_episode(scenario, episode_options(t, options)));
+        r = make_record(scenario.name, t, episode::run_episode(scenario, episode_options(t, options)));
       } catch (const std::exception& e) {
         exec::EpisodeMetrics m;
         m.reason = std::string("error: ") + e.what();

@@ -1,12 +1,12 @@
 // Running a batch of episodes (`rtamp batch`): each trial of the grid
 // (trials.hpp) is one independent episode of the reactive loop
-// (exec::run_episode, the paper's Algorithm 1) with the objects placed at
+// (episode::run_episode, the paper's Algorithm 1) with the objects placed at
 // random inside their initial locations and one random intervention of the
 // trial's change kind at a random time — the protocol of the paper's
 // Section VI ("30 test scenarios ... randomly placing objects in the beginning
 // and then introduced an additional environmental change").
 //
-// Episodes run on `jobs` worker threads, each episode with its own simulation,
+// Episodes run on `jobs` worker threads, each episode with its own world,
 // planner and tree (run_episode shares no mutable state between episodes), so
 // the results do not depend on `jobs` or on the order episodes finish in,
 // except through measured wall times (planning time is charged to simulated
@@ -21,7 +21,7 @@
 #include <string>
 #include <vector>
 
-#include "rtamp/exec/episode.hpp"
+#include "rtamp/episode/episode.hpp"
 #include "rtamp/exp/record.hpp"
 #include "rtamp/exp/trials.hpp"
 #include "rtamp/world/scenario.hpp"
@@ -36,10 +36,11 @@ struct BatchOptions {
   bool scripted_operator = false; // also apply the scenario's own `operator:` script
   double change_window_begin = 2, change_window_end = 20;  // s, when the random change happens (within every task)
   std::string log_dir;            // JSON Lines log per episode into this directory; empty: none
+  episode::WorldKind world = episode::WorldKind::MuJoCo;  // or the symbolic world (no physics)
 };
 
 // The episode options of one trial.
-exec::EpisodeOptions episode_options(const Trial& trial, const BatchOptions& options);
+episode::EpisodeOptions episode_options(const Trial& trial, const BatchOptions& options);
 // Log file name of a trial inside log_dir: "<change>-<algorithm>-<bt>-<trial>.jsonl".
 std::string log_file_name(const Trial& trial);
 // The CSV row of a finished episode.

@@ -70,6 +70,7 @@ class Session {
   ~Session();
 
   Simulation& sim() { return sim_; }
+  const Simulation& sim() const { return sim_; }
   Controller& controller() { return controller_; }
   SkillRunner& skills() { return runner_; }
   Perception& perception() { return perception_; }

@@ -6,16 +6,18 @@
 #include <filesystem>
 #include <fstream>
 
-#include "rtamp/exec/episode.hpp"
+#include <nlohmann/json.hpp>
+
+#include "rtamp/episode/episode.hpp"
 #include "rtamp/world/scenario_io.hpp"
 
-namespace rtamp::exec {
+namespace rtamp::episode {
 namespace {
 
 using Kind = world::Intervention::Kind;
 
 }  // namespace
-}  // namespace rtamp::exec
+}  // namespace rtamp::episode
 
 namespace rtamp::world {
 void PrintTo(Intervention::Kind k, std::ostream* os) {
@@ -23,7 +25,7 @@ void PrintTo(Intervention::Kind k, std::ostream* os) {
 }
 }  // namespace rtamp::world
 
-namespace rtamp::exec {
+namespace rtamp::episode {
 namespace {
 
 class SeededEpisodes : public ::testing::TestWithParam<std::tuple<std::string, Kind>> {};
@@ -69,4 +71,4 @@ INSTANTIATE_TEST_SUITE_P(Changes, SeededEpisodes,
                          });
 
 }  // namespace
-}  // namespace rtamp::exec
+}  // namespace rtamp::episode

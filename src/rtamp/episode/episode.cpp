@@ -1,0 +1,143 @@
+#include "rtamp/episode/episode.hpp"
+
+#include <algorithm>
+#include <memory>
+#include <random>
+
+#include "rtamp/episode/sim_world.hpp"
+#include "rtamp/episode/video_recorder.hpp"
+#include "rtamp/exec/episode_log.hpp"
+#include "rtamp/exec/symbolic_world.hpp"
+#include "rtamp/exec/timeline.hpp"
+#include "rtamp/exec/tree_dump.hpp"
+#include "rtamp/robot/ik_motion_cost.hpp"
+#include "rtamp/world/geometry.hpp"
+
+namespace rtamp::episode {
+
+namespace {
+
+// Objects moved to random non-overlapping spots inside their initial location.
+void randomize_objects(world::Scenario& s, std::mt19937_64& rng) {
+  const world::Geometry geometry(s);
+  const world::Placement initial = world::initial_placement(s);
+  std::vector<world::Footprint> placed;
+  for (const auto& c : s.containers) placed.push_back({c.position[0], c.position[1], c.size[0], c.size[1]});
+  for (auto& o : s.objects) {
+    const std::string* loc = initial.location_of(o.name);
+    const auto fp = loc ? geometry.footprint_of(*loc) : std::nullopt;
+    if (!fp) continue;
+    const bool in_region = s.find_region(*loc) != nullptr;
+    for (int attempt = 0; attempt < 200; ++attempt) {
+      std::uniform_real_distribution<double> ux(fp->min_x() + o.size[0], fp->max_x() - o.size[0]);
+      std::uniform_real_distribution<double> uy(fp->min_y() + o.size[1], fp->max_y() - o.size[1]);
+      world::Footprint cand{ux(rng), uy(rng), o.size[0], o.size[1]};
+      bool clash = false;
+      for (const auto& f : placed) {
+        // In a region, keep clear of containers standing there and of other objects.
+        if (cand.overlaps(f, in_region ? 0.04 : 0.02)) clash = true;
+      }
+      if (clash) continue;
+      o.position[0] = cand.x;
+      o.position[1] = cand.y;
+      break;
+    }
+    placed.push_back({o.position[0], o.position[1], o.size[0], o.size[1]});
+  }
+}
+
+world::Intervention random_intervention(const world::Scenario& s, world::Intervention::Kind kind,
+                                        const EpisodeOptions& o, std::mt19937_64& rng) {
+  world::Intervention iv;
+  iv.kind = kind;
+  iv.time = std::uniform_real_distribution<double>(o.change_window_begin, o.change_window_end)(rng);
+  std::vector<std::string> blocks;
+  for (const auto& obj : s.objects) blocks.push_back(obj.name);
+  if (kind == world::Intervention::Kind::Add) {
+    iv.subject = "o_added";
+    iv.cls = "block";
+    iv.location = s.regions.empty() ? std::string{} : s.regions[rng() % s.regions.size()].name;
+  } else if (!blocks.empty()) {
+    iv.subject = blocks[rng() % blocks.size()];
+    if (kind == world::Intervention::Kind::Relocate && !s.regions.empty())
+      iv.location = s.regions[rng() % s.regions.size()].name;
+  }
+  return iv;
+}
+
+}  // namespace
+
+const char* to_string(WorldKind w) { return w == WorldKind::MuJoCo ? "mujoco" : "symbolic"; }
+
+EpisodeMetrics run_episode(const world::Scenario& input, const EpisodeOptions& opt) {
+  std::mt19937_64 rng(opt.seed * 0x9E3779B97F4A7C15ull + 1);
+  world::Scenario scenario = input;
+  if (opt.randomize_initial) randomize_objects(scenario, rng);
+  std::vector<world::Intervention> script;
+  if (opt.scripted_operator) script = scenario.interventions;
+  if (opt.random_change) script.push_back(random_intervention(scenario, *opt.random_change, opt, rng));
+  std::stable_sort(script.begin(), script.end(), [](const auto& a, const auto& b) { return a.time < b.time; });
+
+  // Outputs first: a bad path is refused before anything runs.
+  std::unique_ptr<exec::EpisodeLog> log;
+  if (!opt.log_path.empty()) log = std::make_unique<exec::EpisodeLog>(opt.log_path);
+  std::unique_ptr<exec::TreeDump> trees;
+  if (!opt.tree_dir.empty()) trees = std::make_unique<exec::TreeDump>(opt.tree_dir);
+  if (!opt.video_path.empty() && opt.world != WorldKind::MuJoCo)
+    throw Error("--video needs the MuJoCo world (the symbolic world has nothing to film)");
+
+  std::unique_ptr<exec::World> world;
+  SimWorld* sim_world = nullptr;
+  if (opt.world == WorldKind::MuJoCo) {
+    sim::SessionOptions so;
+    so.seed = opt.seed;
+    so.op.script = script;
+    so.op.random_rate = opt.random_rate;
+    auto w = std::make_unique<SimWorld>(scenario, so);
+    sim_world = w.get();
+    world = std::move(w);
+  } else {
+    exec::SymbolicWorldOptions so;
+    so.seed = opt.seed;
+    so.script = script;
+    so.random_rate = opt.random_rate;
+    so.failure_probability = opt.failure_probability;
+    world = std::make_unique<exec::SymbolicWorld>(scenario, so);
+  }
+  std::unique_ptr<VideoRecorder> video;
+  if (sim_world && !opt.video_path.empty()) video = std::make_unique<VideoRecorder>(sim_world->session().sim(), opt.video_path);
+
+  exec::LoopOptions lo;
+  lo.planner.algorithm = opt.algorithm;
+  lo.planner.cost = opt.cost;
+  if (opt.cost == "ik")
+    lo.planner.model = std::make_shared<robot::IkMotionCost>(robot::IkMotionCost::params_for(scenario));
+  lo.conditions = opt.conditions;
+  lo.reconfiguration = opt.reconfiguration;
+  lo.planning = opt.planning;
+  lo.max_time = opt.max_time;
+  lo.tick_period = opt.tick_period;
+  lo.max_consecutive_failures = opt.max_consecutive_failures;
+  lo.outside_grace = opt.outside_grace;
+  lo.cycles = opt.cycles;
+  lo.seed = opt.seed;
+  lo.world_name = to_string(opt.world);
+  lo.interrupt = opt.interrupt;
+  exec::ReactiveLoop loop(*world, scenario, lo);
+  std::unique_ptr<exec::Timeline> timeline;
+  if (opt.timeline) timeline = std::make_unique<exec::Timeline>(opt.timeline);
+  if (log) {
+    if (sim_world) log->add_end_field("mujoco_warnings", [sim_world] {
+      return static_cast<double>(sim_world->session().sim().warnings().total());
+    });
+    loop.add_observer(*log);
+  }
+  if (timeline) loop.add_observer(*timeline);
+  if (trees) loop.add_observer(*trees);
+  if (video) loop.add_observer(*video);
+  EpisodeMetrics m = loop.run();
+  if (video) video->close();
+  return m;
+}
+
+}  // namespace rtamp::episode

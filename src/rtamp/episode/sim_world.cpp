@@ -1,0 +1,154 @@
+#include "rtamp/episode/sim_world.hpp"
+
+#include <algorithm>
+
+namespace rtamp::episode {
+
+SimWorld::SimWorld(const world::Scenario& scenario, sim::SessionOptions options)
+    : session_(scenario, std::move(options)) {}
+
+void SimWorld::advance(double dt) {
+  auto& sim = session_.sim();
+  auto& op = session_.op();
+  const int steps = std::max(1, static_cast<int>(std::lround(dt / sim.timestep())));
+  Eigen::Vector3d last = sim.tool_pose().translation();
+  for (int k = 0; k < steps; ++k) {
+    session_.controller().update();
+    sim.step();
+    const Eigen::Vector3d tool = sim.tool_pose().translation();
+    travelled_ += (tool - last).norm();  // the tool path actually travelled
+    last = tool;
+    if (op.next_time() <= sim.time())
+      for (const sim::OperatorEvent& e : op.update())
+        events_.push_back(exec::WorldEvent{e.time, e.what, e.applied, e.detail});
+  }
+}
+
+std::vector<exec::WorldEvent> SimWorld::take_events() {
+  std::vector<exec::WorldEvent> out;
+  out.swap(events_);
+  return out;
+}
+
+world::Placement SimWorld::observe() {
+  session_.perception().observe(percept_);
+  return percept_.placement();
+}
+
+bool SimWorld::holds(const std::string& thing) const {
+  const auto& sim = session_.sim();
+  return sim.held() >= 0 && sim.held() == sim.find(thing);
+}
+
+void SimWorld::end(exec::MoveStatus s, const std::string& why) {
+  status_ = s;
+  why_ = why;
+  phase_ = Phase::Done;
+}
+
+void SimWorld::start(const exec::Move& m) {
+  move_ = m;
+  status_ = exec::MoveStatus::Running;
+  why_.clear();
+  phase_ = Phase::Picking;
+  if (!session_.skills().start_pick(m.thing)) end(exec::MoveStatus::Failed, session_.controller().reason());
+}
+
+bool SimWorld::place_somewhere(const std::string& preferred) {
+  auto& sim = session_.sim();
+  const int held = sim.held();
+  if (held < 0) return false;
+  std::vector<std::string> candidates;
+  if (!preferred.empty()) candidates.push_back(preferred);
+  std::vector<std::pair<double, std::string>> regions;
+  const Eigen::Vector3d tool = sim.tool_pose().translation();
+  for (const auto& r : sim.scenario().regions)
+    regions.emplace_back(std::hypot(r.center[0] - tool.x(), r.center[1] - tool.y()), r.name);
+  std::sort(regions.begin(), regions.end());
+  for (const auto& [d, name] : regions) candidates.push_back(name);
+  for (const std::string& loc : candidates) {
+    if (loc == move_.thing) continue;
+    if (!session_.skills().place_spot(held, loc)) continue;
+    if (session_.skills().start_place(loc)) {
+      placed_at_ = loc;
+      return true;
+    }
+  }
+  return false;
+}
+
+// A failed move must not leave its thing in the gripper: put it somewhere valid first.
+void SimWorld::fail_or_recover(const std::string& why) {
+  failure_ = why;
+  if (phase_ != Phase::Recovering && holds(move_.thing)) {
+    phase_ = Phase::Recovering;
+    if (place_somewhere(move_.from)) return;
+    session_.sim().detach();
+  }
+  end(exec::MoveStatus::Failed, why);
+}
+
+exec::MoveStatus SimWorld::poll(std::string* why) {
+  if (phase_ == Phase::Picking || phase_ == Phase::Placing || phase_ == Phase::Recovering) {
+    auto& controller = session_.controller();
+    // Taken out of the gripper by a person while it was carried.
+    if ((phase_ == Phase::Placing || phase_ == Phase::Recovering) && !holds(move_.thing)) {
+      controller.halt();
+      if (session_.skills().start_retreat() && controller.status() == sim::Status::Running) returning_ = true;
+      end(exec::MoveStatus::Failed, phase_ == Phase::Recovering ? failure_ : "taken from the gripper");
+    } else if (controller.status() == sim::Status::Failure) {
+      fail_or_recover(controller.reason());
+    } else if (controller.status() != sim::Status::Running) {
+      switch (phase_) {
+        case Phase::Picking: {
+          const bool destination = session_.sim().scenario().find_region(move_.to) != nullptr ||
+                                   session_.sim().find(move_.to) >= 0;
+          phase_ = Phase::Placing;
+          if (!destination || !session_.skills().start_place(move_.to))
+            fail_or_recover(destination ? controller.reason() : "'" + move_.to + "' is gone");
+          break;
+        }
+        case Phase::Placing:
+          hand_ = move_.to;
+          end(exec::MoveStatus::Succeeded, {});
+          break;
+        case Phase::Recovering:
+          hand_ = placed_at_;
+          end(exec::MoveStatus::Failed, failure_);
+          break;
+        default: break;
+      }
+    }
+  }
+  if (why && status_ == exec::MoveStatus::Failed) *why = why_;
+  return status_;
+}
+
+void SimWorld::halt() {
+  if (phase_ == Phase::Idle || phase_ == Phase::Done) return;
+  auto& controller = session_.controller();
+  controller.halt();
+  back_thing_ = move_.thing;
+  if (holds(move_.thing)) {
+    if (place_somewhere(move_.from)) {
+      returning_ = true;
+      hand_ = placed_at_;
+    } else {
+      session_.sim().detach();
+    }
+  } else if (session_.skills().start_retreat() && controller.status() == sim::Status::Running) {
+    returning_ = true;
+  }
+  end(exec::MoveStatus::Failed, "halted");
+}
+
+bool SimWorld::busy() {
+  auto& controller = session_.controller();
+  if (returning_ && controller.status() != sim::Status::Running) {
+    returning_ = false;
+    if (controller.status() == sim::Status::Failure && holds(back_thing_)) session_.sim().detach();
+  }
+  return returning_;
+}
+
+}  // namespace rtamp::episode

@@ -1,0 +1,68 @@
+// The MuJoCo UR5 as an exec::World (exec/world.hpp): the reactive loop's
+// moves run as the sim layer's pick(o) then place(o, l) skills (the paper's
+// skill library, Fig. 2), perception maps body poses to regions, and the
+// human operator (sim::Operator: scripted and random interventions) acts
+// between physics steps. Built on sim::Session.
+//
+// Failure and preemption never leave the arm in a bad spot:
+//  - a move that fails while holding its thing first puts it back — at its
+//    source, or, if that is gone or full, the closest region with a free
+//    spot — then reports Failed;
+//  - a place whose destination vanished (a tray removed mid-carry) fails the
+//    same way;
+//  - a thing taken out of the gripper ends the move with Failed and the empty
+//    gripper backs off;
+//  - halt() stops the arm, puts a held thing back the same way, or backs the
+//    empty gripper straight up; busy() is true until that is done.
+// Invariants: at most one move runs; hand() is where the last place ended.
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "rtamp/exec/world.hpp"
+#include "rtamp/sim/session.hpp"
+
+namespace rtamp::episode {
+
+class SimWorld final : public exec::World {
+ public:
+  SimWorld(const world::Scenario& scenario, sim::SessionOptions options);
+
+  double time() const override { return session_.sim().time(); }
+  void advance(double dt) override;
+  world::Placement observe() override;
+  void start(const exec::Move& m) override;
+  exec::MoveStatus poll(std::string* why) override;
+  void halt() override;
+  bool busy() override;
+  std::string hand() const override { return hand_; }
+  double distance_travelled() const override { return travelled_; }
+  std::vector<exec::WorldEvent> take_events() override;
+
+  sim::Session& session() { return session_; }
+  const sim::Session& session() const { return session_; }
+
+ private:
+  enum class Phase { Idle, Picking, Placing, Recovering, Done };
+
+  bool holds(const std::string& thing) const;
+  void fail_or_recover(const std::string& why);
+  // Starts placing the held thing at `preferred`, else the closest region with room; false if none.
+  bool place_somewhere(const std::string& preferred);
+  void end(exec::MoveStatus s, const std::string& why);
+
+  sim::Session session_;
+  sim::Percept percept_;
+  exec::Move move_;
+  Phase phase_ = Phase::Idle;
+  exec::MoveStatus status_ = exec::MoveStatus::Idle;
+  std::string why_, failure_, hand_, placed_at_;
+  bool returning_ = false;
+  std::string back_thing_;
+  double travelled_ = 0;
+  std::vector<exec::WorldEvent> events_;
+};
+
+}  // namespace rtamp::episode

@@ -1,0 +1,150 @@
+#include "rtamp/exec/episode_log.hpp"
+
+#include <cmath>
+
+#include <nlohmann/json.hpp>
+
+#include "rtamp/util/error.hpp"
+
+namespace rtamp::exec {
+
+namespace {
+
+using nlohmann::json;
+
+json placement_json(const world::Placement& p) {
+  json j = json::object();
+  for (const auto& [name, thing] : p.things) j[name] = thing.location;
+  return j;
+}
+
+json metrics_json(const EpisodeMetrics& m) {
+  return {{"success", m.success},
+          {"end", to_string(m.end)},
+          {"reason", m.reason},
+          {"first_plan_seconds", m.first_plan_seconds},
+          {"replan_seconds", m.replan_seconds},
+          {"replans", m.replans},
+          {"tree_changes", m.tree_changes},
+          {"completion_time", m.completion_time ? json(*m.completion_time) : json(nullptr)},
+          {"motion_cost", m.motion_cost},
+          {"interventions", m.interventions},
+          {"interventions_applied", m.interventions_applied},
+          {"interventions_refused", m.interventions_refused},
+          {"actions_succeeded", m.actions_succeeded},
+          {"actions_failed", m.actions_failed},
+          {"cycles", m.cycles},
+          {"run_length", m.run_length},
+          {"world_time", m.world_time},
+          {"wall_seconds", m.wall_seconds},
+          {"real_time_factor", m.real_time_factor},
+          {"seed", m.seed}};
+}
+
+}  // namespace
+
+std::string to_json(const EpisodeMetrics& m, int indent) { return metrics_json(m).dump(indent); }
+
+EpisodeLog::EpisodeLog(const std::string& path) : out_(path), path_(path) {
+  if (!out_) throw Error("cannot write the episode log '" + path + "'");
+}
+
+void EpisodeLog::write(double t, const std::string& object) {
+  // `object` is "{...}": add the time as the last member.
+  out_ << object.substr(0, object.size() - 1) << (object.size() > 2 ? "," : "") << "\"t\":"
+       << json(std::round(t * 1e4) / 1e4).dump() << "}\n";
+  out_.flush();
+}
+
+void EpisodeLog::on_begin(const EpisodeInfo& i) {
+  write(0, json{{"ev", "episode"},
+                {"scenario", i.scenario},
+                {"task", i.task},
+                {"algorithm", i.algorithm},
+                {"conditions", i.conditions},
+                {"reconfiguration", i.reconfiguration},
+                {"world", i.world},
+                {"seed", i.seed}}
+               .dump());
+}
+
+void EpisodeLog::on_action(double t, const char* what, const std::string& action, const std::string& why) {
+  write(t, json{{"ev", "action"}, {"what", what}, {"action", action}, {"reason", why}}.dump());
+}
+
+void EpisodeLog::on_intervention(const WorldEvent& e) {
+  write(e.time, json{{"ev", "intervention"},
+                     {"kind", to_string(e.what.kind)},
+                     {"subject", e.what.subject},
+                     {"location", e.what.location},
+                     {"applied", e.applied},
+                     {"detail", e.detail}}
+                    .dump());
+}
+
+void EpisodeLog::on_perceived(double t, const world::Placement& seen, const world::Placement&) {
+  write(t, json{{"ev", "perceived"}, {"placement", placement_json(seen)}}.dump());
+}
+
+void EpisodeLog::on_things_changed(double t, const std::vector<std::string>& added,
+                                   const std::vector<std::string>& removed) {
+  write(t, json{{"ev", "things"}, {"added", added}, {"removed", removed}}.dump());
+}
+
+void EpisodeLog::on_progress(double t, const world::Placement& state, const std::vector<std::uint32_t>& states) {
+  write(t, json{{"ev", "run"}, {"state", placement_json(state)}, {"automaton_states", states}}.dump());
+}
+
+void EpisodeLog::on_handled_by_tree(double t, const std::string& by) {
+  write(t, json{{"ev", "handled_by_tree"}, {"by", by}}.dump());
+}
+
+void EpisodeLog::on_replan_request(double t, const std::string& why) {
+  write(t, json{{"ev", "replan"}, {"why", why}}.dump());
+}
+
+void EpisodeLog::on_plan(double t, const PlanEvent& e) {
+  json actions = json::array();
+  for (const auto& tu : e.tuples) actions.push_back(tu.action);
+  const auto& s = e.result.stats;
+  write(t, json{{"ev", "plan"},
+                {"first", e.first},
+                {"cost", e.result.plan.cost()},
+                {"actions", actions},
+                {"automaton_states", e.automaton_states},
+                {"seconds", s.seconds},
+                {"expanded", s.expanded},
+                {"generated", s.generated},
+                {"cache_used", s.cache_used},
+                {"cache_hits", s.cache_hits},
+                {"cache_misses", s.cache_misses}}
+               .dump());
+}
+
+void EpisodeLog::on_tree_change(double t, const ReconfigurationReport& r, const PlanTree& tree, bool deferred) {
+  json j{{"ev", "tree"},        {"applied", r.applied}, {"inserted", r.inserted},
+         {"removed", r.removed}, {"updated", r.updated}, {"changes", tree.changes()}};
+  if (deferred) j["deferred"] = true;
+  write(t, j.dump());
+}
+
+void EpisodeLog::on_cycle(double t, int completed) {
+  write(t, json{{"ev", "cycle"}, {"completed", completed}}.dump());
+}
+
+void EpisodeLog::on_tick(double t, bt::Status status, const std::string& running) {
+  if (ticks) write(t, json{{"ev", "tick"}, {"status", std::string(bt::to_string(status))}, {"running", running}}.dump());
+}
+
+void EpisodeLog::on_end(double t, const EpisodeMetrics& m, const world::Placement& p) {
+  json j{{"ev", "end"},
+         {"success", m.success},
+         {"end", to_string(m.end)},
+         {"reason", m.reason},
+         {"metrics", metrics_json(m)},
+         {"placement", placement_json(p)}};
+  for (const auto& [key, value] : end_fields_) j[key] = value();
+  write(t, j.dump());
+}
+
+}  // namespace rtamp::exec

@@ -1,0 +1,59 @@
+// The episode log: an EpisodeObserver that writes one JSON object a line
+// (JSON Lines) for everything the reactive loop reports — the episode's
+// settings, perceived placements, interventions (applied or refused), steps
+// of the observed run with the tracked automaton states, replan requests,
+// plans, tree changes, cycles, ticks — and an `end` record with the metrics.
+// Every record has "ev" (its kind) and "t" (world seconds, 1e-4 s resolution).
+// The file is opened by the constructor (rtamp::Error if it cannot be), so a
+// bad path is refused before an episode starts; each record is flushed when
+// written, so the log is complete up to the last event whatever ends the process.
+// The record kinds are documented in docs/exec.md ("The episode log").
+#pragma once
+
+#include <fstream>
+#include <functional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "rtamp/exec/episode_observer.hpp"
+
+namespace rtamp::exec {
+
+// The metrics as one JSON object (`indent` < 0: one line).
+std::string to_json(const EpisodeMetrics& m, int indent = -1);
+
+class EpisodeLog final : public EpisodeObserver {
+ public:
+  explicit EpisodeLog(const std::string& path);
+
+  // A number the end record also carries (e.g. the simulator's warnings), read at the end.
+  void add_end_field(std::string key, std::function<double()> value) {
+    end_fields_.emplace_back(std::move(key), std::move(value));
+  }
+  bool ticks = true;  // write a record per tick
+
+  void on_begin(const EpisodeInfo&) override;
+  void on_action(double t, const char* what, const std::string& action, const std::string& why) override;
+  void on_intervention(const WorldEvent&) override;
+  void on_perceived(double t, const world::Placement& seen, const world::Placement& before) override;
+  void on_things_changed(double t, const std::vector<std::string>& added,
+                         const std::vector<std::string>& removed) override;
+  void on_progress(double t, const world::Placement& state, const std::vector<std::uint32_t>& states) override;
+  void on_handled_by_tree(double t, const std::string& by) override;
+  void on_replan_request(double t, const std::string& why) override;
+  void on_plan(double t, const PlanEvent&) override;
+  void on_tree_change(double t, const ReconfigurationReport&, const PlanTree&, bool deferred) override;
+  void on_cycle(double t, int completed) override;
+  void on_tick(double t, bt::Status, const std::string& running) override;
+  void on_end(double t, const EpisodeMetrics&, const world::Placement&) override;
+
+ private:
+  void write(double t, const std::string& json_object);
+
+  std::ofstream out_;
+  std::string path_;
+  std::vector<std::pair<std::string, std::function<double()>>> end_fields_;
+};
+
+}  // namespace rtamp::exec

@@ -1,0 +1,566 @@
+#include "rtamp/exec/reactive_loop.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include "rtamp/ltl/lasso.hpp"
+#include "rtamp/util/error.hpp"
+#include "rtamp/world/geometry.hpp"
+#include "rtamp/world/propositions.hpp"
+
+namespace rtamp::exec {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
+
+std::optional<world::PropExpr> parse_atom(const std::string& atom) {
+  try {
+    return world::parse_prop_expr(atom);
+  } catch (const Error&) {
+    return std::nullopt;
+  }
+}
+
+bool cycle_has_moves(const plan::Plan& p) {
+  return std::any_of(p.cycle.begin(), p.cycle.end(), [](const plan::Step& s) { return !s.action.is_stay(); });
+}
+
+// World time as the tree's clock (Timeout decorators see world time).
+class WorldClock final : public bt::Clock {
+ public:
+  explicit WorldClock(const World& w) : world_(w) {}
+  bt::Duration now() const override {
+    return std::chrono::duration_cast<bt::Duration>(std::chrono::duration<double>(world_.time()));
+  }
+
+ private:
+  const World& world_;
+};
+
+std::string seconds_text(double s) {
+  char b[32];
+  std::snprintf(b, sizeof b, "%.2f s", s);
+  return b;
+}
+
+bool is_location(const world::Scenario& s, const world::Placement& p, const std::string& loc) {
+  if (s.find_region(loc)) return true;
+  auto it = p.things.find(loc);
+  return it != p.things.end() && it->second.container;
+}
+
+}  // namespace
+
+const char* to_string(EndReason r) {
+  switch (r) {
+    case EndReason::None: return "running";
+    case EndReason::TaskDone: return "task-done";
+    case EndReason::Cycles: return "cycles";
+    case EndReason::Unsatisfiable: return "unsatisfiable";
+    case EndReason::NoPlan: return "no-plan";
+    case EndReason::GaveUp: return "gave-up";
+    case EndReason::Lost: return "lost";
+    case EndReason::TimeLimit: return "time-limit";
+    case EndReason::Interrupted: return "interrupted";
+    case EndReason::Error: return "error";
+  }
+  return "?";
+}
+
+ReactiveLoop::ReactiveLoop(World& world, const world::Scenario& scenario, LoopOptions options)
+    : world_(world),
+      scenario_(scenario),
+      options_(std::move(options)),
+      planner_(std::make_unique<plan::Planner>(scenario_, options_.planner)),
+      progress_(planner_->automaton()) {
+  runner_ = std::make_unique<WorldRunner>(world_);
+  runner_->on_event = [this](const char* what, const std::string& action, const std::string& why) {
+    for (auto* o : observers_) o->on_action(world_.time(), what, action, why);
+  };
+  tree_ = std::make_unique<PlanTree>(options_.conditions, options_.reconfiguration, *runner_,
+                                     std::make_shared<WorldClock>(world_));
+  metrics_.seed = options_.seed;
+  for (const auto& [name, thing] : world::initial_placement(scenario_).things) last_known_[name] = thing.location;
+}
+
+ReactiveLoop::~ReactiveLoop() {
+  if (pending_ && !pending_->result) pending_->future.wait();
+}
+
+const EpisodeMetrics& ReactiveLoop::run() {
+  while (step()) {
+  }
+  return metrics_;
+}
+
+// ---- labels and progress ------------------------------------------------------
+
+void ReactiveLoop::rebuild_labeler() {
+  labeling_.reset();
+  label_ts_ = std::make_unique<task::System>(planner_->scenario(), symbolic_, std::string{});
+  labeling_ = std::make_unique<task::Labeling>(*label_ts_, planner_->automaton().atoms, parse_atom);
+}
+
+automata::Letter ReactiveLoop::letter(const world::Placement& symbolic) const {
+  return labeling_->label(label_ts_->encode(symbolic));
+}
+
+void ReactiveLoop::record_run_step(const world::Placement& next, bool things_changed,
+                                   const std::vector<std::string>& added, const std::vector<std::string>& removed) {
+  progress_.leave(letter(symbolic_));
+  symbolic_ = next;
+  if (things_changed) apply_thing_changes(added, removed);
+  run_.push_back(symbolic_);
+  run_letters_.push_back(letter(symbolic_));
+  progress_.at(run_letters_.back());
+  for (auto* o : observers_) o->on_progress(world_.time(), symbolic_, progress_.states());
+  if (progress_.dead() || !progress_.can_still_accept())
+    finish(EndReason::Unsatisfiable,
+           "the task can no longer be satisfied: no run of its automaton is consistent with what happened "
+           "and can still be accepted");
+}
+
+void ReactiveLoop::apply_thing_changes(const std::vector<std::string>& added,
+                                       const std::vector<std::string>& removed) {
+  wait_for_worker();
+  pending_.reset();  // its plan is stale
+  auto add = [&](bool containers) {
+    for (const std::string& name : added) {
+      const auto& thing = symbolic_.things.at(name);
+      if (thing.container != containers) continue;
+      if (thing.container) {
+        int capacity = 4;
+        for (const auto& k : planner_->scenario().containers)
+          if (k.cls == thing.cls) capacity = k.capacity;
+        planner_->apply(plan::Change::add_container(name, thing.cls, thing.location, capacity));
+      } else {
+        planner_->apply(plan::Change::add_object(name, thing.cls, thing.location));
+      }
+    }
+  };
+  for (const std::string& name : removed) {
+    const bool container = planner_->placement().things.at(name).container;
+    planner_->apply(container ? plan::Change::remove_container(name) : plan::Change::remove_object(name));
+  }
+  add(true);
+  add(false);
+  planner_->clear_forbidden_moves();
+  rebuild_labeler();
+  for (auto* o : observers_) o->on_things_changed(world_.time(), added, removed);
+}
+
+// ---- the episode ----------------------------------------------------------------
+
+void ReactiveLoop::finish(EndReason why, std::string reason, bool success) {
+  if (ended()) return;
+  metrics_.end = why;
+  metrics_.success = success;
+  metrics_.reason = std::move(reason);
+  if (success) metrics_.completion_time = world_.time();
+  wait_for_worker();
+  pending_.reset();
+  try {
+    tree_->tree().halt();  // stop a move still running (observers see it before the end)
+  } catch (const std::exception&) {
+  }
+  metrics_.tree_changes = tree_->changes();
+  metrics_.actions_succeeded = runner_->succeeded;
+  metrics_.actions_failed = runner_->failed;
+  metrics_.run_length = run_.size();
+  metrics_.world_time = world_.time();
+  metrics_.motion_cost = world_.distance_travelled();
+  metrics_.wall_seconds = seconds_since(wall0_);
+  metrics_.real_time_factor = metrics_.wall_seconds > 0 ? metrics_.world_time / metrics_.wall_seconds : 0;
+  for (auto* o : observers_) o->on_end(world_.time(), metrics_, symbolic_);
+}
+
+void ReactiveLoop::wait_for_worker() {
+  if (pending_ && !pending_->result) pending_->result = pending_->future.get();
+}
+
+void ReactiveLoop::begin() {
+  begun_ = true;
+  wall0_ = Clock::now();
+  EpisodeInfo info;
+  info.scenario = scenario_.name;
+  info.task = scenario_.task;
+  info.algorithm = plan::to_string(options_.planner.algorithm);
+  info.conditions = to_string(options_.conditions);
+  info.reconfiguration = options_.reconfiguration == Reconfiguration::Online ? "online" : "offline";
+  info.world = options_.world_name;
+  info.seed = options_.seed;
+  for (auto* o : observers_) o->on_begin(info);
+
+  // The first observation: things the world has beyond the scenario join the TS.
+  world::Placement symbolic;
+  std::vector<std::string> added, removed;
+  observe_world(symbolic, added, removed);
+  if (ended()) return;
+  symbolic_ = symbolic;
+  if (!added.empty() || !removed.empty()) apply_thing_changes(added, removed);
+  else rebuild_labeler();
+  run_.push_back(symbolic_);
+  run_letters_.push_back(letter(symbolic_));
+  progress_.reset();
+  progress_.at(run_letters_.back());
+  for (auto* o : observers_) o->on_progress(world_.time(), symbolic_, progress_.states());
+  if (progress_.dead() || !progress_.can_still_accept()) {
+    finish(EndReason::Unsatisfiable, "the task cannot be satisfied from the initial state");
+    return;
+  }
+
+  // The first plan: the arm waits; its time is charged to world time.
+  prepare_planner();
+  const std::vector<std::uint32_t> states = planner_->automaton_states();
+  plan::PlanResult first;
+  if (options_.planning == PlanningMode::Worker) {
+    // On a worker thread like every replan: the C library sets up a thread's
+    // memory arena on its first allocation, and later workers reuse it, so
+    // that cost lands here and not in the first replan.
+    first = std::async(std::launch::async, [this] { return planner_->plan(); }).get();
+    world_.advance(first.stats.seconds);
+  } else {
+    first = planner_->plan();
+  }
+  metrics_.first_plan_seconds = first.stats.seconds;
+  if (!first.found) {
+    finish(EndReason::NoPlan, std::string("no plan: ") + first.message);
+    return;
+  }
+  install(first, true, states);
+}
+
+// Observes the world: the symbolic state of the run (held things at their
+// source, things briefly outside every location at their last location) and
+// the things that appeared or vanished. Feeds the tree's blackboard.
+void ReactiveLoop::observe_world(world::Placement& symbolic, std::vector<std::string>& added,
+                                 std::vector<std::string>& removed) {
+  const double now = world_.time();
+  world::Placement seen = world_.observe();
+  if (seen != seen_) {
+    for (auto* o : observers_) o->on_perceived(now, seen, seen_);
+  }
+  // A removed container's contents fall where it stood: so does the last known
+  // location of a thing held out of it.
+  for (auto& [name, loc] : last_known_) {
+    if (seen.things.count(loc) || scenario_.find_region(loc)) continue;
+    auto it = last_known_.find(loc);
+    if (it != last_known_.end() && scenario_.find_region(it->second)) loc = it->second;
+  }
+  std::string lost;
+  symbolic = seen;
+  world::Placement for_tree = seen;
+  for (auto it = symbolic.things.begin(); it != symbolic.things.end();) {
+    auto& [name, thing] = *it;
+    if (thing.location == "none") {
+      const double since = outside_since_.emplace(name, now).first->second;
+      if (now - since > options_.outside_grace) lost = name;
+    } else {
+      outside_since_.erase(name);
+    }
+    if (thing.location != kInHand && is_location(scenario_, seen, thing.location)) {
+      last_known_[name] = thing.location;
+    } else if (auto known = last_known_.find(name); known != last_known_.end()) {
+      thing.location = known->second;  // held: still at its source; outside: where it was
+      if (for_tree.things.at(name).location != kInHand) for_tree.things.at(name).location = known->second;
+    } else {  // new, and in no location yet: ignored until it is
+      for_tree.things.erase(name);
+      it = symbolic.things.erase(it);
+      continue;
+    }
+    if (!planner_->placement().things.count(name)) added.push_back(name);
+    ++it;
+  }
+  for (const auto& [name, thing] : planner_->placement().things)
+    if (!symbolic.things.count(name)) removed.push_back(name);
+  seen_ = std::move(seen);
+  tree_->placement() = std::move(for_tree);
+  if (!lost.empty())
+    finish(EndReason::Lost, "'" + lost + "' is outside every region and container (since t = " +
+                                seconds_text(outside_since_.at(lost)) + "): nothing can plan with it");
+}
+
+void ReactiveLoop::perceive() {
+  world::Placement next;
+  std::vector<std::string> added, removed;
+  observe_world(next, added, removed);
+  if (ended()) return;
+  const bool things_changed = !added.empty() || !removed.empty();
+  // A relocation the robot's own running move does not explain.
+  bool relocated = false;
+  const Move& cur = runner_->current();
+  for (const auto& [name, thing] : next.things) {
+    auto before = symbolic_.things.find(name);
+    if (before == symbolic_.things.end() || before->second.location == thing.location) continue;
+    const bool own = name == cur.thing && thing.location == cur.to;
+    const bool own_last = name == last_move_.thing && thing.location == last_move_.to;
+    if (!own && !own_last) relocated = true;
+  }
+  if (!cur.action.empty() && (relocated || things_changed)) disturbed_ = true;
+  if (things_changed || next != symbolic_) {
+    record_run_step(next, things_changed, added, removed);
+    if (ended()) return;
+  }
+  if (things_changed) {
+    request_plan("things were added or removed");
+  } else if (relocated) {
+    planner_forbidden_dirty_ = true;
+    if (const std::string by = tree_->handler(tree_->placement()); !by.empty()) {
+      for (auto* o : observers_) o->on_handled_by_tree(world_.time(), by);
+    } else {
+      request_plan("a relocation no subtree can handle");
+    }
+  }
+}
+
+bool ReactiveLoop::step() {
+  if (ended()) return false;
+  try {
+    if (!begun_) {
+      begin();
+      return !ended();
+    }
+    if (options_.interrupt && options_.interrupt->load() != 0) stop(EndReason::Interrupted);
+    if (const int s = stop_.load(); s != 0) {
+      const auto why = static_cast<EndReason>(s);
+      finish(why, why == EndReason::Interrupted ? "interrupted" : to_string(why));
+      return false;
+    }
+    if (world_.time() >= options_.max_time) {
+      std::string reason = "time limit (" + seconds_text(options_.max_time) + " of world time)";
+      if (recurring_)
+        reason += options_.cycles > 0 ? " after " + std::to_string(metrics_.cycles) + " of " +
+                                            std::to_string(options_.cycles) + " cycles"
+                                      : " while repeating the plan's cycle: a recurring task never finishes "
+                                        "(use --cycles K to stop after K cycles)";
+      finish(EndReason::TimeLimit, reason);
+      return false;
+    }
+    advance();
+    for (const WorldEvent& e : world_.take_events()) {
+      ++metrics_.interventions;
+      ++(e.applied ? metrics_.interventions_applied : metrics_.interventions_refused);
+      for (auto* o : observers_) o->on_intervention(e);
+    }
+    perceive();
+    if (ended()) return false;
+
+    // Tick the tree (it waits while the arm makes itself safe after a halt).
+    if (!world_.busy()) {
+      if (auto r = tree_->retry_pending(); r && r->applied)
+        for (auto* o : observers_) o->on_tree_change(world_.time(), *r, *tree_, true);
+    }
+    // While a replan is pending, no new step of the old plan starts: a running
+    // move is still polled, an idle tree waits.
+    tree_->hold(pending_.has_value());
+    const bool wait = world_.busy() || (pending_ && runner_->current().action.empty());
+    const bt::Status status = wait ? bt::Status::Running : tree_->tick();
+    const std::string running = tree_->running_action();
+    for (auto* o : observers_) o->on_tick(world_.time(), status, running);
+    if (!running.empty() && running != running_before_) disturbed_ = false;  // a new move began
+    running_before_ = running;
+    after_moves();
+    if (ended()) return false;
+    if (collect_plan()) return !ended();  // the status ticked above belongs to the old tree
+    if (ended()) return false;
+    if (pending_ || tree_->has_pending()) return true;
+    if (status == bt::Status::Failure) request_plan("no subtree can run in the perceived state");
+    else if (status == bt::Status::Success && runner_->current().action.empty() && !world_.busy()) on_tree_done();
+  } catch (const std::exception& e) {
+    finish(EndReason::Error, std::string("error: ") + e.what());
+  }
+  return !ended();
+}
+
+// How far time moves in one step: a tick, or up to the next event of a discrete world.
+void ReactiveLoop::advance() {
+  const double now = world_.time();
+  double dt = options_.tick_period;
+  const double next_event = world_.next_event_time();
+  if (std::isfinite(next_event)) {
+    double next = std::min(next_event, options_.max_time);
+    if (pending_) {
+      wait_for_worker();
+      next = std::min(next, pending_->requested_at + (options_.planning == PlanningMode::Worker
+                                                          ? pending_->result->stats.seconds
+                                                          : 0.0));
+    }
+    for (const auto& [name, since] : outside_since_) next = std::min(next, since + options_.outside_grace + 1e-6);
+    dt = std::max(0.0, next - now);
+    zero_steps_ = dt > 0 ? 0 : zero_steps_ + 1;
+    if (zero_steps_ > 100) dt = options_.tick_period;  // a world that keeps announcing "now"
+  } else if (pending_ && !pending_->result) {
+    // The world runs faster than real time: while the worker plans, it may not
+    // run further ahead of the request than the wall time the worker has had.
+    const double ahead = (now + dt - pending_->requested_at) - seconds_since(pending_->wall_start);
+    const auto wait = std::chrono::duration<double>(std::max(0.0, ahead));
+    if (pending_->future.wait_for(wait) == std::future_status::ready) pending_->result = pending_->future.get();
+  }
+  if (dt > 0) world_.advance(dt);
+}
+
+// Failed and finished moves: feedback to the planner, giving up.
+void ReactiveLoop::after_moves() {
+  if (runner_->failed > failures_seen_) {
+    consecutive_failures_ += runner_->failed - failures_seen_;
+    failures_seen_ = runner_->failed;
+    // A move that failed with nobody disturbing it is fed back to the planner.
+    const Move& m = runner_->last_failed;
+    if (!disturbed_ && symbolic_.things.count(m.thing) && is_location(scenario_, symbolic_, m.to)) {
+      wait_for_worker();
+      planner_->forbid_move(m.thing, m.to);
+    }
+    disturbed_ = false;
+    if (consecutive_failures_ >= options_.max_consecutive_failures) {
+      finish(EndReason::GaveUp, "gave up after " + std::to_string(consecutive_failures_) +
+                                    " failed moves in a row (last: " + runner_->last_failure + ")");
+      return;
+    }
+  }
+  if (runner_->succeeded > successes_seen_) {  // a move that works ends a run of failures
+    successes_seen_ = runner_->succeeded;
+    consecutive_failures_ = 0;
+  }
+  if (!runner_->current().action.empty()) last_move_ = runner_->current();
+}
+
+// ---- planning -----------------------------------------------------------------
+
+// The planner's start: the current state and tracked automaton states, or —
+// while a move runs undisturbed — the state after that move.
+void ReactiveLoop::prepare_planner() {
+  if (planner_forbidden_dirty_) {
+    planner_->clear_forbidden_moves();
+    planner_forbidden_dirty_ = false;
+  }
+  world::Placement p = symbolic_;
+  std::string hand = world_.hand();
+  std::vector<std::uint32_t> states = progress_.states();
+  const Move& cur = runner_->current();
+  if (!cur.action.empty() && !runner_->waiting()) {
+    const std::string* at = seen_.location_of(cur.thing);
+    const bool on_track = at && (*at == kInHand || *at == cur.from);
+    if (on_track && p.things.count(cur.thing) && is_location(scenario_, p, cur.to) && cur.to != cur.thing) {
+      p.things.at(cur.thing).location = cur.to;
+      hand = cur.to;
+      if (p != symbolic_) {
+        plan::TaskProgress ahead = progress_;
+        ahead.leave(letter(symbolic_));
+        ahead.at(letter(p));
+        states = ahead.states();
+      }
+    }
+  }
+  if (!is_location(scenario_, p, hand)) hand.clear();  // home, or a container that is gone
+  planner_->set_placement(std::move(p), hand);
+  planner_->set_automaton_states(states);
+}
+
+void ReactiveLoop::request_plan(const std::string& why) {
+  if (pending_ || ended()) return;
+  prepare_planner();
+  for (auto* o : observers_) o->on_replan_request(world_.time(), why);
+  Pending p;
+  p.requested_at = world_.time();
+  p.wall_start = Clock::now();
+  p.states = planner_->automaton_states();
+  if (options_.planning == PlanningMode::Worker) {
+    p.future = std::async(std::launch::async, [this] { return plan_with_fallback(); });
+    pending_ = std::move(p);
+  } else {
+    p.result = plan_with_fallback();
+    pending_ = std::move(p);
+    collect_plan();  // synchronous: in use at once
+  }
+}
+
+// A plan; if forbidden moves (failed earlier) leave none, the failed moves are tried again.
+plan::PlanResult ReactiveLoop::plan_with_fallback() {
+  plan::PlanResult r = planner_->plan();
+  if (!r.found && !planner_->forbidden_moves().empty()) {
+    planner_->clear_forbidden_moves();
+    plan::PlanResult again = planner_->plan();
+    again.stats.seconds += r.stats.seconds;
+    return again;
+  }
+  return r;
+}
+
+// Installs a finished replan once its planning time has passed in world time.
+bool ReactiveLoop::collect_plan() {
+  if (!pending_ || !pending_->result) return false;
+  const double charged = options_.planning == PlanningMode::Worker ? pending_->result->stats.seconds : 0.0;
+  if (world_.time() < pending_->requested_at + charged) return false;
+  plan::PlanResult r = std::move(*pending_->result);
+  const std::vector<std::uint32_t> states = std::move(pending_->states);
+  pending_.reset();
+  ++metrics_.replans;
+  metrics_.replan_seconds += r.stats.seconds;
+  if (!r.found) {
+    finish(r.reason == plan::NoPlanReason::NoAcceptingCycle ? EndReason::Unsatisfiable : EndReason::NoPlan,
+           std::string("no plan: ") + r.message);
+    return true;
+  }
+  install(r, false, states);
+  return true;
+}
+
+void ReactiveLoop::install(plan::PlanResult& r, bool first, const std::vector<std::uint32_t>& states) {
+  recurring_ = cycle_has_moves(r.plan);
+  const std::vector<plan::ActionTuple> tuples = planner_->action_tuples(r.plan);
+  const PlanEvent ev{first, r, tuples, states};
+  for (auto* o : observers_) o->on_plan(world_.time(), ev);
+  const ReconfigurationReport rep = tree_->set_plan(tuples);
+  for (auto* o : observers_) o->on_tree_change(world_.time(), rep, *tree_, false);
+}
+
+// Every step of the tree is done: finished, a cycle completed, or replan.
+void ReactiveLoop::on_tree_done() {
+  if (progress_.satisfied_by_staying(run_letters_.back())) {
+    finish(EndReason::TaskDone, "task done", true);
+    return;
+  }
+  if (recurring_) {
+    const std::size_t from = cycle_marks_.empty() ? 0 : cycle_marks_.back();
+    if (cycle_satisfies(from)) {
+      ++metrics_.cycles;
+      cycle_marks_.push_back(run_.size() - 1);
+      for (auto* o : observers_) o->on_cycle(world_.time(), metrics_.cycles);
+      if (options_.cycles > 0 && metrics_.cycles >= options_.cycles) {
+        finish(EndReason::Cycles, "completed " + std::to_string(metrics_.cycles) + " cycles", true);
+        return;
+      }
+      request_plan("cycle " + std::to_string(metrics_.cycles) + " completed: next round");
+      return;
+    }
+  }
+  request_plan("every step is done but the task is not");
+}
+
+// Some earlier visit j >= from of the current state closes a cycle
+// run[j..end) such that run[0..j) · run[j..end)^ω satisfies the task
+// (the direct LTL semantics).
+bool ReactiveLoop::cycle_satisfies(std::size_t from) const {
+  if (!planner_->formula() || run_.size() < 2) return false;
+  const std::size_t end = run_.size() - 1;
+  const auto& atoms = planner_->automaton().atoms;
+  auto word_of = [&](automata::Letter l) {
+    ltl::LassoWord::Letter w;
+    for (std::size_t i = 0; i < atoms.size(); ++i)
+      if (l >> i & 1u) w.insert(atoms[i]);
+    return w;
+  };
+  for (std::size_t j = end; j-- > from;) {
+    if (run_[j] != run_[end]) continue;
+    ltl::LassoWord w;
+    for (std::size_t i = 0; i < j; ++i) w.prefix.push_back(word_of(run_letters_[i]));
+    for (std::size_t i = j; i < end; ++i) w.cycle.push_back(word_of(run_letters_[i]));
+    if (ltl::holds(planner_->formula(), w)) return true;
+  }
+  return false;
+}
+
+}  // namespace rtamp::exec

@@ -1,0 +1,178 @@
+// The reactive loop of the paper's Algorithm 1, for any task and any world:
+// perceive → track the task's progress → decide (the tree can go on / update
+// the TS / replan) → reconfigure the tree (Algorithm 2) → tick. It talks to
+// the world only through exec::World (world.hpp) and reports everything to
+// attached EpisodeObservers; it links no simulator.
+//
+// One step() is one iteration: let time pass (a tick period, or — in a
+// discrete-event world — up to the next event), observe, decide, tick.
+//
+// The observed run. The loop keeps the run that actually happened as a
+// sequence of symbolic states (where every thing is; a held thing counts as
+// still at its source until it is put down, a thing briefly outside every
+// location keeps its last location). A new state enters the run whenever that
+// changes, by the robot or by a person; additions and removals are steps too.
+// plan::TaskProgress tracks the Büchi states consistent with the run
+// (stuttering — the robot staying in a state — is free: the run may repeat a
+// state any number of times, which is how plans with `stay` steps and `X`
+// are read at execution time; for X-free tasks this changes nothing).
+//
+// Planning. Every plan and replan starts from (the current state, the tracked
+// automaton states). While a move runs and its thing is still where the move
+// expects, the plan starts from the state after that move (the move is not
+// cut). The task is done when every step of the tree is done and staying in
+// the current state forever satisfies the task from a tracked state; a task
+// whose plans cycle through moves (patrolling) counts completed cycles — a
+// cycle counts when the tree has run the whole plan and the run since the
+// previous count, repeated forever, satisfies the task — and ends after
+// `cycles` of them (0: runs until max_time). If the observed history leaves no
+// way to satisfy the task (no tracked state can reach acceptance), the
+// episode ends with EndReason::Unsatisfiable at once.
+//
+// Failures. A failed move is fed back to the planner (Planner::forbid_move)
+// until the world changes, so the loop never replans an identical failing
+// plan; after max_consecutive_failures failed moves in a row it gives up.
+//
+// Invariants: at most one move runs; the tree is ticked only while the world
+// is not busy; observers see every intervention, plan and tree change; on
+// every way out — success, failure, stop() or an exception — on_end is called
+// exactly once with complete metrics.
+#pragma once
+
+#include <atomic>
+#include <chrono>
+#include <future>
+#include <map>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "rtamp/exec/episode_metrics.hpp"
+#include "rtamp/exec/episode_observer.hpp"
+#include "rtamp/exec/plan_tree.hpp"
+#include "rtamp/exec/world.hpp"
+#include "rtamp/exec/world_runner.hpp"
+#include "rtamp/plan/planner.hpp"
+#include "rtamp/plan/task_progress.hpp"
+#include "rtamp/task/labeling.hpp"
+#include "rtamp/world/scenario.hpp"
+
+namespace rtamp::exec {
+
+// How the planner's time is paid.
+enum class PlanningMode {
+  Worker,  // on a worker thread while the tree ticks; a plan is used once its
+           // measured wall time has passed in world time (the paper's setting)
+  Inline,  // synchronously, charged nothing: deterministic (tests, symbolic batches)
+};
+
+struct LoopOptions {
+  plan::PlannerOptions planner;                     // algorithm, cost model, limits
+  ConditionMode conditions = ConditionMode::Action;
+  Reconfiguration reconfiguration = Reconfiguration::Online;
+  PlanningMode planning = PlanningMode::Worker;
+  double max_time = 900;       // s of world time before giving up
+  double tick_period = 0.02;   // s between ticks (continuous worlds)
+  int max_consecutive_failures = 5;
+  double outside_grace = 3;    // s a thing may be outside every location
+  int cycles = 0;              // recurring tasks: succeed after this many cycles (0: never)
+  std::uint64_t seed = 0;      // reported in the metrics
+  std::string world_name;      // reported to observers ("mujoco", "symbolic", ...)
+  // Polled every step; nonzero ends the episode (EndReason::Interrupted). For
+  // signal handlers, which may only store to a lock-free atomic.
+  const std::atomic<int>* interrupt = nullptr;
+};
+
+class ReactiveLoop {
+ public:
+  // Translates the task (rtamp::Error on a bad task). `world` must outlive the loop.
+  ReactiveLoop(World& world, const world::Scenario& scenario, LoopOptions options);
+  ~ReactiveLoop();
+  ReactiveLoop(const ReactiveLoop&) = delete;
+  ReactiveLoop& operator=(const ReactiveLoop&) = delete;
+
+  // Observers must outlive the loop (or the episode).
+  void add_observer(EpisodeObserver& o) { observers_.push_back(&o); }
+
+  // One iteration; false once the episode has ended (the first call plans).
+  bool step();
+  // Steps until the episode ends; returns its metrics.
+  const EpisodeMetrics& run();
+  // Ends the episode at the next step (thread- and signal-safe).
+  void stop(EndReason why = EndReason::Interrupted) { stop_.store(static_cast<int>(why)); }
+
+  bool ended() const { return metrics_.end != EndReason::None; }
+  const EpisodeMetrics& metrics() const { return metrics_; }
+  // The observed run (symbolic states, in order) and, for recurring tasks, the
+  // run index at which each counted cycle ended (cycle k is run[marks[k-1]..marks[k])).
+  const std::vector<world::Placement>& observed_run() const { return run_; }
+  const std::vector<std::size_t>& cycle_marks() const { return cycle_marks_; }
+  const plan::TaskProgress& progress() const { return progress_; }
+  const PlanTree& tree() const { return *tree_; }
+  const plan::Planner& planner() const { return *planner_; }
+  const LoopOptions& options() const { return options_; }
+
+ private:
+  struct Pending {
+    std::future<plan::PlanResult> future;
+    std::optional<plan::PlanResult> result;
+    double requested_at = 0;
+    std::chrono::steady_clock::time_point wall_start;
+    std::vector<std::uint32_t> states;
+  };
+
+  void begin();
+  void finish(EndReason why, std::string reason, bool success = false);
+  void advance();
+  void observe_world(world::Placement& symbolic, std::vector<std::string>& added, std::vector<std::string>& removed);
+  void perceive();
+  void rebuild_labeler();
+  automata::Letter letter(const world::Placement& symbolic) const;
+  void record_run_step(const world::Placement& next, bool things_changed, const std::vector<std::string>& added,
+                       const std::vector<std::string>& removed);
+  void apply_thing_changes(const std::vector<std::string>& added, const std::vector<std::string>& removed);
+  void after_moves();
+  void prepare_planner();  // planner state and automaton states for the next plan
+  void request_plan(const std::string& why);
+  plan::PlanResult plan_with_fallback();
+  bool collect_plan();
+  void install(plan::PlanResult& r, bool first, const std::vector<std::uint32_t>& states);
+  void on_tree_done();
+  bool cycle_satisfies(std::size_t from) const;
+  void wait_for_worker();
+
+  World& world_;
+  world::Scenario scenario_;  // with the things currently present
+  LoopOptions options_;
+  std::vector<EpisodeObserver*> observers_;
+  std::unique_ptr<plan::Planner> planner_;
+  std::unique_ptr<WorldRunner> runner_;
+  std::unique_ptr<PlanTree> tree_;
+  plan::TaskProgress progress_;
+  // Labels of observed states, over the automaton's atoms (independent of the
+  // planner, which a worker thread may be using).
+  std::unique_ptr<task::System> label_ts_;
+  std::unique_ptr<task::Labeling> labeling_;
+
+  world::Placement seen_;      // last observation (held things in the hand), fed to the tree
+  world::Placement symbolic_;  // current state of the run
+  std::vector<world::Placement> run_;
+  std::vector<automata::Letter> run_letters_;  // label of each state of the run, as it was entered
+  std::vector<std::size_t> cycle_marks_;
+  std::map<std::string, std::string> last_known_;  // each thing's last location (region or container)
+  std::map<std::string, double> outside_since_;
+  std::optional<Pending> pending_;
+  Move last_move_;              // the last move that ran (its own effect is not a relocation)
+  std::string running_before_;  // the tree's running action at the previous tick
+  bool begun_ = false, recurring_ = false;
+  bool disturbed_ = false;               // the world changed while the current move ran
+  bool planner_forbidden_dirty_ = false;  // the world changed: forget moves that failed before
+  int zero_steps_ = 0;
+  int failures_seen_ = 0, successes_seen_ = 0, consecutive_failures_ = 0;
+  std::atomic<int> stop_{0};
+  EpisodeMetrics metrics_;
+  std::chrono::steady_clock::time_point wall0_;
+};
+
+}  // namespace rtamp::exec
