@@ -354,10 +354,12 @@ bool ReactiveLoop::step() {
         for (auto* o : observers_) o->on_tree_change(world_.time(), *r, *tree_, true);
     }
     // While a replan is pending, no new step of the old plan starts: a running
-    // move is still polled, an idle tree waits.
+    // move is still polled, an idle tree waits. A tree that has succeeded waits
+    // for the completion check (once the arm is free), not for another pass.
     tree_->hold(pending_.has_value());
-    const bool wait = world_.busy() || (pending_ && runner_->current().action.empty());
+    const bool wait = world_.busy() || (pending_ && runner_->current().action.empty()) || tree_done_;
     const bt::Status status = wait ? bt::Status::Running : tree_->tick();
+    if (!wait && status == bt::Status::Success) tree_done_ = true;
     const std::string running = tree_->running_action();
     for (auto* o : observers_) o->on_tick(world_.time(), status, running);
     if (!running.empty() && running != running_before_) disturbed_ = false;  // a new move began
@@ -367,8 +369,12 @@ bool ReactiveLoop::step() {
     if (collect_plan()) return !ended();  // the status ticked above belongs to the old tree
     if (ended()) return false;
     if (pending_ || tree_->has_pending()) return true;
-    if (status == bt::Status::Failure) request_plan("no subtree can run in the perceived state");
-    else if (status == bt::Status::Success && runner_->current().action.empty() && !world_.busy()) on_tree_done();
+    if (status == bt::Status::Failure) {
+      request_plan("no subtree can run in the perceived state");
+    } else if (tree_done_ && runner_->current().action.empty() && !world_.busy()) {
+      tree_done_ = false;
+      on_tree_done();
+    }
   } catch (const std::exception& e) {
     finish(EndReason::Error, std::string("error: ") + e.what());
   }
@@ -510,6 +516,7 @@ bool ReactiveLoop::collect_plan() {
 
 void ReactiveLoop::install(plan::PlanResult& r, bool first, const std::vector<std::uint32_t>& states) {
   recurring_ = cycle_has_moves(r.plan);
+  tree_done_ = false;
   const std::vector<plan::ActionTuple> tuples = planner_->action_tuples(r.plan);
   const PlanEvent ev{first, r, tuples, states};
   for (auto* o : observers_) o->on_plan(world_.time(), ev);

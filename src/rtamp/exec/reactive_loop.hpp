@@ -167,6 +167,7 @@ class ReactiveLoop {
   std::string running_before_;  // the tree's running action at the previous tick
   bool begun_ = false, recurring_ = false;
   bool disturbed_ = false;               // the world changed while the current move ran
+  bool tree_done_ = false;               // the tree succeeded: the completion check is due
   bool planner_forbidden_dirty_ = false;  // the world changed: forget moves that failed before
   int zero_steps_ = 0;
   int failures_seen_ = 0, successes_seen_ = 0, consecutive_failures_ = 0;
