@@ -1,6 +1,7 @@
 // SymbolicWorld (exec/symbolic_world.hpp): the timing model, observed
 // locations along a move, every intervention in every phase, failures, halts,
-// scripted and random interventions, invariants and determinism.
+// scripted and random interventions, the footprint rules (what fits where, and
+// agreement with task::System on them), invariants and determinism.
 #include "rtamp/exec/symbolic_world.hpp"
 
 #include <gtest/gtest.h>
@@ -13,6 +14,7 @@
 #include <vector>
 
 #include "rtamp/exec/subtree_builder.hpp"
+#include "rtamp/task/transition_system.hpp"
 #include "rtamp/util/error.hpp"
 #include "rtamp/world/scenario_io.hpp"
 
@@ -22,6 +24,7 @@ namespace {
 using Kind = world::Intervention::Kind;
 
 // r1 (cap 3): o1 and tray t1 (cap 2) holding o2; r2 (cap 3): o3; r3 (cap 1): o4 (full); r4 (cap 2): empty.
+// The tray (24 x 16 cm) fits r1, r2 and r4 (r4: room for two such trays), not r3 (20 x 20 cm).
 constexpr const char* kTiny = R"(
 name: tiny
 robot: {model: ur5, base: [0, 0, 0], yaw: 0}
@@ -29,7 +32,7 @@ regions:
   - {name: r1, center: [0.40, 0.30, 0], size: [0.36, 0.36], capacity: 3}
   - {name: r2, center: [0.40, -0.30, 0], size: [0.36, 0.36], capacity: 3}
   - {name: r3, center: [0.70, 0.00, 0], size: [0.20, 0.20], capacity: 1}
-  - {name: r4, center: [0.70, 0.40, 0], size: [0.20, 0.20], capacity: 2}
+  - {name: r4, center: [0.72, 0.40, 0], size: [0.24, 0.24], capacity: 2}
 containers:
   - {name: t1, class: tray, position: [0.40, 0.25, 0], size: [0.24, 0.16, 0.03], capacity: 2}
 objects:
@@ -242,7 +245,7 @@ std::vector<InterventionCase> intervention_cases() {
   const Outcome ok{true, S::Succeeded, "", "r2"};
   const Outcome refused_ok{false, S::Succeeded, "", "r2"};
   world::Intervention by_position = iv(Kind::Relocate, "o1");
-  by_position.position = world::Vec3{0.70, 0.40, 0};
+  by_position.position = world::Vec3{0.72, 0.40, 0};
   return {
       {"relocate o1 to r4",
        {iv(Kind::Relocate, "o1", "r4")},
@@ -407,7 +410,7 @@ TEST(SymbolicWorld, RemovedContainerSpillsIntoTheClosestRegionWithRoom) {
   const WorldEvent e = w.apply(iv(Kind::RemoveContainer, "t1"));
   ASSERT_TRUE(e.applied);
   EXPECT_EQ(loc(w, "o2"), "r1");  // the freed place
-  EXPECT_EQ(loc(w, "o5"), "r4");  // r4 is 0.32 m from r1, r3 is full, r2 is 0.6 m
+  EXPECT_EQ(loc(w, "o5"), "r4");  // r4 is 0.34 m from r1, r3 is full, r2 is 0.6 m
   EXPECT_NE(e.detail.find("r1 has no room"), std::string::npos) << e.detail;
   EXPECT_EQ(w.check_invariants(), "");
 }
@@ -542,7 +545,7 @@ TEST(SymbolicWorld, PositionsOfContainersFallInRegions) {
   // A tray moved by the person is found where it went.
   ASSERT_TRUE(w.apply(iv(Kind::Relocate, "t2", "r4")).applied);
   world::Intervention onto = iv(Kind::Relocate, "o3");
-  onto.position = world::Vec3{0.70, 0.40, 0.01};
+  onto.position = world::Vec3{0.72, 0.40, 0.01};
   EXPECT_TRUE(w.apply(onto).applied);
   EXPECT_EQ(loc(w, "o3"), "t2");
   EXPECT_EQ(w.check_invariants(), "");
@@ -819,6 +822,384 @@ TEST(SymbolicWorld, RandomInterventionsHappenWhenAnnounced) {
   EXPECT_GT(mid_phase, 10);
 }
 
+// ---------------------------------------------------------------- footprint rules (world/fit.hpp)
+
+// Trays of 30 x 16 cm (cell 0.0457 m²). a (cap 6, room 0.156 m²): tray t3
+// holding o2, and o1; small (20 x 20 cm): no tray fits; pair (32 x 34 cm, room
+// 0.133 m²): t1 and t2, no room for a third tray (room for blocks or a 24 x 16
+// cm box); far (40 x 40 cm): brick b1 (20 x 20 cm: fits no tray). Distances from a: small 0.35 m, far
+// 0.50 m, pair 0.60 m.
+constexpr const char* kFitting = R"(
+name: fitting
+robot: {model: ur5, base: [0, 0, 0], yaw: 0}
+regions:
+  - {name: a, center: [0.40, 0.30, 0], size: [0.36, 0.36], capacity: 6}
+  - {name: small, center: [0.75, 0.30, 0], size: [0.20, 0.20], capacity: 4}
+  - {name: pair, center: [0.40, -0.30, 0], size: [0.32, 0.34], capacity: 4}
+  - {name: far, center: [0.40, 0.80, 0], size: [0.40, 0.40], capacity: 8}
+containers:
+  - {name: t1, class: tray, position: [0.40, -0.215, 0], size: [0.30, 0.16, 0.03], capacity: 3}
+  - {name: t2, class: tray, position: [0.40, -0.385, 0], size: [0.30, 0.16, 0.03], capacity: 3}
+  - {name: t3, class: tray, position: [0.40, 0.30, 0], size: [0.30, 0.16, 0.03], capacity: 3}
+objects:
+  - {name: o1, class: block, position: [0.30, 0.44, 0], size: [0.04, 0.04, 0.04]}
+  - {name: o2, class: block, position: [0.40, 0.30, 0.03], size: [0.04, 0.04, 0.04]}
+  - {name: b1, class: brick, position: [0.40, 0.80, 0], size: [0.20, 0.20, 0.05]}
+propositions: {done: "o1 in far"}
+task: "F done"
+)";
+
+world::Scenario fitting() { return world::parse_scenario(kFitting, "fitting.yaml"); }
+
+TEST(SymbolicWorld, TheFittingScenarioIsAsDescribed) {
+  const SymbolicWorld w(fitting());
+  ASSERT_EQ(w.check_invariants(), "");
+  EXPECT_EQ(loc(w, "t1"), "pair");
+  EXPECT_EQ(loc(w, "t2"), "pair");
+  EXPECT_EQ(loc(w, "t3"), "a");
+  EXPECT_EQ(loc(w, "o2"), "t3");
+  EXPECT_EQ(loc(w, "b1"), "far");
+  EXPECT_FALSE(w.fits("t3", "small"));
+  EXPECT_TRUE(w.fits("t3", "pair"));
+  EXPECT_FALSE(w.fits("b1", "t3"));
+  EXPECT_LE(w.used("pair") + w.cell("o1"), w.room("pair"));
+  EXPECT_GT(w.used("pair") + w.cell("t3"), w.room("pair"));
+  EXPECT_EQ(w.fits("nothing", "a"), false);
+  EXPECT_EQ(w.cell("nothing"), -1);
+  EXPECT_EQ(w.room("nowhere"), -1);
+  EXPECT_EQ(w.used("nowhere"), -1);
+}
+
+TEST(SymbolicWorld, InterventionsFollowTheFootprintRules) {
+  struct Case {
+    const char* name;
+    world::Intervention what;
+    const char* why;    // "" = applied, else a substring of the refusal
+    const char* where;  // where the subject is afterwards ("" = not in the world)
+  };
+  const std::vector<Case> cases{
+      {"an added tray does not fit small", iv(Kind::AddContainer, "x", "small"), "x does not fit in small",
+       ""},
+      {"a tray relocated into small", iv(Kind::Relocate, "t3", "small"), "t3 does not fit in small", "a"},
+      {"a third tray added to pair", iv(Kind::AddContainer, "x", "pair"), "pair has no room for x", ""},
+      {"a third tray relocated to pair", iv(Kind::Relocate, "t3", "pair"), "pair has no room for t3", "a"},
+      {"a block relocated to pair (room left)", iv(Kind::Relocate, "o1", "pair"), "", "pair"},
+      {"a tray relocated to far", iv(Kind::Relocate, "t3", "far"), "", "far"},
+      {"a tray added to far", iv(Kind::AddContainer, "x", "far"), "", "far"},
+      {"an added container of a new class (24 x 16 cm) does not fit small",
+       iv(Kind::AddContainer, "x", "small", "box"), "x does not fit in small", ""},
+      {"an added container of a new class (smaller) has room in pair",
+       iv(Kind::AddContainer, "x", "pair", "box"), "", "pair"},
+      {"an added brick (b1's size) does not fit a tray", iv(Kind::Add, "x", "t3", "brick"),
+       "x does not fit in t3", ""},
+      {"an added brick fits a region", iv(Kind::Add, "x", "a", "brick"), "", "a"},
+      {"an added object of a new class (4 cm) fits a tray", iv(Kind::Add, "x", "t3", "pebble"), "", "t3"},
+      {"the brick relocated onto a tray", iv(Kind::Relocate, "b1", "t3"), "b1 does not fit in t3", "far"},
+      {"the brick relocated into small", iv(Kind::Relocate, "b1", "small"), "", "small"},
+  };
+  for (const auto& c : cases) {
+    SCOPED_TRACE(c.name);
+    SymbolicWorld w(fitting());
+    const world::Placement before = w.truth();
+    const WorldEvent e = w.apply(c.what);
+    EXPECT_EQ(e.applied, std::string(c.why).empty()) << e.detail;
+    EXPECT_NE(e.detail.find(c.why), std::string::npos) << e.detail;
+    EXPECT_EQ(loc(w, c.what.subject), c.where);
+    if (!e.applied) {
+      EXPECT_EQ(w.truth(), before);
+    }
+    EXPECT_EQ(w.check_invariants(), "");
+  }
+}
+
+TEST(SymbolicWorld, MovesFollowTheFootprintRules) {
+  struct Case {
+    const char* name;
+    Move m;
+    const char* why;    // "" = Succeeded, else a substring of the failure
+    const char* where;  // where the thing ends
+  };
+  const std::vector<Case> cases{
+      {"a tray into small", move("t3", "a", "small"), "t3 does not fit in small", "a"},
+      {"a third tray into pair", move("t3", "a", "pair"), "pair has no room for t3", "a"},
+      {"the brick onto a tray", move("b1", "far", "t3"), "b1 does not fit in t3", "far"},
+      {"a tray into far", move("t3", "a", "far"), "", "far"},
+      {"a tray from pair into a", move("t1", "pair", "a"), "", "a"},
+      {"a block into pair", move("o1", "a", "pair"), "", "pair"},
+  };
+  for (const auto& c : cases) {
+    SCOPED_TRACE(c.name);
+    SymbolicWorld w(fitting());
+    w.start(c.m);
+    run_until_idle(w);
+    std::string why;
+    EXPECT_EQ(w.poll(&why), std::string(c.why).empty() ? MoveStatus::Succeeded : MoveStatus::Failed) << why;
+    EXPECT_NE(why.find(c.why), std::string::npos) << why;
+    EXPECT_EQ(loc(w, c.m.thing), c.where);
+    EXPECT_EQ(loc(w, "o2"), "t3");  // the tray's contents travel with it
+    EXPECT_EQ(w.hand(), c.where);
+    EXPECT_EQ(w.check_invariants(), "");
+  }
+}
+
+TEST(SymbolicWorld, PutBacksGoToTheClosestLocationWhereTheThingFitsAndHasRoom) {
+  SymbolicWorld w(fitting());
+  w.start(move("t3", "a", "pair"));  // no room in pair: the place fails
+  to_middle_of(w, Phase::Carry);
+  // While t3 is carried, a fills up: o1 and three trays leave no room for t3 (capacity 6 would allow it).
+  for (const char* x : {"x1", "x2", "x3"}) ASSERT_TRUE(w.apply(iv(Kind::AddContainer, x, "a")).applied);
+  EXPECT_NE(w.refusal("t3", "a").find("a has no room for t3"), std::string::npos) << w.refusal("t3", "a");
+  EXPECT_NE(w.refusal("t3", "small").find("does not fit"), std::string::npos);
+  // The gripper cannot hand it over into small either: the move goes on.
+  const WorldEvent take = w.apply(iv(Kind::TakeFromGripper, "", "small"));
+  EXPECT_FALSE(take.applied);
+  EXPECT_NE(take.detail.find("t3 does not fit in small"), std::string::npos) << take.detail;
+  EXPECT_NE(take.detail.find("t3 stays in the gripper"), std::string::npos) << take.detail;
+  EXPECT_EQ(loc(w, "t3"), kInHand);
+  run_until_idle(w);
+  std::string why;
+  EXPECT_EQ(w.poll(&why), MoveStatus::Failed);
+  EXPECT_NE(why.find("pair has no room for t3"), std::string::npos) << why;
+  // small (0.35 m) is closer than far (0.50 m), but t3 does not fit there.
+  EXPECT_NE(why.find("put back in far"), std::string::npos) << why;
+  EXPECT_EQ(loc(w, "t3"), "far");
+  EXPECT_EQ(loc(w, "o2"), "t3");
+  EXPECT_EQ(w.check_invariants(), "");
+}
+
+TEST(SymbolicWorld, SpilledContentsGoWhereTheyHaveRoom) {
+  // snug (32 x 18 cm, room 0.0763 m²) holds the tray (cell 0.0457 m²) and 5
+  // blocks (0.0056 m² each); the tray holds 10. Without the tray snug has
+  // room for 13 blocks: 8 of the 10 spill into snug, 2 into side.
+  world::Scenario s = world::parse_scenario(R"(
+name: snug
+robot: {model: ur5, base: [0, 0, 0], yaw: 0}
+regions:
+  - {name: snug, center: [0.40, 0.30, 0], size: [0.32, 0.18], capacity: 20}
+  - {name: side, center: [0.40, -0.30, 0], size: [0.40, 0.40], capacity: 20}
+containers:
+  - {name: t, class: tray, position: [0.40, 0.30, 0], size: [0.30, 0.16, 0.03], capacity: 12}
+objects:
+  - {name: o1, class: block, position: [0.40, -0.30, 0], size: [0.04, 0.04, 0.04]}
+propositions: {done: "o1 in snug"}
+task: "F done"
+)",
+                                            "snug.yaml");
+  SymbolicWorld w(s);
+  for (int i = 0; i < 10; ++i) ASSERT_TRUE(w.apply(iv(Kind::Add, "in" + std::to_string(i), "t")).applied);
+  EXPECT_FALSE(w.apply(iv(Kind::Add, "in10", "t")).applied);  // room, not capacity (12)
+  for (int i = 0; i < 5; ++i) ASSERT_TRUE(w.apply(iv(Kind::Add, "by" + std::to_string(i), "snug")).applied);
+  EXPECT_FALSE(w.apply(iv(Kind::Add, "by5", "snug")).applied);  // room, not capacity (20)
+  const WorldEvent e = w.apply(iv(Kind::RemoveContainer, "t"));
+  ASSERT_TRUE(e.applied);
+  std::map<std::string, int> spilled;
+  for (int i = 0; i < 10; ++i) ++spilled[loc(w, "in" + std::to_string(i))];
+  EXPECT_EQ(spilled, (std::map<std::string, int>{{"side", 2}, {"snug", 8}})) << e.detail;
+  EXPECT_NE(e.detail.find("(snug has no room)"), std::string::npos) << e.detail;
+  EXPECT_EQ(w.check_invariants(), "");
+}
+
+TEST(SymbolicWorld, AnInitialPlacementThatBreaksTheFootprintRulesIsAccepted) {
+  world::Scenario s = fitting();
+  s.containers[2].position = {0.75, 0.30, 0};  // t3 in small, where it does not fit
+  world::Container t4 = s.containers[0];       // a third tray in pair, which has room for two
+  t4.name = "t4";
+  s.containers.push_back(t4);
+  SymbolicWorld w(s);
+  ASSERT_EQ(loc(w, "t3"), "small");
+  ASSERT_EQ(loc(w, "t4"), "pair");
+  EXPECT_EQ(w.check_invariants(), "");
+  EXPECT_NO_THROW(task::System{s});  // the planner accepts it too
+  // Nothing more goes into pair while it is over its room; small still takes a block.
+  EXPECT_NE(w.apply(iv(Kind::Relocate, "o1", "pair")).detail.find("pair has no room for o1"),
+            std::string::npos);
+  EXPECT_TRUE(w.apply(iv(Kind::Relocate, "o1", "small")).applied);
+  // Once moved away, the things do not go back.
+  ASSERT_TRUE(w.apply(iv(Kind::Relocate, "t3", "far")).applied);
+  EXPECT_NE(w.apply(iv(Kind::Relocate, "t3", "small")).detail.find("t3 does not fit in small"),
+            std::string::npos);
+  ASSERT_TRUE(w.apply(iv(Kind::Relocate, "t4", "a")).applied);
+  EXPECT_NE(w.apply(iv(Kind::Relocate, "t4", "pair")).detail.find("pair has no room for t4"),
+            std::string::npos);
+  EXPECT_TRUE(w.apply(iv(Kind::Relocate, "o1", "pair")).applied);  // room for a block beside two trays
+  EXPECT_EQ(w.check_invariants(), "");
+}
+
+// The scenario of the world as it is now, built by this test's own reading of
+// the size rule (a scenario thing keeps its size; an added one takes the size
+// of the first scenario thing of its class, else the default), and the
+// placement without the things at "none".
+std::pair<world::Scenario, world::Placement> planner_view(const world::Scenario& base,
+                                                          const SymbolicWorld& w) {
+  world::Scenario s = base;
+  s.objects.clear();
+  s.containers.clear();
+  world::Placement p;
+  for (const auto& [name, thing] : w.truth().things) {
+    if (thing.location == world::kNoLocation) continue;
+    p.things[name] = thing;
+    if (thing.container) {
+      world::Container c;
+      c.name = name;
+      c.cls = thing.cls;
+      c.capacity = w.capacity(name);
+      const world::Container* same = base.find_container(name);
+      for (const auto& k : base.containers)
+        if (!same && k.cls == thing.cls) same = &k;
+      if (same) c.size = same->size;
+      s.containers.push_back(c);
+    } else {
+      world::Object o;
+      o.name = name;
+      o.cls = thing.cls;
+      const world::Object* same = base.find_object(name);
+      for (const auto& k : base.objects)
+        if (!same && k.cls == thing.cls) same = &k;
+      if (same) o.size = same->size;
+      s.objects.push_back(o);
+    }
+  }
+  return {s, p};
+}
+
+// Random scenes: regions of several sizes in a line, trays and objects of
+// several classes and sizes at random places (on trays too); capacities large,
+// so that the footprint rules bind.
+world::Scenario random_fit_scene(std::uint64_t seed) {
+  std::uint64_t r = seed * 0x9E3779B97F4A7C15ull + 5;
+  auto next = [&r](std::uint64_t n) {
+    r = r * 6364136223846793005ull + 1442695040888963407ull;
+    return (r >> 33) % n;
+  };
+  const std::vector<double> sides{0.16, 0.20, 0.24, 0.28, 0.32, 0.40};
+  const std::vector<world::Vec3> tray_sizes{{0.30, 0.16, 0.03}, {0.24, 0.16, 0.03}, {0.18, 0.18, 0.03}};
+  const std::vector<std::pair<const char*, world::Vec3>> object_kinds{
+      {"block", {0.04, 0.04, 0.04}}, {"brick", {0.12, 0.06, 0.05}}, {"slab", {0.20, 0.14, 0.02}}};
+  world::Scenario s;
+  s.name = "random-fit-" + std::to_string(seed);
+  const int M = 2 + static_cast<int>(next(3));
+  for (int i = 0; i < M; ++i) {
+    world::Region g;
+    g.name = "r" + std::to_string(i + 1);
+    g.center = {0.5, -0.5 * (M - 1) / 2.0 + 0.5 * i, 0};
+    g.size = {sides[next(sides.size())], sides[next(sides.size())]};
+    g.capacity = 12;
+    s.regions.push_back(g);
+  }
+  const int C = static_cast<int>(next(4));
+  for (int i = 0; i < C; ++i) {
+    world::Container c;
+    c.name = "t" + std::to_string(i + 1);
+    c.cls = i % 2 ? "crate" : "tray";
+    c.size = tray_sizes[next(tray_sizes.size())];
+    c.position = s.regions[next(s.regions.size())].center;
+    c.capacity = 6;
+    s.containers.push_back(c);
+  }
+  const int N = 1 + static_cast<int>(next(6));
+  for (int i = 0; i < N; ++i) {
+    world::Object o;
+    o.name = "o" + std::to_string(i + 1);
+    const auto& kind = object_kinds[next(object_kinds.size())];
+    o.cls = kind.first;
+    o.size = kind.second;
+    o.position = s.regions[next(s.regions.size())].center;
+    if (!s.containers.empty() && next(3) == 0)
+      o.position[0] += 0.3;  // beside the trays (in the region or nowhere)
+    s.objects.push_back(o);
+  }
+  return s;
+}
+
+TEST(SymbolicWorld, AgreesWithTheTransitionSystemOnFitAndRoom) {
+  int fit_refusals = 0, room_refusals = 0, accepted = 0, compared = 0;
+  std::vector<std::pair<std::string, world::Scenario>> scenes{
+      {"fitting", fitting()}, {"tiny", tiny()}, {"3-block-tray", world::load_scenario("3-block-tray")}};
+  for (std::uint64_t seed = 1; seed <= 40; ++seed)
+    scenes.emplace_back("random " + std::to_string(seed), random_fit_scene(seed));
+  for (const auto& [label, scene] : scenes) {
+    SCOPED_TRACE(label);
+    SymbolicWorld w(scene);
+    std::uint64_t r = 1469598103934665603ull;  // FNV-1a of the label: the same walk on every platform
+    for (unsigned char ch : label) r = (r ^ ch) * 1099511628211ull;
+    auto next = [&r](std::uint64_t n) {
+      r = r * 6364136223846793005ull + 1442695040888963407ull;
+      return (r >> 33) % n;
+    };
+    const std::vector<const char*> classes{"block", "brick", "slab", "pebble"},
+        container_classes{"tray", "crate", "box"};
+    for (int step = 0; step < 40; ++step) {
+      ASSERT_EQ(w.check_invariants(), "");
+      // Compare every (thing, location) with a transition system built from the same world.
+      const auto [s, p] = planner_view(scene, w);
+      const task::System ts(s, p, w.hand());
+      const task::State st = ts.initial();
+      int counts[task::kMaxLocations + 1];
+      std::int64_t used[task::kMaxLocations + 1];
+      ts.occupancy(st, counts, used);
+      for (unsigned l = 0; l < ts.num_locations(); ++l) {
+        const std::string& ln = ts.location_name(l);
+        ASSERT_EQ(w.room(ln), ts.room(l)) << ln;
+        ASSERT_EQ(w.used(ln), used[l]) << ln;
+      }
+      for (unsigned t = 0; t < ts.num_things(); ++t) {
+        const std::string& tn = ts.thing_name(t);
+        ASSERT_EQ(w.cell(tn), ts.cell(t)) << tn;
+        for (unsigned l = 0; l < ts.num_locations(); ++l) {
+          const std::string& ln = ts.location_name(l);
+          ASSERT_EQ(w.fits(tn, ln), ts.fits(t, l)) << tn << " in " << ln;
+          if (ts.location(st, t) == l) continue;
+          const std::string why = w.refusal(tn, ln);
+          ASSERT_EQ(why.empty(), ts.enabled(st, task::Action::move(static_cast<std::uint16_t>(t),
+                                                                   static_cast<std::uint16_t>(l))))
+              << "move(" << tn << ", " << ln << "): " << why << " in " << ts.to_string(st);
+          ++compared;
+          fit_refusals += why.find("does not fit") != std::string::npos;
+          room_refusals += why.find("has no room for") != std::string::npos;
+        }
+      }
+      // A random intervention (targets not filtered: many are refused).
+      std::vector<std::string> things, locations;
+      for (const auto& [n, t] : w.truth().things) things.push_back(n);
+      for (const auto& g : scene.regions) locations.push_back(g.name);
+      for (const auto& [n, t] : w.truth().things)
+        if (t.container) locations.push_back(n);
+      const std::string fresh = "n" + std::to_string(step);
+      const std::string to = locations[next(locations.size())];
+      WorldEvent e;
+      switch (next(6)) {
+        case 0:
+        case 1:
+        case 2:
+          if (things.empty()) continue;
+          e = w.apply(iv(Kind::Relocate, things[next(things.size())], to));
+          break;
+        case 3:
+          e = w.apply(iv(Kind::Add, fresh, to, classes[next(classes.size())]));
+          break;
+        case 4:
+          e = w.apply(iv(Kind::AddContainer, fresh, to, container_classes[next(container_classes.size())]));
+          break;
+        default:
+          if (things.empty()) continue;
+          const std::string victim = things[next(things.size())];
+          e = w.apply(
+              iv(w.truth().things.at(victim).container ? Kind::RemoveContainer : Kind::Remove, victim));
+          break;
+      }
+      accepted += e.applied;
+    }
+  }
+  RecordProperty("compared", compared);
+  RecordProperty("fit_refusals", fit_refusals);
+  RecordProperty("room_refusals", room_refusals);
+  RecordProperty("accepted", accepted);
+  EXPECT_GT(compared, 10000);
+  EXPECT_GT(fit_refusals, 100);
+  EXPECT_GT(room_refusals, 100);
+  EXPECT_GT(accepted, 300);
+}
+
 // ---------------------------------------------------------------- random interventions
 
 // A crude loop: start random moves, sometimes halt, jump to the next event.
@@ -875,8 +1256,9 @@ RandomRun random_run(const world::Scenario& s, std::uint64_t seed, int steps, st
 TEST(SymbolicWorld, RandomInterventionsKeepTheInvariants) {
   std::map<Kind, int> applied;
   int refused = 0, steps = 0;
-  for (const char* name : {"tiny", "3-block-tray", "3-block"}) {
-    const auto s = std::string(name) == "tiny" ? tiny() : world::load_scenario(name);
+  for (const char* name : {"tiny", "fitting", "3-block-tray", "3-block"}) {
+    const std::string n = name;
+    const auto s = n == "tiny" ? tiny() : n == "fitting" ? fitting() : world::load_scenario(name);
     for (std::uint64_t seed = 1; seed <= 60; ++seed) {
       std::string broken;
       const RandomRun run = random_run(s, seed, 100, &broken, &applied);

@@ -2,9 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <stdexcept>
 
 #include "rtamp/exec/subtree_builder.hpp"
+#include "rtamp/task/transition_system.hpp"
 #include "rtamp/util/error.hpp"
 
 namespace rtamp::exec {
@@ -30,6 +32,19 @@ bool loose_ok(const world::Intervention& iv, const std::string& to) {
 }
 
 bool holding_phase(Phase p) { return p == Phase::Carry || p == Phase::Place || p == Phase::Return; }
+
+std::string format_m(double v) {
+  char b[32];
+  std::snprintf(b, sizeof b, "%.3f", v);
+  return b;
+}
+
+// Area units (task::System::kAreaUnit) in m².
+std::string format_area(std::int64_t units) {
+  char b[32];
+  std::snprintf(b, sizeof b, "%.4f", static_cast<double>(units) * task::System::kAreaUnit);
+  return b;
+}
 
 void check(const SymbolicWorldOptions& o) {
   for (double d : {o.approach_base, o.grasp, o.carry_base, o.place, o.retreat, o.return_base})
@@ -83,6 +98,8 @@ SymbolicWorld::SymbolicWorld(const world::Scenario& scenario, SymbolicWorldOptio
       class_is_container_[o.cls] = false;
       object_classes_.push_back(o.cls);
     }
+    class_object_size_.emplace(o.cls, o.size);
+    object_size_[o.name] = o.size;
     names_ever_.insert(o.name);
   }
   for (const auto& r : regions_) names_ever_.insert(r.name);
@@ -95,6 +112,9 @@ SymbolicWorld::SymbolicWorld(const world::Scenario& scenario, SymbolicWorldOptio
     if (count_at(loc, "") > capacity(loc))
       throw Error("scenario " + scenario.name + ": " + loc + " starts with more things than its capacity " +
                   std::to_string(capacity(loc)));
+  // Footprint rules broken here are accepted (as task::System accepts them) until the thing moves.
+  for (const auto& [name, t] : placement_.things)
+    if (t.location != world::kNoLocation) unmoved_.insert(name);
 
   const auto& base = scenario.robot.base;
   home_ = {base[0], base[1], base[2] + options_.home_height};
@@ -158,7 +178,75 @@ int SymbolicWorld::count_at(const std::string& loc, const std::string& except) c
   return n;
 }
 
-bool SymbolicWorld::can_hold(const std::string& loc, const std::string& thing, std::string* why) const {
+std::int64_t SymbolicWorld::used_at(const std::string& loc, const std::string& except) const {
+  std::int64_t n = 0;
+  for (const auto& [name, t] : placement_.things)
+    if (t.location == loc && name != except) n += cell_of(body_of(name));
+  return n;
+}
+
+// ---------------------------------------------------------------- footprint rules
+// world/fit.hpp's functions, called and rounded exactly as task::System's
+// fit tables are built (transition_system.cpp, build_fit_tables): the tests
+// check that both agree on every thing and location.
+
+SymbolicWorld::Body SymbolicWorld::body_of(const std::string& thing) const {
+  if (auto c = containers_.find(thing); c != containers_.end()) return {c->second.size, true};
+  if (auto o = object_size_.find(thing); o != object_size_.end()) return {o->second, false};
+  return {};
+}
+
+SymbolicWorld::Body SymbolicWorld::new_body(const std::string& cls, bool container) const {
+  if (container) {
+    auto t = class_template_.find(cls);
+    return {t != class_template_.end() ? t->second.size : world::Container{}.size, true};
+  }
+  auto o = class_object_size_.find(cls);
+  return {o != class_object_size_.end() ? o->second : world::Object{}.size, false};
+}
+
+world::Extent SymbolicWorld::usable(const std::string& loc) const {
+  for (const auto& r : regions_)
+    if (r.name == loc) return world::usable_extent(r);
+  world::Container c;
+  c.size = containers_.at(loc).size;
+  return world::usable_extent(c, options_.fit);
+}
+
+std::int64_t SymbolicWorld::cell_of(const Body& b) const {
+  return static_cast<std::int64_t>(
+      std::floor(world::cell_area(b.size, b.container, options_.fit) / task::System::kAreaUnit));
+}
+
+std::int64_t SymbolicWorld::room_of(const world::Extent& u) const {
+  return static_cast<std::int64_t>(std::ceil(world::room_area(u, options_.fit) / task::System::kAreaUnit));
+}
+
+bool SymbolicWorld::fits(const std::string& thing, const std::string& location) const {
+  if (!placement_.things.count(thing) || (!is_region(location) && !is_container(location))) return false;
+  return world::fits(body_of(thing).size, usable(location));
+}
+
+std::int64_t SymbolicWorld::cell(const std::string& thing) const {
+  return placement_.things.count(thing) ? cell_of(body_of(thing)) : -1;
+}
+
+std::int64_t SymbolicWorld::room(const std::string& location) const {
+  return is_region(location) || is_container(location) ? room_of(usable(location)) : -1;
+}
+
+std::int64_t SymbolicWorld::used(const std::string& location) const {
+  return is_region(location) || is_container(location) ? used_at(location, "") : -1;
+}
+
+std::string SymbolicWorld::refusal(const std::string& thing, const std::string& location) const {
+  if (!placement_.things.count(thing)) return "no object or container " + thing;
+  std::string why;
+  return can_hold(location, thing, &why) ? "" : why;
+}
+
+bool SymbolicWorld::can_hold(const std::string& loc, const std::string& thing, const Body& b,
+                             std::string* why) const {
   auto refuse = [&](std::string w) {
     if (why) *why = std::move(w);
     return false;
@@ -167,12 +255,19 @@ bool SymbolicWorld::can_hold(const std::string& loc, const std::string& thing, s
     if (!is_container(loc))
       return refuse(loc.empty() ? "no location" : loc + " is not a location in the world");
     if (loc == thing) return refuse(thing + " cannot go into itself");
-    if (is_container(thing))
-      return refuse(thing + " is a container and " + loc + " is one: containers do not nest");
+    if (b.container) return refuse(thing + " is a container and " + loc + " is one: containers do not nest");
     if (*placement_.location_of(loc) == kInHand) return refuse(loc + " is in the gripper");
   }
+  const world::Extent u = usable(loc);
+  if (!world::fits(b.size, u))
+    return refuse(thing + " does not fit in " + loc + " (" + format_m(b.size[0]) + " x " +
+                  format_m(b.size[1]) + " m; usable " + format_m(u.x) + " x " + format_m(u.y) + " m)");
   const int cap = capacity(loc);
   if (count_at(loc, thing) >= cap) return refuse(loc + " has no room (capacity " + std::to_string(cap) + ")");
+  const std::int64_t used = used_at(loc, thing), need = cell_of(b), room = room_of(u);
+  if (used + need > room)
+    return refuse(loc + " has no room for " + thing + " (area: " + format_area(used) + " used + " +
+                  format_area(need) + " > " + format_area(room) + " m²)");
   return true;
 }
 
@@ -209,6 +304,7 @@ std::string SymbolicWorld::closest_valid(const std::string& thing, const world::
 
 void SymbolicWorld::put(const std::string& thing, const std::string& loc, const world::Vec3& p) {
   placement_.things[thing].location = loc;
+  unmoved_.erase(thing);
   if (loc == world::kNoLocation)
     loose_[thing] = p;
   else
@@ -230,6 +326,8 @@ void SymbolicWorld::put(const std::string& thing, const std::string& loc, const 
 void SymbolicWorld::erase(const std::string& thing) {
   placement_.things.erase(thing);
   loose_.erase(thing);
+  unmoved_.erase(thing);
+  object_size_.erase(thing);
 }
 
 std::string SymbolicWorld::locate(const world::Intervention& iv, bool container) const {
@@ -511,7 +609,8 @@ WorldEvent SymbolicWorld::apply_now(world::Intervention iv) {
       if (cont && !loose_ok(iv, to) && !is_region(to) && is_container(to))
         return done(false, to + " is not a region: containers do not nest");
       std::string why;
-      if (!loose_ok(iv, to) && !can_hold(to, iv.subject, &why)) return done(false, why);
+      if (!loose_ok(iv, to) && !can_hold(to, iv.subject, new_body(iv.cls, cont), &why))
+        return done(false, why);
       const world::Vec3 p = iv.position ? *iv.position : point_of_location(to);
       if (cont) {
         auto tmpl = class_template_.find(iv.cls);
@@ -520,8 +619,9 @@ WorldEvent SymbolicWorld::apply_now(world::Intervention iv) {
                                  : ContainerInfo{iv.cls, options_.added_container_capacity};
         containers_[iv.subject] = info;
         container_order_.push_back(iv.subject);
-      } else if (cls == class_is_container_.end()) {
-        object_classes_.push_back(iv.cls);
+      } else {
+        object_size_[iv.subject] = new_body(iv.cls, false).size;
+        if (cls == class_is_container_.end()) object_classes_.push_back(iv.cls);
       }
       class_is_container_[iv.cls] = cont;
       names_ever_.insert(iv.subject);
@@ -585,14 +685,14 @@ std::string SymbolicWorld::fresh_name() {
   }
 }
 
-std::string SymbolicWorld::random_target(const std::string& thing, bool regions_only) {
+std::string SymbolicWorld::random_target(const std::string& thing, const Body& b, bool regions_only) {
   std::vector<std::string> all, room;
   const std::string* at = placement_.location_of(thing);
   for (const auto& loc : location_names()) {
     if (regions_only && !is_region(loc)) continue;
     if (at && *at == loc) continue;
     all.push_back(loc);
-    if (can_hold(loc, thing)) room.push_back(loc);
+    if (can_hold(loc, thing, b)) room.push_back(loc);
   }
   const auto& from = room.empty() ? all : room;
   if (from.empty()) return "";
@@ -614,19 +714,19 @@ world::Intervention SymbolicWorld::random_intervention() {
       std::vector<std::string> names;
       for (const auto& [n, t] : placement_.things) names.push_back(n);
       if (!names.empty()) iv.subject = names[next_u64(iv_rng_) % names.size()];
-      iv.location = random_target(iv.subject, is_container(iv.subject));
+      iv.location = random_target(iv.subject, body_of(iv.subject), is_container(iv.subject));
       break;
     }
     case Kind::Add:
       iv.subject = fresh_name();
       iv.cls =
           object_classes_.empty() ? "block" : object_classes_[next_u64(iv_rng_) % object_classes_.size()];
-      iv.location = random_target(iv.subject, false);
+      iv.location = random_target(iv.subject, new_body(iv.cls, false), false);
       break;
     case Kind::AddContainer:
       iv.subject = fresh_name();
       iv.cls = class_template_.empty() ? "tray" : class_template_.begin()->first;
-      iv.location = random_target(iv.subject, true);
+      iv.location = random_target(iv.subject, new_body(iv.cls, true), true);
       break;
     case Kind::Remove:
       iv.subject = pick(false);
@@ -635,7 +735,7 @@ world::Intervention SymbolicWorld::random_intervention() {
       iv.subject = pick(true);
       break;
     case Kind::TakeFromGripper:
-      if (next_u64(iv_rng_) % 2) iv.location = random_target(held(), is_container(held()));
+      if (next_u64(iv_rng_) % 2) iv.location = random_target(held(), body_of(held()), is_container(held()));
       break;
   }
   return iv;
@@ -673,10 +773,25 @@ std::string SymbolicWorld::check_invariants() const {
     if (!placement_.things.count(name) || !placement_.things.at(name).container)
       bad("container " + name + " is not in the placement");
   if (container_order_.size() != containers_.size()) bad("container order out of step");
+  for (const auto& name : unmoved_)
+    if (!placement_.things.count(name)) bad(name + " is listed as unmoved but is not in the world");
   for (const auto& loc : location_names()) {
     const int n = count_at(loc, "");
     if (n > capacity(loc))
       bad(loc + " holds " + std::to_string(n) + " things, capacity " + std::to_string(capacity(loc)));
+    // The footprint rules: broken only by things that have stayed where the initial placement put them.
+    bool all_unmoved = true;
+    for (const auto& [name, t] : placement_.things) {
+      if (t.location != loc) continue;
+      const bool stayed = unmoved_.count(name) > 0;
+      all_unmoved = all_unmoved && stayed;
+      if (!stayed && !world::fits(body_of(name).size, usable(loc)))
+        bad(name + " was put in " + loc + " where it does not fit");
+    }
+    const std::int64_t u = used_at(loc, ""), r = room_of(usable(loc));
+    if (u > r && !all_unmoved)
+      bad(loc + " is over its room (" + std::to_string(u) + " > " + std::to_string(r) +
+          " area units) and holds things put there since the start");
   }
   const bool running = status_ == MoveStatus::Running;
   if (running != (phase_ != Phase::Idle && !halted_)) bad("status and phase disagree");

@@ -14,6 +14,14 @@
 //  - containers stand only in regions (or in the hand, or "none"): never nested;
 //  - no location holds more than its capacity (a container counts 1 in its
 //    region, its contents count only in it);
+//  - the planner's footprint rules (world/fit.hpp, applied exactly as
+//    task::System applies them): a thing is only put where it fits (its x/y
+//    size within the location's usable extent, no rotation), and only where
+//    the cells of the things directly there plus its own stay within the
+//    location's room. Only the initial placement may break them (accepted,
+//    as the transition system accepts it): a thing that has not moved since
+//    may stay where it does not fit, and a location over its room holds only
+//    such unmoved things;
 //  - an intervention is applied whole or refused with a reason, never partly,
 //    never with an exception; a held thing is never silently deleted;
 //  - for a given scenario, options and sequence of calls, everything (times,
@@ -30,6 +38,7 @@
 #include <vector>
 
 #include "rtamp/exec/world.hpp"
+#include "rtamp/world/fit.hpp"
 #include "rtamp/world/geometry.hpp"
 #include "rtamp/world/placement.hpp"
 #include "rtamp/world/scenario.hpp"
@@ -82,6 +91,12 @@ struct SymbolicWorldOptions {
   // Capacity of an added container whose class no scenario container has
   // (otherwise: the capacity of the first scenario container of its class).
   int added_container_capacity = 4;
+  // The footprint rules; the planner's task::System uses the defaults
+  // (task::System::Options::fit). Sizes: a scenario thing has its own; an
+  // added container that of the first scenario container of its class (else
+  // world::Container's default), an added object that of the first scenario
+  // object of its class (else world::Object's default).
+  world::FitRules fit;
 
   std::uint64_t seed = 1;
 };
@@ -89,7 +104,8 @@ struct SymbolicWorldOptions {
 class SymbolicWorld final : public World {
  public:
   // Throws rtamp::Error if the scenario's initial placement breaks a
-  // capacity (the planner would reject it too) or an option is out of range
+  // capacity or an option is out of range (an initial placement that breaks
+  // the footprint rules is accepted, as task::System accepts it)
   // (durations < 0, speed <= 0, a probability outside [0, 1], rate < 0,
   // fails_in not one of the four failing phases, capacity < 1).
   explicit SymbolicWorld(const world::Scenario& scenario, SymbolicWorldOptions options = {});
@@ -127,6 +143,18 @@ class SymbolicWorld final : public World {
   WorldEvent apply(const world::Intervention& iv);
   // Capacity of a region or present container; -1 if there is none of that name.
   int capacity(const std::string& location) const;
+  // The footprint rules in task::System's units (task::System::kAreaUnit m²,
+  // cells rounded down, rooms up): `thing` (present) fits `location` (a
+  // region or present container) at all; its cell; the location's room; the
+  // sum of the cells of the things directly at it. false / -1 for unknown names.
+  bool fits(const std::string& thing, const std::string& location) const;
+  std::int64_t cell(const std::string& thing) const;
+  std::int64_t room(const std::string& location) const;
+  std::int64_t used(const std::string& location) const;
+  // "" if `location` would take `thing` (present) now, else why not: the rules
+  // every place, put-back and intervention follows (location kind, nesting,
+  // fit, capacity, room).
+  std::string refusal(const std::string& thing, const std::string& location) const;
   // "" if every invariant of the header holds, else what is wrong (one line each).
   std::string check_invariants() const;
 
@@ -135,16 +163,32 @@ class SymbolicWorld final : public World {
   struct ContainerInfo {
     std::string cls;
     int capacity = 4;
-    world::Vec3 size{0.24, 0.16, 0.03};
+    world::Vec3 size = world::Container{}.size;
+  };
+  // What the footprint rules need of a thing (present or about to be added).
+  struct Body {
+    world::Vec3 size = world::Object{}.size;
+    bool container = false;
   };
 
   // Locations and room.
   bool is_region(const std::string& loc) const;
   bool is_container(const std::string& name) const { return containers_.count(name) > 0; }
   int count_at(const std::string& loc, const std::string& except) const;
-  // `loc` can take `thing` now: a region, or a container that is present, not
-  // `thing`, not held, and `thing` is not a container; and it has room.
-  bool can_hold(const std::string& loc, const std::string& thing, std::string* why = nullptr) const;
+  std::int64_t used_at(const std::string& loc, const std::string& except) const;
+  Body body_of(const std::string& thing) const;  // a present thing (an unknown one: a default object)
+  Body new_body(const std::string& cls, bool container) const;  // an added thing of class `cls`
+  world::Extent usable(const std::string& loc) const;           // a region or present container
+  std::int64_t cell_of(const Body& b) const;
+  std::int64_t room_of(const world::Extent& usable) const;
+  // `loc` can take `thing` (of body `b`) now: a region, or a container that is
+  // present, not `thing`, not held, and `thing` is not a container; `thing`
+  // fits it; and it has room (capacity and area).
+  bool can_hold(const std::string& loc, const std::string& thing, const Body& b,
+                std::string* why = nullptr) const;
+  bool can_hold(const std::string& loc, const std::string& thing, std::string* why = nullptr) const {
+    return can_hold(loc, thing, body_of(thing), why);
+  }
   world::Vec3 point_of_location(const std::string& loc) const;
   world::Vec3 point_of_thing(const std::string& thing) const;
   // The valid location for `thing` closest to `p` (regions first on ties, then
@@ -168,7 +212,7 @@ class SymbolicWorld final : public World {
   void erase(const std::string& thing);
   void remove_container_spilling(const std::string& name, std::string* detail);
   world::Intervention random_intervention();
-  std::string random_target(const std::string& thing, bool regions_only);
+  std::string random_target(const std::string& thing, const Body& b, bool regions_only);
   void schedule_random(double from);
   std::string fresh_name();
 
@@ -183,6 +227,9 @@ class SymbolicWorld final : public World {
   std::map<std::string, bool> class_is_container_;
   std::map<std::string, ContainerInfo> class_template_;  // first scenario container of each class
   std::vector<std::string> object_classes_;
+  std::map<std::string, world::Vec3> object_size_;        // present objects
+  std::map<std::string, world::Vec3> class_object_size_;  // first scenario object of each class
+  std::set<std::string> unmoved_;  // things at the location of the initial placement, never moved since
   std::set<std::string> names_ever_;
   world::Placement placement_;
   std::map<std::string, world::Vec3> loose_;  // points of things at "none"
