@@ -280,28 +280,86 @@ struct Product {
     }
     return d;
   }
+  // Multi-source: node v starts with label init[v] (INFINITY: not a source).
+  std::vector<Lex> lex_dijkstra_multi(const std::vector<Lex>& init) const {
+    std::vector<Lex> d = init;
+    using QI = std::pair<Lex, int>;
+    std::priority_queue<QI, std::vector<QI>, std::greater<QI>> pq;
+    for (std::size_t v = 0; v < d.size(); ++v)
+      if (d[v].first < INFINITY) pq.push({d[v], static_cast<int>(v)});
+    while (!pq.empty()) {
+      auto [dv, v] = pq.top();
+      pq.pop();
+      if (dv != d[static_cast<std::size_t>(v)]) continue;
+      const auto& out = adj[static_cast<std::size_t>(v)];
+      for (std::size_t i = 0; i < out.size(); ++i) {
+        const auto m = static_cast<std::size_t>(out[i].first);
+        const Lex nd{dv.first + out[i].second, dv.second + adj_moves[static_cast<std::size_t>(v)][i]};
+        if (lex_less(nd, d[m])) {
+          d[m] = nd;
+          pq.push({nd, out[i].first});
+        }
+      }
+    }
+    return d;
+  }
 };
 
-// Minimum lasso cost from (start, q0) (default: the initial state), or nullopt if there is none.
-inline std::optional<double> min_lasso(const rtamp::world::Scenario& sc, const rtamp::world::Placement& p,
-                                       const std::string& hand, const rtamp::automata::Automaton& ba,
-                                       const std::string& model, bool symmetry = true,
-                                       std::optional<std::uint32_t> q0 = {}) {
-  const Product g(sc, p, hand, ba, model, symmetry, q0);
+// The least lasso in the order (cost, number of moves) from (start, q0)
+// (default: the initial state): among the cheapest lassos, the fewest moves;
+// nullopt if there is none. A lasso is a path from the start to a node v and
+// a cycle (>= 1 step) through v that contains an accepting node N, costing
+// d(start, v) + d(v, N) + d(N, v) (v = N: d(start, N) + the cheapest cycle
+// through N). For each accepting N, in order of d(start, N) (a lower bound:
+// d(start, v) + d(v, N) >= d(start, N)): a search from N gives d(N, v), and a
+// second one from every v at once, each starting with label
+// d(start, v) + d(N, v), reaches N with the least lasso through N.
+// join_anywhere = false: only lassos whose cycle starts at N (v = N), the
+// planner's lasso shape before prefixes could join anywhere.
+inline std::optional<std::pair<double, int>> min_lasso_lex(const rtamp::world::Scenario& sc,
+                                                           const rtamp::world::Placement& p, const std::string& hand,
+                                                           const rtamp::automata::Automaton& ba,
+                                                           const std::string& model,
+                                                           std::optional<std::uint32_t> q0 = {},
+                                                           bool join_anywhere = true) {
+  using Lex = Product::Lex;
+  const Product g(sc, p, hand, ba, model, true, q0);
   const std::size_t N = g.nodes.size();
-  const auto d0 = g.dijkstra(0, false);
+  const auto d0 = g.lex_dijkstra(0, false);
   std::vector<int> acc;
   for (std::size_t n = 0; n < N; ++n)
-    if (ba.is_accepting_state(g.nodes[n].q) && d0[n] < INFINITY) acc.push_back(static_cast<int>(n));
-  std::sort(acc.begin(), acc.end(), [&](int a, int b) { return d0[static_cast<std::size_t>(a)] < d0[static_cast<std::size_t>(b)]; });
-  double best = INFINITY;
+    if (ba.is_accepting_state(g.nodes[n].q) && d0[n].first < INFINITY) acc.push_back(static_cast<int>(n));
+  std::sort(acc.begin(), acc.end(), [&](int a, int b) {
+    return Product::lex_less(d0[static_cast<std::size_t>(a)], d0[static_cast<std::size_t>(b)]);
+  });
+  std::optional<Lex> best;
+  auto plus = [](const Lex& a, const Lex& b) { return Lex{a.first + b.first, a.second + b.second}; };
   for (int n : acc) {
-    if (d0[static_cast<std::size_t>(n)] >= best) break;
-    const auto dc = g.dijkstra(n, true);
-    best = std::min(best, d0[static_cast<std::size_t>(n)] + dc[static_cast<std::size_t>(n)]);
+    const auto un = static_cast<std::size_t>(n);
+    if (best && !Product::lex_less(d0[un], *best)) break;
+    const auto from_n = g.lex_dijkstra(n, true);  // from_n[n]: the cheapest cycle through n
+    Lex here{INFINITY, 0};
+    if (from_n[un].first < INFINITY) here = plus(d0[un], from_n[un]);
+    if (join_anywhere) {
+      std::vector<Lex> init(N, Lex{INFINITY, 0});
+      for (std::size_t v = 0; v < N; ++v)
+        if (v != un && d0[v].first < INFINITY && from_n[v].first < INFINITY) init[v] = plus(d0[v], from_n[v]);
+      const auto back = g.lex_dijkstra_multi(init);
+      if (Product::lex_less(back[un], here)) here = back[un];
+    }
+    if (here.first < INFINITY && (!best || Product::lex_less(here, *best))) best = here;
   }
-  if (best == INFINITY) return std::nullopt;
   return best;
+}
+
+// The least lasso cost (min_lasso_lex's cost), or nullopt if there is none.
+inline std::optional<double> min_lasso(const rtamp::world::Scenario& sc, const rtamp::world::Placement& p,
+                                       const std::string& hand, const rtamp::automata::Automaton& ba,
+                                       const std::string& model, bool /*symmetry*/ = true,
+                                       std::optional<std::uint32_t> q0 = {}, bool join_anywhere = true) {
+  const auto l = min_lasso_lex(sc, p, hand, ba, model, q0, join_anywhere);
+  if (!l) return std::nullopt;
+  return l->first;
 }
 
 // Minimum over the start automaton states `qs` of min_lasso (the multi-source
@@ -313,27 +371,6 @@ inline std::optional<double> min_lasso_from(const rtamp::world::Scenario& sc, co
   for (std::uint32_t q : qs) {
     const auto c = min_lasso(sc, p, hand, ba, model, true, q);
     if (c && (!best || *c < *best)) best = c;
-  }
-  return best;
-}
-
-// The least lasso in the order (cost, number of moves) from (start, q0):
-// among the cheapest lassos, the fewest moves. nullopt if there is none.
-inline std::optional<std::pair<double, int>> min_lasso_lex(const rtamp::world::Scenario& sc,
-                                                           const rtamp::world::Placement& p, const std::string& hand,
-                                                           const rtamp::automata::Automaton& ba,
-                                                           const std::string& model,
-                                                           std::optional<std::uint32_t> q0 = {}) {
-  const Product g(sc, p, hand, ba, model, true, q0);
-  const auto d0 = g.lex_dijkstra(0, false);
-  std::optional<Product::Lex> best;
-  for (std::size_t n = 0; n < g.nodes.size(); ++n) {
-    if (!ba.is_accepting_state(g.nodes[n].q) || d0[n].first == INFINITY) continue;
-    if (best && best->first < d0[n].first - 1e-9) continue;
-    const auto dc = g.lex_dijkstra(static_cast<int>(n), true)[n];
-    if (dc.first == INFINITY) continue;
-    const Product::Lex total{d0[n].first + dc.first, d0[n].second + dc.second};
-    if (!best || Product::lex_less(total, *best)) best = total;
   }
   return best;
 }

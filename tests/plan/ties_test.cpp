@@ -55,7 +55,7 @@ std::optional<double> replay(plan::Planner& planner, const std::vector<Act>& pre
   const oracle::St start = s;
   if (!run(cycle, word.cycle)) return std::nullopt;
   if (!(oracle::canonical(w, s) == oracle::canonical(w, start))) return std::nullopt;
-  if (!product_lasso(ba, q0, word, false)) return std::nullopt;
+  if (!product_lasso(ba, q0, word, true)) return std::nullopt;
   return total;
 }
 

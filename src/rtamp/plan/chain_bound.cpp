@@ -135,18 +135,31 @@ ChainBound::ChainBound(const task::System& ts, const task::Labeling& lab, const 
       }
     kappa_[q] = best;
   }
+  min_kappa_ = kInf;
+  for (std::uint32_t q = 0; q < n_states_; ++q)
+    if (accepting_[q]) min_kappa_ = std::min(min_kappa_, kappa_[q]);
+  if (min_kappa_ == kInf) min_kappa_ = 0;
   // tail of a forcing edge with guard c into state d: from node (d, c) of G
   // on, the least distance to an accepting state plus its kappa (computed once
   // per node).
-  std::vector<double> tail(n, -1.0);
+  // A lasso may join its cycle anywhere, so the cycle need not follow the
+  // path to qa: the lasso pays the path to qa (prefix and the cycle's first
+  // part) and, separately, a cycle through qa, so it costs at least
+  // max(path, kappa(qa)); a tail is the pair (least path, least kappa) over
+  // the accepting states reached (a weaker, valid bound than the least max).
+  std::vector<Tail> tail(n, Tail{-1.0, -1.0});
   auto tail_of = [&](std::uint32_t d, std::uint32_t c) {
-    double& t = tail[node(d, c)];
-    if (t >= 0) return t;
+    Tail& t = tail[node(d, c)];
+    if (t.path >= 0) return t;
     dijkstra(node(d, c), false);
-    t = kInf;
+    t = {kInf, kInf};
     for (std::uint32_t qa = 0; qa < n_states_; ++qa)
       if (accepting_[qa] && kappa_[qa] < kInf)
-        for (std::uint32_t l = 0; l <= n_forcing_; ++l) t = std::min(t, dist_[node(qa, l)] + kappa_[qa]);
+        for (std::uint32_t l = 0; l <= n_forcing_; ++l)
+          if (dist_[node(qa, l)] < kInf) {
+            t.path = std::min(t.path, dist_[node(qa, l)]);
+            t.kappa = std::min(t.kappa, kappa_[qa]);
+          }
     return t;
   };
   // Per state q: the states reachable by non-forcing edges, their kappa, and
@@ -155,10 +168,10 @@ ChainBound::ChainBound(const task::System& ts, const task::Labeling& lab, const 
   entries_.assign(n_states_, {});
   std::vector<std::uint8_t> seen(n_states_);
   std::vector<std::uint32_t> todo;
-  std::vector<double> best_tail(n_forcing_);
+  std::vector<Tail> best_tail(n_forcing_);
   for (std::uint32_t q = 0; q < n_states_; ++q) {
     std::fill(seen.begin(), seen.end(), 0);
-    std::fill(best_tail.begin(), best_tail.end(), kInf);
+    std::fill(best_tail.begin(), best_tail.end(), Tail{kInf, kInf});
     todo.assign(1, q);
     seen[q] = 1;
     while (!todo.empty()) {
@@ -169,7 +182,8 @@ ChainBound::ChainBound(const task::System& ts, const task::Labeling& lab, const 
         if (st.src != u) continue;
         if (st.forcing >= 0) {
           const auto c = static_cast<std::uint32_t>(st.forcing);
-          best_tail[c] = std::min(best_tail[c], tail_of(st.dst, c));
+          const Tail t = tail_of(st.dst, c);
+          best_tail[c] = {std::min(best_tail[c].path, t.path), std::min(best_tail[c].kappa, t.kappa)};
         } else if (!seen[st.dst]) {
           seen[st.dst] = 1;
           todo.push_back(st.dst);
@@ -177,7 +191,7 @@ ChainBound::ChainBound(const task::System& ts, const task::Labeling& lab, const 
       }
     }
     for (std::uint32_t c = 0; c < n_forcing_; ++c)
-      if (best_tail[c] < kInf) entries_[q].push_back({c, best_tail[c]});
+      if (best_tail[c].path < kInf) entries_[q].push_back({c, best_tail[c]});
   }
   enabled_ = true;
 }
@@ -207,7 +221,7 @@ void ChainBound::dijkstra(std::uint32_t src, bool skip_src) {
 
 double ChainBound::bound(std::uint32_t q, const std::vector<double>& first) const {
   double best = zero_tail_[q];
-  for (const auto& [c, t] : entries_[q]) best = std::min(best, first[c] + t);
+  for (const auto& [c, t] : entries_[q]) best = std::min(best, std::max(first[c] + t.path, t.kappa));
   return best;
 }
 

@@ -15,18 +15,21 @@
 // overlap); the first forcing guard c1 costs LB(s, c1) from the start state s.
 // A lasso through an accepting node with automaton state qa also pays, in its
 // cycle, the D-sum around some automaton cycle through qa: kappa(qa) = the
-// least such sum. So, with the graph G over (automaton state q, last forcing
-// guard l or none) — an edge e with guard c: (q, l) -> (dst(e), c) weighted
-// D(l, c) (LB for l = none) if c forces something, else (q, l) -> (dst(e), l)
-// weighted 0 —
-//   bound(s, q) = min over accepting qa of dist_G((q, none), (qa, .)) + kappa(qa)
+// least such sum. The prefix may join the cycle anywhere (plan/search.hpp),
+// so the path to qa and the cycle may share their stretch from the join to
+// qa: the lasso costs at least max(path to qa, kappa(qa)), not their sum.
+// So, with the graph G over (automaton state q, last forcing guard l or none)
+// — an edge e with guard c: (q, l) -> (dst(e), c) weighted D(l, c) (LB for
+// l = none) if c forces something, else (q, l) -> (dst(e), l) weighted 0 —
+//   bound(s, q) = min over accepting qa of max(dist_G((q, none), (qa, .)), kappa(qa))
 // is at most the cost of the best lasso from (s, q). Guards that force one
 // thing to two places can never hold: their edges are left out.
 // Everything but the first forcing guard's LB(s, c) is state-independent, so
 // it is computed once: bound(s, q) = min(kappa of an accepting state reachable
 // from q by non-forcing edges, min over the forcing edges c that start there
-// of LB(s, c) + tail(c)), tail(c) = the least D-distance in G from c to an
-// accepting state plus its kappa. Enabled only without containers, when some
+// of max(LB(s, c) + tail_path(c), tail_kappa(c))), tail_path(c) = the least
+// D-distance in G from c to an accepting state, tail_kappa(c) = the least
+// kappa of those reached (min over qa of the max is at least this). Enabled only without containers, when some
 // D is positive, and when G is small (<= 48 nodes: set-up is a few Dijkstras
 // on G per automaton state).
 #pragma once
@@ -52,6 +55,9 @@ class ChainBound {
   const std::vector<automata::Cube>& forcing_cubes() const { return cubes_; }
   // The bound above from automaton state q, given first[i] = LB(s, forcing_cubes()[i]).
   double bound(std::uint32_t q, const std::vector<double>& first) const;
+  // No cycle of the product through an accepting node costs less (the least
+  // kappa of an accepting state).
+  double cycle_bound() const { return min_kappa_; }
 
  private:
   struct Arc {
@@ -72,8 +78,12 @@ class ChainBound {
   std::vector<std::vector<Arc>> arcs_;      // per node of G
   std::vector<bool> accepting_;
   std::vector<double> kappa_;               // per automaton state; kInf: no cycle through it
+  double min_kappa_ = 0;                     // over the accepting states
   std::vector<double> zero_tail_;           // per automaton state
-  std::vector<std::vector<std::pair<std::uint32_t, double>>> entries_;  // per state: (forcing c, tail(c))
+  struct Tail {
+    double path, kappa;
+  };
+  std::vector<std::vector<std::pair<std::uint32_t, Tail>>> entries_;  // per state: (forcing c, tail(c))
   std::vector<double> dist_;                // Dijkstra work space
   std::vector<std::uint8_t> done_;
 };

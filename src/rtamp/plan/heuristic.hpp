@@ -55,6 +55,9 @@ class Heuristic {
   // node whose automaton state is `target` (the cycle search's way back to
   // an accepting node). 0 is always correct.
   virtual double walk_bound(const ProductGraph&, NodeId, std::uint32_t /*target*/) { return 0; }
+  // Lower bound on the cost of every cycle (>= 1 step) through node n that
+  // contains an accepting node (the cycle of a lasso joined at n). 0 is always correct.
+  virtual double cycle_bound(const ProductGraph&, NodeId) { return 0; }
 };
 
 class ZeroHeuristic final : public Heuristic {
@@ -71,6 +74,8 @@ class GuardHeuristic : public Heuristic {
   double walk_bound(const ProductGraph& g, NodeId n, std::uint32_t target) override {
     return walk(g.state(n), g.ba_state(n), target);
   }
+  // The chain bound's least kappa (0 without it).
+  double cycle_bound(const ProductGraph&, NodeId) override { return chain_ ? chain_->cycle_bound() : 0.0; }
   // Every automaton walk q = q0 -> q1 -> ... -> qk = target (k >= 1, self-loops
   // included) reads each guard in some TS state on the way, so a path along it
   // costs at least the largest LB(s, guard); walk() is the smallest such
@@ -126,6 +131,7 @@ class ExperienceHeuristic final : public Heuristic {
   double walk_bound(const ProductGraph& g, NodeId n, std::uint32_t target) override {
     return guard_.walk_bound(g, n, target);
   }
+  double cycle_bound(const ProductGraph& g, NodeId n) override { return guard_.cycle_bound(g, n); }
   double estimate(const ProductGraph& g, NodeId n) override {
     double h = g.cached_h(n);
     if (h < 0) {

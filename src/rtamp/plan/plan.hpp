@@ -2,8 +2,10 @@
 // layers (DESIGN.md "Types that cross layers").
 //
 // A Plan is a lasso over the product automaton (DESIGN.md "Plans are
-// lassos"): `prefix` leads from the initial product node to an accepting node
-// N, `cycle` (non-empty) leads from N back to N. cost() = prefix_cost +
+// lassos"): `prefix` leads from a start product node (the current state and
+// one of the planner's automaton states) to a node J, `cycle` (non-empty)
+// leads from J back to J and passes an accepting node (J itself need not be
+// accepting: the prefix may join the cycle anywhere). cost() = prefix_cost +
 // cycle_cost, the quantity the searches minimise. Each step records the TS
 // state before and after, the BA states, the action, its motion cost and the
 // label L(from) that the BA read on that step.

@@ -462,7 +462,7 @@ PlanResult Planner::search(task::System& ts, task::Labeling& lab, bool allow_dia
     p.prefix.reserve(r.prefix_edges.size());
     p.cycle.reserve(r.cycle_edges.size());
     add_steps(r.start, r.prefix_edges, p.prefix);
-    add_steps(r.accepting, r.cycle_edges, p.cycle);
+    add_steps(r.cycle_start, r.cycle_edges, p.cycle);
     p.prefix_cost = r.prefix_cost;
     p.cycle_cost = r.cycle_cost;
     res.stats.seconds = double(steady_now_ns() - t0) * 1e-9;

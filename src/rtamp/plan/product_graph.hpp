@@ -88,8 +88,9 @@ class ProductGraph {
                   const std::function<void(std::int64_t now_ns)>& tick = {});
 
   // Per-node experience (Section III.C): a learned lower bound on the cost of
-  // the best lasso from the node, and the minimum cycle cost through it
-  // (exact, or a lower bound).
+  // the best lasso from the node, and the minimum cost of a cycle through it
+  // that contains an accepting node (exact, or a lower bound; for an
+  // accepting node: its cheapest cycle).
   double learned(NodeId n) const { return n < learned_.size() ? learned_[n] : 0.0; }
   void learn(NodeId n, double v);
   // Costs are compared lexicographically as (motion cost, number of moves)
@@ -115,8 +116,8 @@ class ProductGraph {
   // Solved nodes (experience, "previously explored paths"): n lies on an
   // optimal lasso found by an earlier complete search, so learned(n) is the
   // exact cost of the best lasso from n, and via(n) is its first edge, or
-  // kViaCycle if n is that lasso's accepting node (its cycle is then exact in
-  // cycle(n)). Following via() from a solved node reaches such an accepting
+  // kViaCycle if n is where that lasso's prefix joins its cycle (the cycle is
+  // then exact in cycle(n)). Following via() from a solved node reaches such a
   // node through solved nodes only. Valid as long as the graph is.
   static constexpr std::uint32_t kNoVia = std::numeric_limits<std::uint32_t>::max();
   static constexpr std::uint32_t kViaCycle = kNoVia - 1;

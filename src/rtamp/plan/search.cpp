@@ -133,31 +133,35 @@ LassoSearch::Cost LassoSearch::cycle(ProductGraph& g, NodeId n, Cost bound, Heur
   const task::State target = g.state(n);
   const std::uint32_t target_q = g.ba_state(n);
   const std::uint32_t stay = task::Action::stay().packed();
+  // Search space: (node, layer), id = 2 * node + layer; layer 1 once the
+  // path has entered an accepting node (an accepting n starts in layer 1).
+  // The cycle is found on the way back to (n, 1).
+  const NodeId start = 2 * n + (g.accepting(n) ? 1 : 0), goal = 2 * n + 1;
   Space& S = cycle_;
-  S.begin(g.size());
+  S.begin(2 * g.size());
   Cost best = bound;  // the incumbent: a cycle below it is sought; lowered by each one found
   bool found = false;
   auto relax = [&](NodeId from, std::uint32_t e) {
     const ProductEdge& pe = g.edge(e);
-    const NodeId m = pe.dst;
-    const double ng = (from == n ? 0.0 : S.g[from]) + pe.cost;
-    const std::uint32_t nm = (from == n ? 0 : S.m[from]) + (pe.action != stay ? 1 : 0);
-    if (m == n) {  // back at n: a cycle
-      if (lex_less(ng, nm, best.c, best.m)) {
+    const NodeId m = 2 * pe.dst + ((from & 1) | (g.accepting(pe.dst) ? 1 : 0));
+    const double ng = (from == start ? 0.0 : S.g[from]) + pe.cost;
+    const std::uint32_t nm = (from == start ? 0 : S.m[from]) + (pe.action != stay ? 1 : 0);
+    if (pe.dst == n) {  // back at n: a cycle if it went through an accepting node
+      if (m == goal && lex_less(ng, nm, best.c, best.m)) {
         best = {ng, nm};
         found = true;
-        S.parent[n] = from;
-        S.pedge[n] = e;
+        S.parent[goal] = from;
+        S.pedge[goal] = e;
       }
       return;
     }
-    S.ensure(g.size());
+    S.ensure(2 * g.size());
     if (!S.seen(m)) {
       S.stamp[m] = S.gen;
       S.closed[m] = 0;
       S.h[m] = !h ? 0.0
-                  : std::max(state_distance_bound(g.system(), g.model(), g.state(m), target),
-                             h->walk_bound(g, m, target_q));
+                  : std::max(state_distance_bound(g.system(), g.model(), g.state(pe.dst), target),
+                             h->walk_bound(g, pe.dst, target_q));
     } else if (!lex_less(ng, nm, S.g[m], S.m[m])) {
       return;
     }
@@ -173,7 +177,7 @@ LassoSearch::Cost LassoSearch::cycle(ProductGraph& g, NodeId n, Cost bound, Heur
     g.expand(n);
     ++stats.successor_generations;
   }
-  for (std::uint32_t e = g.edge_begin(n); e < g.edge_end(n); ++e) relax(n, e);
+  for (std::uint32_t e = g.edge_begin(n); e < g.edge_end(n); ++e) relax(start, e);
   while (!S.heap.empty()) {
     const Item it = S.pop();
     if (it.g != S.g[it.n] || it.m != S.m[it.n]) continue;  // stale
@@ -182,21 +186,22 @@ LassoSearch::Cost LassoSearch::cycle(ProductGraph& g, NodeId n, Cost bound, Heur
     if (S.closed[it.n]) continue;
     S.closed[it.n] = 1;
     ++stats.expanded;
-    if (!g.expanded(it.n)) {
-      g.expand(it.n);
+    const NodeId x = it.n / 2;
+    if (!g.expanded(x)) {
+      g.expand(x);
       ++stats.successor_generations;
     }
-    for (std::uint32_t e = g.edge_begin(it.n); e < g.edge_end(it.n); ++e) relax(it.n, e);
+    for (std::uint32_t e = g.edge_begin(x); e < g.edge_end(x); ++e) relax(it.n, e);
     if (out_of_budget(g, limits, deadline_ns, stats, r)) return kNoCost;
   }
   if (found) {
     g.set_cycle(n, {best.c, best.m, true});
     cycle_path_.clear();
-    NodeId cur = n;
+    NodeId cur = goal;
     do {
       cycle_path_.push_back(S.pedge[cur]);
       cur = S.parent[cur];
-    } while (cur != n);
+    } while (cur != start);
     std::reverse(cycle_path_.begin(), cycle_path_.end());
     return best;
   }
@@ -221,7 +226,31 @@ LassoResult LassoSearch::run(ProductGraph& g, const std::vector<NodeId>& starts,
   const std::uint32_t stay = task::Action::stay().packed();
   Space& S = prefix_;
   S.begin(g.size());
+  cand_.clear();
   closed_list_.clear();
+  // Automaton states that lie on a cycle through an accepting state: only
+  // there can a lasso's cycle pass (its automaton projection is such a cycle).
+  const automata::Automaton& ba = g.automaton();
+  if (on_acc_cycle_.size() != ba.num_states() || acc_cycle_of_ != &ba) {
+    acc_cycle_of_ = &ba;
+    const std::uint32_t nq = ba.num_states();
+    std::vector<std::vector<bool>> reach(nq, std::vector<bool>(nq, false));  // >= 1 edge
+    for (std::uint32_t a = 0; a < nq; ++a) {
+      std::vector<std::uint32_t> todo;
+      for (const auto& e : ba.edges[a])
+        if (!e.guard.is_false() && !reach[a][e.dst]) reach[a][e.dst] = true, todo.push_back(e.dst);
+      while (!todo.empty()) {
+        const std::uint32_t q = todo.back();
+        todo.pop_back();
+        for (const auto& e : ba.edges[q])
+          if (!e.guard.is_false() && !reach[a][e.dst]) reach[a][e.dst] = true, todo.push_back(e.dst);
+      }
+    }
+    on_acc_cycle_.assign(nq, false);
+    for (std::uint32_t q = 0; q < nq; ++q)
+      for (std::uint32_t qa = 0; qa < nq && !on_acc_cycle_[q]; ++qa)
+        on_acc_cycle_[q] = ba.is_accepting_state(qa) && reach[q][qa] && reach[qa][q];
+  }
   double best = kInf;  // the incumbent lasso, (best, best_m) in the order (cost, moves)
   std::uint32_t best_m = kManyMoves;
   NodeId best_node = kNoNode;  // an accepting node, or (best_solved) a solved node
@@ -252,8 +281,46 @@ LassoResult LassoSearch::run(ProductGraph& g, const std::vector<NodeId>& starts,
     if (S.h[init] < kInf) S.push({S.h[init], 0.0, init, 0});
     offer_solved(init, 0.0, 0);
   }
+  // The lasso with its cycle through n: the cheapest cycle through n and an
+  // accepting node (cycle()), below what would beat the incumbent.
+  auto try_cycle = [&](NodeId n) {
+    const Cost bound{best - S.g[n], best_m > S.m[n] ? best_m - S.m[n] : 0};
+    const Cost c = cycle(g, n, bound, cycle_h, limits, deadline_ns, stats, r);
+    if (c.c < kInf && lex_less(S.g[n] + c.c, S.m[n] + c.m, best, best_m)) {
+      best = S.g[n] + c.c;
+      best_m = S.m[n] + c.m;
+      best_node = n;
+      best_solved = false;
+      best_cycle = c;
+    }
+    return !(r.hit_node_limit || r.hit_time_limit);
+  };
+  auto cand_less = [](const Item& a, const Item& b) { return heap_less(a, b); };
   bool complete = true;
-  while (!S.heap.empty()) {
+  for (;;) {
+    // Join candidates (closed non-accepting nodes on automaton cycles through
+    // acceptance) wait in their own heap, keyed by g + a lower bound on their
+    // cycle; they are taken once an incumbent exists and their key is the
+    // least (until then the prefix search finds a first lasso through an
+    // accepting node as it always did).
+    while (!cand_.empty() && (cand_.front().g != S.g[cand_.front().n] || cand_.front().m != S.m[cand_.front().n])) {
+      std::pop_heap(cand_.begin(), cand_.end(), cand_less);
+      cand_.pop_back();
+    }
+    const bool take_cand = !cand_.empty() && (S.heap.empty() || (best < kInf && heap_less(S.heap.front(), cand_.front())));
+    if (take_cand) {
+      std::pop_heap(cand_.begin(), cand_.end(), cand_less);
+      const Item it = cand_.back();
+      cand_.pop_back();
+      if (it.f > best + kEps) break;
+      if (!lex_less(it.f, it.m, best, best_m)) continue;
+      if (!try_cycle(it.n)) {
+        complete = false;
+        break;
+      }
+      continue;
+    }
+    if (S.heap.empty()) break;
     const Item it = S.pop();
     const NodeId n = it.n;
     if (it.g != S.g[n] || it.m != S.m[n]) continue;  // stale
@@ -267,18 +334,26 @@ LassoResult LassoSearch::run(ProductGraph& g, const std::vector<NodeId>& starts,
     if (learn && g.solved(n)) continue;
     ++stats.expanded;
     if (g.accepting(n)) {
-      const Cost bound{best - S.g[n], best_m > S.m[n] ? best_m - S.m[n] : 0};
-      const Cost c = cycle(g, n, bound, cycle_h, limits, deadline_ns, stats, r);
-      if (r.hit_node_limit || r.hit_time_limit) {
+      if (!try_cycle(n)) {
         complete = false;
         break;
       }
-      if (c.c < kInf && lex_less(S.g[n] + c.c, S.m[n] + c.m, best, best_m)) {
-        best = S.g[n] + c.c;
-        best_m = S.m[n] + c.m;
-        best_node = n;
-        best_solved = false;
-        best_cycle = c;
+    } else if (on_acc_cycle_[g.ba_state(n)]) {
+      // A join candidate: its cycle costs at least what the table knows and
+      // at least the way to acceptance (h).
+      const ProductGraph::Cycle known = g.cycle(n);
+      if (known.exact) {
+        if (!try_cycle(n)) {  // no search: the table has it
+          complete = false;
+          break;
+        }
+      } else {
+        const double lb = std::max({known.lower, S.h[n], cycle_h ? cycle_h->cycle_bound(g, n) : 0.0});
+        const double key = S.g[n] + lb;
+        if (key < kInf) {
+          cand_.push_back({key, S.g[n], n, S.m[n]});
+          std::push_heap(cand_.begin(), cand_.end(), cand_less);
+        }
       }
     }
     if (!g.expanded(n)) {
@@ -330,7 +405,7 @@ LassoResult LassoSearch::run(ProductGraph& g, const std::vector<NodeId>& starts,
       best_cycle = {g.cycle(acc).lower, g.cycle(acc).moves};  // exact for a solved accepting node
       drop_loops(g, init, r.prefix_edges);
     }
-    r.accepting = acc;
+    r.cycle_start = acc;
     r.prefix_cost = 0;
     for (std::uint32_t e : r.prefix_edges) r.prefix_cost += g.edge(e).cost;
     if (learn && g.cycle(acc).exact && g.cycle_path(acc, r.cycle_edges)) {
