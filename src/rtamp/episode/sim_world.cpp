@@ -19,8 +19,16 @@ void SimWorld::advance(double dt) {
     travelled_ += (tool - last).norm();  // the tool path actually travelled
     last = tool;
     if (op.next_time() <= sim.time())
-      for (const sim::OperatorEvent& e : op.update())
+      for (const sim::OperatorEvent& e : op.update()) {
         events_.push_back(exec::WorldEvent{e.time, e.what, e.applied, e.detail});
+        // A person took the thing the arm carries (out of the gripper, or away).
+        using K = world::Intervention::Kind;
+        const bool carried = phase_ == Phase::Placing || phase_ == Phase::Recovering;
+        if (e.applied && carried &&
+            (e.what.kind == K::TakeFromGripper ||
+             ((e.what.kind == K::Relocate || e.what.kind == K::Remove) && e.what.subject == move_.thing)))
+          taken_ = true;
+      }
   }
 }
 
@@ -48,6 +56,7 @@ void SimWorld::end(exec::MoveStatus s, const std::string& why) {
 
 void SimWorld::start(const exec::Move& m) {
   move_ = m;
+  taken_ = false;
   status_ = exec::MoveStatus::Running;
   why_.clear();
   phase_ = Phase::Picking;
@@ -92,7 +101,8 @@ exec::MoveStatus SimWorld::poll(std::string* why) {
   if (phase_ == Phase::Picking || phase_ == Phase::Placing || phase_ == Phase::Recovering) {
     auto& controller = session_.controller();
     // Taken out of the gripper by a person while it was carried.
-    if ((phase_ == Phase::Placing || phase_ == Phase::Recovering) && !holds(move_.thing)) {
+    if (taken_) {
+      taken_ = false;
       controller.halt();
       if (session_.skills().start_retreat() && controller.status() == sim::Status::Running) returning_ = true;
       end(exec::MoveStatus::Failed, phase_ == Phase::Recovering ? failure_ : "taken from the gripper");

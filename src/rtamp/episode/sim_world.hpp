@@ -60,6 +60,7 @@ class SimWorld final : public exec::World {
   exec::MoveStatus status_ = exec::MoveStatus::Idle;
   std::string why_, failure_, hand_, placed_at_;
   bool returning_ = false;
+  bool taken_ = false;  // a person took the carried thing
   std::string back_thing_;
   double travelled_ = 0;
   std::vector<exec::WorldEvent> events_;

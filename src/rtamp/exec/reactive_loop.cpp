@@ -213,24 +213,24 @@ void ReactiveLoop::begin() {
   }
 
   // The first plan: the arm waits; its time is charged to world time.
-  prepare_planner();
-  const std::vector<std::uint32_t> states = planner_->automaton_states();
+  const Starts st = starts();
+  Outcome outcome;
   plan::PlanResult first;
   if (options_.planning == PlanningMode::Worker) {
     // On a worker thread like every replan: the C library sets up a thread's
     // memory arena on its first allocation, and later workers reuse it, so
     // that cost lands here and not in the first replan.
-    first = std::async(std::launch::async, [this] { return planner_->plan(); }).get();
+    first = std::async(std::launch::async, [&] { return plan_from(st, outcome); }).get();
     world_.advance(first.stats.seconds);
   } else {
-    first = planner_->plan();
+    first = plan_from(st, outcome);
   }
   metrics_.first_plan_seconds = first.stats.seconds;
   if (!first.found) {
     finish(EndReason::NoPlan, std::string("no plan: ") + first.message);
     return;
   }
-  install(first, true, states);
+  install(first, true, outcome.states);
 }
 
 // Observes the world: the symbolic state of the run (held things at their
@@ -411,13 +411,16 @@ void ReactiveLoop::advance() {
 // Failed and finished moves: feedback to the planner, giving up.
 void ReactiveLoop::after_moves() {
   if (runner_->failed > failures_seen_) {
-    consecutive_failures_ += runner_->failed - failures_seen_;
     failures_seen_ = runner_->failed;
-    // A move that failed with nobody disturbing it is fed back to the planner.
+    // A move that failed with nobody disturbing it is fed back to the planner
+    // and counts towards giving up; one a person spoiled does neither.
     const Move& m = runner_->last_failed;
-    if (!disturbed_ && symbolic_.things.count(m.thing) && is_location(scenario_, symbolic_, m.to)) {
-      wait_for_worker();
-      planner_->forbid_move(m.thing, m.to);
+    if (!disturbed_) {
+      ++consecutive_failures_;
+      if (symbolic_.things.count(m.thing) && is_location(scenario_, symbolic_, m.to)) {
+        wait_for_worker();
+        planner_->forbid_move(m.thing, m.to);
+      }
     }
     disturbed_ = false;
     if (consecutive_failures_ >= options_.max_consecutive_failures) {
@@ -435,63 +438,87 @@ void ReactiveLoop::after_moves() {
 
 // ---- planning -----------------------------------------------------------------
 
-// The planner's start: the current state and tracked automaton states, or —
-// while a move runs undisturbed — the state after that move.
-void ReactiveLoop::prepare_planner() {
-  if (planner_forbidden_dirty_) {
-    planner_->clear_forbidden_moves();
-    planner_forbidden_dirty_ = false;
-  }
-  world::Placement p = symbolic_;
-  std::string hand = world_.hand();
-  std::vector<std::uint32_t> states = progress_.states();
+// The planner's start: the current state, the hand and the tracked automaton
+// states — and, while a move runs undisturbed, the state after that move
+// (`ahead`, tried first: the move is not cut).
+ReactiveLoop::Starts ReactiveLoop::starts() {
+  Starts st;
+  st.now.placement = symbolic_;
+  st.now.hand = world_.hand();
+  st.now.states = progress_.states();
   const Move& cur = runner_->current();
   if (!cur.action.empty() && !runner_->waiting()) {
     const std::string* at = seen_.location_of(cur.thing);
     const bool on_track = at && (*at == kInHand || *at == cur.from);
-    if (on_track && p.things.count(cur.thing) && is_location(scenario_, p, cur.to) && cur.to != cur.thing) {
-      p.things.at(cur.thing).location = cur.to;
-      hand = cur.to;
-      if (p != symbolic_) {
+    if (on_track && symbolic_.things.count(cur.thing) && is_location(scenario_, symbolic_, cur.to) &&
+        cur.to != cur.thing) {
+      Start a = st.now;
+      a.placement.things.at(cur.thing).location = cur.to;
+      a.hand = cur.to;
+      if (a.placement != symbolic_) {
         plan::TaskProgress ahead = progress_;
         ahead.leave(letter(symbolic_));
-        ahead.at(letter(p));
-        states = ahead.states();
+        ahead.at(letter(a.placement));
+        a.states = ahead.states();
       }
+      st.ahead = std::move(a);
     }
   }
-  if (!is_location(scenario_, p, hand)) hand.clear();  // home, or a container that is gone
-  planner_->set_placement(std::move(p), hand);
-  planner_->set_automaton_states(states);
+  for (Start* s : {&st.now, st.ahead ? &*st.ahead : nullptr})
+    if (s && !is_location(scenario_, s->placement, s->hand)) s->hand.clear();  // home, or a container gone
+  return st;
 }
 
 void ReactiveLoop::request_plan(const std::string& why) {
   if (pending_ || ended()) return;
-  prepare_planner();
+  if (planner_forbidden_dirty_) {
+    planner_->clear_forbidden_moves();
+    planner_forbidden_dirty_ = false;
+  }
+  Starts st = starts();
   for (auto* o : observers_) o->on_replan_request(world_.time(), why);
   Pending p;
   p.requested_at = world_.time();
   p.wall_start = Clock::now();
-  p.states = planner_->automaton_states();
+  p.outcome = std::make_shared<Outcome>();
   if (options_.planning == PlanningMode::Worker) {
-    p.future = std::async(std::launch::async, [this] { return plan_with_fallback(); });
+    p.future = std::async(std::launch::async,
+                          [this, st = std::move(st), out = p.outcome] { return plan_from(st, *out); });
     pending_ = std::move(p);
   } else {
-    p.result = plan_with_fallback();
+    p.result = plan_from(st, *p.outcome);
     pending_ = std::move(p);
     collect_plan();  // synchronous: in use at once
   }
 }
 
-// A plan; if forbidden moves (failed earlier) leave none, the failed moves are tried again.
-plan::PlanResult ReactiveLoop::plan_with_fallback() {
-  plan::PlanResult r = planner_->plan();
-  if (!r.found && !planner_->forbidden_moves().empty()) {
-    planner_->clear_forbidden_moves();
-    plan::PlanResult again = planner_->plan();
-    again.stats.seconds += r.stats.seconds;
-    return again;
+// A plan from the state after the running move, else from the current state
+// (the running move then has to stop: it leads nowhere); if forbidden moves
+// (failed earlier) leave no plan, they are allowed again. Runs on the worker.
+plan::PlanResult ReactiveLoop::plan_from(const Starts& st, Outcome& out) {
+  double seconds = 0;
+  auto attempt = [&](const Start& s) {
+    planner_->set_placement(s.placement, s.hand);
+    planner_->set_automaton_states(s.states);
+    out.states = s.states;
+    plan::PlanResult r = planner_->plan();
+    if (!r.found && !planner_->forbidden_moves().empty()) {
+      seconds += r.stats.seconds;
+      planner_->clear_forbidden_moves();
+      r = planner_->plan();
+    }
+    seconds += r.stats.seconds;
+    return r;
+  };
+  plan::PlanResult r = st.ahead ? attempt(*st.ahead) : attempt(st.now);
+  if (!r.found && st.ahead) {
+    plan::PlanResult now = attempt(st.now);
+    if (now.found) {
+      out.stop_running_move = true;
+      r = std::move(now);
+    }
   }
+  r.stats.seconds = seconds;
   return r;
 }
 
@@ -501,7 +528,7 @@ bool ReactiveLoop::collect_plan() {
   const double charged = options_.planning == PlanningMode::Worker ? pending_->result->stats.seconds : 0.0;
   if (world_.time() < pending_->requested_at + charged) return false;
   plan::PlanResult r = std::move(*pending_->result);
-  const std::vector<std::uint32_t> states = std::move(pending_->states);
+  const Outcome outcome = *pending_->outcome;
   pending_.reset();
   ++metrics_.replans;
   metrics_.replan_seconds += r.stats.seconds;
@@ -510,7 +537,8 @@ bool ReactiveLoop::collect_plan() {
            std::string("no plan: ") + r.message);
     return true;
   }
-  install(r, false, states);
+  if (outcome.stop_running_move) tree_->tree().halt();  // the world puts its thing back
+  install(r, false, outcome.states);
   return true;
 }
 

@@ -114,12 +114,27 @@ class ReactiveLoop {
   const LoopOptions& options() const { return options_; }
 
  private:
+  // Where a plan starts: a symbolic state, the hand, automaton states.
+  struct Start {
+    world::Placement placement;
+    std::string hand;
+    std::vector<std::uint32_t> states;
+  };
+  struct Starts {
+    Start now;
+    std::optional<Start> ahead;  // after the running move
+  };
+  // What the worker tells besides the plan (read after its future is ready).
+  struct Outcome {
+    std::vector<std::uint32_t> states;  // the automaton states the plan started from
+    bool stop_running_move = false;     // planned from the current state: halt the running move
+  };
   struct Pending {
     std::future<plan::PlanResult> future;
     std::optional<plan::PlanResult> result;
     double requested_at = 0;
     std::chrono::steady_clock::time_point wall_start;
-    std::vector<std::uint32_t> states;
+    std::shared_ptr<Outcome> outcome;
   };
 
   void begin();
@@ -133,9 +148,9 @@ class ReactiveLoop {
                        const std::vector<std::string>& removed);
   void apply_thing_changes(const std::vector<std::string>& added, const std::vector<std::string>& removed);
   void after_moves();
-  void prepare_planner();  // planner state and automaton states for the next plan
+  Starts starts();
   void request_plan(const std::string& why);
-  plan::PlanResult plan_with_fallback();
+  plan::PlanResult plan_from(const Starts& st, Outcome& out);
   bool collect_plan();
   void install(plan::PlanResult& r, bool first, const std::vector<std::uint32_t>& states);
   void on_tree_done();
