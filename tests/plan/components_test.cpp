@@ -84,7 +84,7 @@ std::pair<world::Placement, std::string> place_randomly(std::mt19937& rng, plan:
 TEST(GuardHeuristic, AdmissibleAgainstBruteForce) {
   const auto formulas = robot_patterns();
   std::mt19937 rng(11);
-  int checked = 0, positive = 0;
+  int checked = 0, positive = 0, cycle_positive = 0;
   for (int trial = 0; trial < 120; ++trial) {
     const world::Scenario sc = random_scenario(rng, formulas);
     for (const char* model : {"euclid", "region", "unit"}) {
@@ -125,6 +125,27 @@ TEST(GuardHeuristic, AdmissibleAgainstBruteForce) {
           EXPECT_LE(w, to_acc + 1e-9) << sc.task << " q=" << q << " model " << model;
           ++checked;
         }
+        // cycle_bound <= the cheapest cycle through the start node that
+        // passes an accepting node (the cycle of a lasso joined there):
+        // min over accepting N of d(start, N) + d(N, start).
+        {
+          std::vector<std::size_t> acc;
+          for (std::size_t n = 0; n < prod.nodes.size(); ++n)
+            if (ba.is_accepting_state(prod.nodes[n].q) && d0[n] < INFINITY) acc.push_back(n);
+          std::sort(acc.begin(), acc.end(), [&](std::size_t a, std::size_t b) { return d0[a] < d0[b]; });
+          double u = INFINITY;
+          for (std::size_t n : acc) {
+            if (d0[n] >= u) break;
+            u = std::min(u, n == 0 ? d1[0] : d0[n] + prod.dijkstra(static_cast<int>(n), false)[0]);
+          }
+          const plan::NodeId node = g.find_or_add(p.system().canonical(s), q);
+          if (u < INFINITY && node != plan::kNoNode) {
+            const double cb = h.cycle_bound(g, node);
+            EXPECT_LE(cb, u + 1e-9) << sc.task << " q=" << q << " model " << model << " (cycle bound)";
+            ++checked;
+            cycle_positive += cb > 0;
+          }
+        }
         for (std::uint32_t t = 0; t < nq; ++t) {
           if (!g.useful(t) || to_q[t] == INFINITY) continue;
           const double w = h.walk(s, q, t);
@@ -137,6 +158,7 @@ TEST(GuardHeuristic, AdmissibleAgainstBruteForce) {
   }
   EXPECT_GT(checked, 1000);
   EXPECT_GT(positive, 100);  // the bounds are not trivially 0
+  EXPECT_GT(cycle_positive, 5);
 }
 
 }  // namespace

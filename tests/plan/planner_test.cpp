@@ -177,7 +177,7 @@ world::Scenario patrol_scenario(int regions, int objects) {
 // (29,639 expansions in that one search before; Dijkstra, without the bound,
 // still does). Since prefixes may join their cycle anywhere, every closed node
 // closer than the join point is a candidate with its own bounded cycle search
-// (about a hundred here, ~33k expansions in all), so the bound is on the
+// (about fifty here, ~18k expansions in all), so the bound is on the
 // start node's search alone and on A* staying well below Dijkstra.
 TEST(Planner, PatrolFromAnAcceptingStartDoesNotSearchTheWholeGraph) {
   const world::Scenario sc = patrol_scenario(16, 4);

@@ -58,12 +58,10 @@ ChainBound::ChainBound(const task::System& ts, const task::Labeling& lab, const 
   n_states_ = ba.num_states();
   kappa_.assign(n_states_, 0);
   if (ts.num_containers() > 0) return;  // a container move carries several things
-  struct Step {
-    std::uint32_t src, dst;
-    int forcing;  // index into cubes_, or -1
-  };
-  std::vector<Step> steps;
-  std::vector<std::vector<int>> forced;  // per forcing cube: location per thing, -1 free
+  ts_ = &ts;
+  model_ = &model;
+  std::vector<Step>& steps = steps_;
+  std::vector<std::vector<int>>& forced = forced_;
   for (std::uint32_t q = 0; q < n_states_; ++q) {
     if (!useful[q]) continue;
     for (const auto& e : ba.edges[q]) {
@@ -217,6 +215,54 @@ void ChainBound::dijkstra(std::uint32_t src, bool skip_src) {
     if (skip_src && u == src) continue;  // back at the source: the cycle is closed
     relax(u, dist_[u]);
   }
+}
+
+double ChainBound::cycle_bound_at(const task::State& s, std::uint32_t q) const {
+  if (!enabled_) return 0;
+  const unsigned things = ts_->num_things();
+  const std::uint32_t F = n_forcing_;
+  // D from s's locations to each forcing guard's and back.
+  std::vector<double> to(F, 0), back(F, 0);
+  for (std::uint32_t c = 0; c < F; ++c)
+    for (unsigned t = 0; t < things; ++t) {
+      const int b = forced_[c][t];
+      const auto a = static_cast<int>(ts_->location(s, t));
+      if (b < 0 || a == b) continue;
+      const auto pa = ts_->region_center(static_cast<unsigned>(a)), pb = ts_->region_center(static_cast<unsigned>(b));
+      to[c] += model_->carry_bound(pa, pb);
+      back[c] += model_->carry_bound(pb, pa);
+    }
+  // Dijkstra over (automaton state, last forcing guard or F = "s itself", accepting seen).
+  const std::uint32_t n = n_states_ * (F + 1) * 2;
+  auto id = [&](std::uint32_t qq, std::uint32_t l, std::uint32_t seen) { return (qq * (F + 1) + l) * 2 + seen; };
+  std::vector<double> dist(n, kInf);
+  std::vector<std::uint8_t> done(n, 0);
+  double best = kInf;
+  auto relax = [&](std::uint32_t qq, std::uint32_t l, std::uint32_t seen, double du) {
+    for (const Step& st : steps_) {
+      if (st.src != qq) continue;
+      const std::uint32_t seen2 = seen | (accepting_[st.dst] ? 1u : 0u);
+      std::uint32_t l2 = l;
+      double w = 0;
+      if (st.forcing >= 0) {
+        l2 = static_cast<std::uint32_t>(st.forcing);
+        w = l == F ? to[l2] : d_[std::size_t{l} * F + l2];
+      }
+      if (st.dst == q && seen2) best = std::min(best, du + w + (l2 == F ? 0.0 : back[l2]));
+      const std::uint32_t m = id(st.dst, l2, seen2);
+      if (du + w < dist[m]) dist[m] = du + w;
+    }
+  };
+  relax(q, F, accepting_[q] ? 1 : 0, 0);
+  for (;;) {
+    std::uint32_t u = n;
+    for (std::uint32_t v = 0; v < n; ++v)
+      if (!done[v] && dist[v] < best && (u == n || dist[v] < dist[u])) u = v;
+    if (u == n) break;
+    done[u] = 1;
+    relax(u / 2 / (F + 1), (u / 2) % (F + 1), u % 2, dist[u]);
+  }
+  return best == kInf ? 0.0 : best;  // kInf would mean no such cycle: leave that to the search
 }
 
 double ChainBound::bound(std::uint32_t q, const std::vector<double>& first) const {

@@ -58,6 +58,12 @@ class ChainBound {
   // No cycle of the product through an accepting node costs less (the least
   // kappa of an accepting state).
   double cycle_bound() const { return min_kappa_; }
+  // No cycle of the product through (s, q) that contains an accepting node
+  // costs less: the least D-sum around an automaton cycle through q and an
+  // accepting state, with s's own locations as a forcing point at both ends
+  // (every thing a guard on the way forces elsewhere leaves s's location and
+  // comes back to it). 0 when disabled.
+  double cycle_bound_at(const task::State& s, std::uint32_t q) const;
 
  private:
   struct Arc {
@@ -71,6 +77,14 @@ class ChainBound {
   // Dijkstra on G from `src` into dist_; with skip_src, paths of at least one arc.
   void dijkstra(std::uint32_t src, bool skip_src);
 
+  struct Step {
+    std::uint32_t src, dst;
+    int forcing;  // index into cubes_, or -1
+  };
+  const task::System* ts_ = nullptr;
+  const MotionCostModel* model_ = nullptr;
+  std::vector<Step> steps_;                // the useful automaton edges that can hold
+  std::vector<std::vector<int>> forced_;   // per forcing cube: location per thing, -1 free
   bool enabled_ = false;
   std::uint32_t n_states_ = 0, n_forcing_ = 0;
   std::vector<automata::Cube> cubes_;

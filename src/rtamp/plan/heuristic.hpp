@@ -74,8 +74,10 @@ class GuardHeuristic : public Heuristic {
   double walk_bound(const ProductGraph& g, NodeId n, std::uint32_t target) override {
     return walk(g.state(n), g.ba_state(n), target);
   }
-  // The chain bound's least kappa (0 without it).
-  double cycle_bound(const ProductGraph&, NodeId) override { return chain_ ? chain_->cycle_bound() : 0.0; }
+  // The chain bound's cycle bound at n (0 without it).
+  double cycle_bound(const ProductGraph& g, NodeId n) override {
+    return chain_ ? std::max(chain_->cycle_bound(), chain_->cycle_bound_at(g.state(n), g.ba_state(n))) : 0.0;
+  }
   // Every automaton walk q = q0 -> q1 -> ... -> qk = target (k >= 1, self-loops
   // included) reads each guard in some TS state on the way, so a path along it
   // costs at least the largest LB(s, guard); walk() is the smallest such
