@@ -276,12 +276,14 @@ void check_episode(std::uint64_t seed, bool verbose = false) {
   const auto& atoms = loop.planner().automaton().atoms;
   const auto& run = loop.observed_run();
   ASSERT_FALSE(run.empty());
-  EXPECT_EQ(run.back(), [&] {  // the run ends where the world is (held things at their source)
-    world::Placement p = w.truth();
-    for (auto& [name, thing] : p.things)
-      if (thing.location == kInHand) thing.location = run.back().things.at(name).location;
-    return p;
-  }()) << "the observed run does not end in the world's state";
+  // The run ends where the world is (held things at their source; a thing
+  // outside every location keeps its last location while the loop waits for it).
+  for (const auto& [name, thing] : w.truth().things) {
+    if (thing.location == kInHand || thing.location == "none") continue;
+    const std::string* in_run = run.back().location_of(name);
+    EXPECT_TRUE(in_run && *in_run == thing.location)
+        << name << " is in " << thing.location << " but the run ends with it in " << (in_run ? *in_run : "nothing");
+  }
 
   switch (m.end) {
     case EndReason::TaskDone:
@@ -355,11 +357,18 @@ TEST(ReactiveLoopPropertyOne, SeedFromTheEnvironment) {
 
 class ReactiveLoopProperty : public ::testing::TestWithParam<int> {};
 
-// 40 shards × 250 episodes = 10,000 random episodes.
+// 40 shards × 250 episodes = 10,000 random episodes (the Release suite); the
+// sanitizer build runs the first 25 of each shard (1,000), since it is ~10x slower.
+#if defined(__SANITIZE_ADDRESS__)
+constexpr int kEpisodesPerShard = 25;
+#else
+constexpr int kEpisodesPerShard = 250;
+#endif
+
 TEST_P(ReactiveLoopProperty, EveryEpisodeSucceedsCorrectlyOrEndsForAConfirmedReason) {
   const int shard = GetParam();
   g_unconfirmed = 0;
-  for (int i = 0; i < 250; ++i) {
+  for (int i = 0; i < kEpisodesPerShard; ++i) {
     check_episode(static_cast<std::uint64_t>(shard) * 250 + static_cast<std::uint64_t>(i) + 1);
     if (::testing::Test::HasFatalFailure()) return;
   }

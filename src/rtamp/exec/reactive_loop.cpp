@@ -554,6 +554,12 @@ void ReactiveLoop::install(plan::PlanResult& r, bool first, const std::vector<st
 
 // Every step of the tree is done: finished, a cycle completed, or replan.
 void ReactiveLoop::on_tree_done() {
+  // A thing outside every location is somewhere unknown: wait until it is
+  // seen again (a new step of the run) or is lost, before judging the task.
+  if (!outside_since_.empty()) {
+    tree_done_ = true;
+    return;
+  }
   if (progress_.satisfied_by_staying(run_letters_.back())) {
     finish(EndReason::TaskDone, "task done", true);
     return;
