@@ -122,6 +122,72 @@ bool LassoSearch::out_of_budget(const ProductGraph& g, const SearchLimits& limit
   return r.hit_time_limit;
 }
 
+int LassoSearch::on_accepting_cycle(ProductGraph& g, NodeId n, const SearchLimits& limits, std::int64_t deadline_ns,
+                                    SearchStats& stats, LassoResult& r) {
+  auto grow = [&] {
+    if (scc_stamp_.size() >= g.size()) return;
+    const std::size_t cap = std::max<std::size_t>(g.size(), 2 * scc_stamp_.size());
+    scc_index_.resize(cap);
+    scc_low_.resize(cap);
+    scc_state_.resize(cap);
+    scc_stamp_.resize(cap, 0);
+  };
+  grow();
+  if (scc_stamp_[n] == scc_gen_ && scc_state_[n] >= 2) return scc_state_[n] == 3;
+  auto open = [&](NodeId v) {
+    if (!g.expanded(v)) {
+      g.expand(v);
+      ++stats.successor_generations;
+      grow();
+    }
+    ++stats.expanded;
+    scc_stamp_[v] = scc_gen_;
+    scc_index_[v] = scc_low_[v] = scc_counter_++;
+    scc_state_[v] = 1;
+    scc_stack_.push_back(v);
+    scc_frames_.emplace_back(v, g.edge_begin(v));
+  };
+  scc_frames_.clear();
+  scc_stack_.clear();
+  open(n);
+  while (!scc_frames_.empty()) {
+    auto& [v, e] = scc_frames_.back();
+    if (e < g.edge_end(v)) {
+      const NodeId w = g.edge(e++).dst;
+      if (scc_stamp_[w] != scc_gen_) {
+        open(w);  // may grow scc_frames_: v, e are not used after this
+      } else if (scc_state_[w] == 1) {
+        scc_low_[v] = std::min(scc_low_[v], scc_index_[w]);
+      }
+      if (out_of_budget(g, limits, deadline_ns, stats, r)) {
+        for (NodeId x : scc_stack_) scc_stamp_[x] = scc_gen_ - 1;  // unfinished: forget them
+        return -1;
+      }
+      continue;
+    }
+    const NodeId root = v;
+    scc_frames_.pop_back();
+    if (!scc_frames_.empty()) {
+      const NodeId parent = scc_frames_.back().first;
+      scc_low_[parent] = std::min(scc_low_[parent], scc_low_[root]);
+    }
+    if (scc_low_[root] != scc_index_[root]) continue;
+    // root's SCC is the stack from root up.
+    const auto first = std::find(scc_stack_.rbegin(), scc_stack_.rend(), root).base() - 1;
+    bool acc = false, edge = scc_stack_.end() - first > 1;
+    for (auto it = first; it != scc_stack_.end(); ++it) acc = acc || g.accepting(*it);
+    if (!edge)
+      for (std::uint32_t x = g.edge_begin(root); x < g.edge_end(root) && !edge; ++x) edge = g.edge(x).dst == root;
+    const bool yes = acc && edge;
+    for (auto it = first; it != scc_stack_.end(); ++it) {
+      scc_state_[*it] = yes ? 3 : 2;
+      if (!yes) g.set_cycle(*it, {kInf, kManyMoves, false});
+    }
+    scc_stack_.erase(first, scc_stack_.end());
+  }
+  return scc_state_[n] == 3;
+}
+
 LassoSearch::Cost LassoSearch::cycle(ProductGraph& g, NodeId n, Cost bound, Heuristic* h,
                                      const SearchLimits& limits, std::int64_t deadline_ns, SearchStats& stats,
                                      LassoResult& r) {
@@ -206,6 +272,11 @@ LassoSearch::Cost LassoSearch::cycle(ProductGraph& g, NodeId n, Cost bound, Heur
     return best;
   }
   g.set_cycle(n, {bound.c, bound.m, false});  // bound is above `known` (checked on entry)
+  // No cycle at all through n (no incumbent bounded the search): n's SCC has
+  // none, and neither may many nodes reachable from it. Classify them all at
+  // once, so that they get no unbounded cycle search of their own (a query
+  // without a lasso would otherwise search the graph once per node).
+  if (bound.c >= kInf) (void)on_accepting_cycle(g, n, limits, deadline_ns, stats, r);
   return kNoCost;
 }
 
@@ -228,6 +299,10 @@ LassoResult LassoSearch::run(ProductGraph& g, const std::vector<NodeId>& starts,
   S.begin(g.size());
   cand_.clear();
   closed_list_.clear();
+  if (++scc_gen_ == 0) {  // wrapped: clear the stamps once
+    std::fill(scc_stamp_.begin(), scc_stamp_.end(), 0);
+    scc_gen_ = 1;
+  }
   // Automaton states that lie on a cycle through an accepting state: only
   // there can a lasso's cycle pass (its automaton projection is such a cycle).
   const automata::Automaton& ba = g.automaton();

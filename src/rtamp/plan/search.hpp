@@ -19,7 +19,11 @@
 //      state_distance_bound to J's state and Heuristic::walk_bound to J's
 //      automaton state (both bound every path back to J). U does not depend
 //      on the start, so it is kept in the graph (exact, or "none below b")
-//      and reused by later queries. An accepting node gets its search when it
+//      and reused by later queries. When such a search is unbounded (no
+//      incumbent yet) and finds nothing, the SCCs reachable from J are
+//      classified at once (on_accepting_cycle): nodes whose SCC has no
+//      accepting cycle get "none" in the table and no search of their own.
+//      An accepting node gets its search when it
 //      is popped. A non-accepting node whose automaton state lies on an
 //      automaton cycle through an accepting state is a join candidate: it
 //      waits in a second heap under the key g + a lower bound on U (the
@@ -164,6 +168,16 @@ class LassoSearch {
   // walk bounds back to n's automaton state.
   Cost cycle(ProductGraph& g, NodeId n, Cost bound, Heuristic* h, const SearchLimits& limits,
              std::int64_t deadline_ns, SearchStats& stats, LassoResult& r);
+  // Whether n lies on any cycle through an accepting node: Tarjan's SCCs over
+  // the nodes reachable from n (expanding them); n's SCC must hold an
+  // accepting node and an edge. Every node of a finished SCC without one gets
+  // "none below (inf, max moves)" in the cycle table (none exists). Called by
+  // cycle() after an unbounded search (no incumbent) found nothing, so that a
+  // query without a lasso does not run one whole-graph cycle search per
+  // accepting node and join candidate. Nodes classified by an earlier call of
+  // the same query are not visited again (their SCCs are complete). -1: out of budget.
+  int on_accepting_cycle(ProductGraph& g, NodeId n, const SearchLimits& limits, std::int64_t deadline_ns,
+                         SearchStats& stats, LassoResult& r);
   void drop_loops(const ProductGraph& g, NodeId from, std::vector<std::uint32_t>& edges);
   // Node and time limits; reports progress. Checks the clock every 128 calls.
   bool out_of_budget(const ProductGraph& g, const SearchLimits& limits, std::int64_t deadline_ns,
@@ -176,6 +190,14 @@ class LassoSearch {
   std::vector<bool> on_acc_cycle_;     // per automaton state
   const automata::Automaton* acc_cycle_of_ = nullptr;
   std::vector<std::uint32_t> cycle_path_;
+  // on_accepting_cycle: per-node DFS index and lowlink (valid where scc_stamp_
+  // == scc_gen_), SCC state (0 open, 1 on the stack, 2 no accepting cycle, 3
+  // on one), the DFS frames (node, next edge) and the SCC stack.
+  std::vector<std::uint32_t> scc_index_, scc_low_, scc_stamp_;
+  std::vector<std::uint8_t> scc_state_;
+  std::vector<std::pair<NodeId, std::uint32_t>> scc_frames_;
+  std::vector<NodeId> scc_stack_;
+  std::uint32_t scc_gen_ = 0, scc_counter_ = 0;
   std::vector<NodeId> path_nodes_;
   std::uint64_t ticks_ = 0;
   std::int64_t start_ns_ = 0, next_progress_ns_ = 0;

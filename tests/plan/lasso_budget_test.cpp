@@ -1,0 +1,102 @@
+// Work bounds of the lasso search on queries that once ran into the time
+// limit (counted in expansions and cycle searches, never in time).
+//
+// Queries without any lasso (a failed move is forbidden and the task cannot
+// be done without it): before the SCC classification in
+// LassoSearch::on_accepting_cycle every accepting node and every join
+// candidate got an unbounded cycle search of its own (no incumbent bounds
+// it), each over the whole graph: quadratic in the graph. Now the first
+// failed unbounded cycle search classifies every node reachable from it, so
+// the work is a few passes over the graph. The forbidden move rebuilds the
+// TS and the product graph, so the queries are cold (no experience from the
+// episode's earlier ones matters).
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "rtamp/plan/planner.hpp"
+#include "rtamp/world/scenario_io.hpp"
+
+namespace {
+
+using namespace rtamp;
+
+// `rtamp gen --layout line` with 5 regions of the given capacities, trays t1
+// in r5 and x1 (if `x1`) in r4, then `objects` (YAML lines) and the task
+// 'G F p0 & G F p1'.
+world::Scenario line5(const int caps[5], bool x1, const std::string& objects, const std::string& p0,
+                      const std::string& p1) {
+  std::string y = "name: line5\nrobot: {model: ur5, base: [0, 0, 0], yaw: 0}\nregions:\n";
+  for (int i = 0; i < 5; ++i)
+    y += "  - {name: r" + std::to_string(i + 1) + ", center: [0.5, " + std::to_string(-1 + 0.5 * i) +
+         ", 0], size: [0.442, 0.442], capacity: " + std::to_string(caps[i]) + "}\n";
+  y += "containers:\n  - {name: t1, class: tray, position: [0.5, 1, 0], size: [0.24, 0.16, 0.03], capacity: 4}\n";
+  if (x1) y += "  - {name: x1, class: tray, position: [0.5, 0.5, 0], size: [0.24, 0.16, 0.03], capacity: 4}\n";
+  y += "objects:\n" + objects + "propositions:\n  p0: \"" + p0 + "\"\n  p1: \"" + p1 + "\"\ntask: \"G F p0 & G F p1\"\n";
+  return world::parse_scenario(y, "line5");
+}
+
+std::string block(const std::string& name, const std::string& cls, double x, double y) {
+  return "  - {name: " + name + ", class: " + cls + ", position: [" + std::to_string(x) + ", " + std::to_string(y) +
+         ", 0], size: [0.04, 0.04, 0.04]}\n";
+}
+
+// Plans from automaton state 1 with move(thing, to) forbidden: no plan, and
+// a few passes over the graph at most.
+void expect_no_plan_cheaply(plan::Planner& p, const world::Placement& pl, const std::string& thing,
+                            const std::string& to) {
+  p.set_placement(pl, "");
+  p.set_automaton_states({1});
+  p.forbid_move(thing, to);
+  const auto r = p.plan();
+  EXPECT_FALSE(r.found);
+  EXPECT_NE(r.reason, plan::NoPlanReason::TimeLimit) << r.message;
+  EXPECT_NE(r.reason, plan::NoPlanReason::NodeLimit) << r.message;
+  EXPECT_LE(r.stats.cycle_searches, 4u);
+  EXPECT_LE(r.stats.expanded, 5 * r.stats.graph_nodes) << "graph nodes " << r.stats.graph_nodes;
+}
+
+plan::PlannerOptions no_time_limit() {
+  plan::PlannerOptions o;
+  o.limits.time_limit = 0;
+  return o;
+}
+
+// The reactive-loop property test's seed 158 at t = 9.25 s: move(o2, r3)
+// failed and is forbidden; p1 = "o2 in r3" cannot hold again. Was 5.8M
+// expansions and 2727 cycle searches on a 2727-node graph (7.5 s).
+TEST(LassoBudget, Seed158ForbiddenMove) {
+  const int caps[5] = {3, 1, 3, 3, 3};
+  plan::Planner p(line5(caps, false,
+                        block("o1", "block", 0.47, -1) + block("o2", "block", 0.53, -1) +
+                            block("x1", "block", 0.5, 0.5),
+                        "count block in r4 >= 2", "o2 in r3"),
+                  no_time_limit());
+  world::Placement pl;
+  pl.set("o1", "r1", "block");
+  pl.set("o2", "r1", "block");
+  pl.set("x1", "r4", "block");
+  pl.set("t1", "r5", "tray", true);
+  expect_no_plan_cheaply(p, pl, "o2", "r3");
+  EXPECT_LE(p.plan().stats.expanded, 20'000u);
+}
+
+// Seed 234 at t = 16.06 s: move(o2, r4) failed and is forbidden; p0 = p1 =
+// "all block in r4" cannot hold again. A 136k-node graph: hit the time limit.
+TEST(LassoBudget, Seed234ForbiddenMove) {
+  const int caps[5] = {6, 6, 6, 6, 6};
+  plan::Planner p(line5(caps, true,
+                        block("o1", "red", 0.44, -1.03) + block("o2", "block", 0.5, -1.03) +
+                            block("o3", "red", 0.56, -1.03) + block("o4", "red", 0.44, -0.97) +
+                            block("o5", "red", 0.5, -0.97),
+                        "all block in r4", "all block in r4"),
+                  no_time_limit());
+  world::Placement pl;
+  for (const char* x : {"o1", "o3", "o4", "o5"}) pl.set(x, "r1", "red");
+  pl.set("o2", "r1", "block");
+  pl.set("t1", "r5", "tray", true);
+  pl.set("x1", "r4", "tray", true);
+  expect_no_plan_cheaply(p, pl, "o2", "r4");
+}
+
+}  // namespace
