@@ -109,7 +109,7 @@ Case random_case(std::uint64_t seed) {
   k.world.random_end = rate > 0 ? std::min(40.0, 8 / rate) : 0;  // about 8 interventions at most: worlds stay small
   k.world.failure_probability = rng() % 4 == 0 ? 0.15 : 0;
   k.loop.planning = PlanningMode::Inline;
-  k.loop.planner.limits.time_limit = 5;  // a search that runs out is a reason nobody can confirm (counted below)
+  k.loop.planner.limits.time_limit = 2;  // a search that runs out is a reason nobody can confirm (counted below)
   k.loop.max_time = k.recurring ? 400 : 300;
   k.loop.cycles = k.recurring ? 2 : 0;
   k.loop.conditions = rng() % 2 ? ConditionMode::Action : ConditionMode::State;
@@ -372,8 +372,10 @@ TEST_P(ReactiveLoopProperty, EveryEpisodeSucceedsCorrectlyOrEndsForAConfirmedRea
     check_episode(static_cast<std::uint64_t>(shard) * 250 + static_cast<std::uint64_t>(i) + 1);
     if (::testing::Test::HasFatalFailure()) return;
   }
-  // A failure the brute force could not decide (product too big) is rare.
-  EXPECT_LE(g_unconfirmed, 2);
+  // A failure nobody could decide — the planner's search ran out of time, or the
+  // brute force's product was too big — is rare (at most 2 % of the episodes).
+  EXPECT_LE(g_unconfirmed, kEpisodesPerShard / 50 + 1);
+  if (g_unconfirmed > 0) std::cout << "unconfirmed failures in this shard: " << g_unconfirmed << '\n';
 }
 
 INSTANTIATE_TEST_SUITE_P(Shards, ReactiveLoopProperty, ::testing::Range(0, 40));
