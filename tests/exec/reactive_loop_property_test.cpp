@@ -110,7 +110,7 @@ Case random_case(std::uint64_t seed) {
   k.world.failure_probability = rng() % 4 == 0 ? 0.15 : 0;
   k.loop.planning = PlanningMode::Inline;
   k.loop.planner.limits.time_limit = 2;  // a search that runs out is a reason nobody can confirm (counted below)
-  k.loop.max_time = k.recurring ? 400 : 300;
+  k.loop.max_time = k.recurring ? 900 : 300;  // two cycles of five blocks with failures can take minutes
   k.loop.cycles = k.recurring ? 2 : 0;
   k.loop.conditions = rng() % 2 ? ConditionMode::Action : ConditionMode::State;
   k.loop.reconfiguration = rng() % 4 == 0 ? Reconfiguration::Offline : Reconfiguration::Online;
