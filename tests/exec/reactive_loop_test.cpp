@@ -214,6 +214,22 @@ TEST(ReactiveLoop, StopEndsTheEpisodeWithCompleteMetrics) {
   EXPECT_EQ(end.ends, 1);
 }
 
+// A thing put outside every location, then taken away, is forgotten: the
+// episode does not wait for it (it used to wait until the time limit).
+TEST(ReactiveLoop, AThingOutsideThatIsRemovedIsForgotten) {
+  const world::Scenario s = scene("F G all_in_r2", 3);
+  SymbolicWorldOptions wo;
+  world::Intervention out = intervention(world::Intervention::Kind::Relocate, 1.0, "o3");
+  out.position = world::Vec3{1.5, 1.5, 0};  // on the table, outside every region
+  wo.script = {out, intervention(world::Intervention::Kind::Remove, 2.0, "o3")};
+  SymbolicWorld w(s, wo);
+  ReactiveLoop loop(w, s, inline_options());
+  const EpisodeMetrics& m = loop.run();
+  EXPECT_TRUE(m.success) << m.reason;
+  EXPECT_EQ(m.interventions_applied, 2);
+  EXPECT_LT(m.world_time, 100);
+}
+
 TEST(ReactiveLoop, RefusedInterventionsAreCountedAsRefused) {
   const world::Scenario s = scene("F G all_in_r2", 2);
   SymbolicWorldOptions wo;

@@ -276,6 +276,8 @@ void ReactiveLoop::observe_world(world::Placement& symbolic, std::vector<std::st
   }
   for (const auto& [name, thing] : planner_->placement().things)
     if (!symbolic.things.count(name)) removed.push_back(name);
+  // A thing that is gone is no longer outside anywhere.
+  std::erase_if(outside_since_, [&](const auto& e) { return !seen.things.count(e.first); });
   seen_ = std::move(seen);
   tree_->placement() = std::move(for_tree);
   if (!lost.empty())
