@@ -1,9 +1,9 @@
 #include "rtamp/exec/tree_dump.hpp"
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
-#include <regex>
 
 #include "rtamp/bt/xml_export.hpp"
 #include "rtamp/util/error.hpp"
@@ -15,9 +15,12 @@ TreeDump::TreeDump(std::string dir) : dir_(std::move(dir)) {
   std::error_code ec;
   fs::create_directories(dir_, ec);
   if (ec || !fs::is_directory(dir_)) throw Error("cannot create the tree directory '" + dir_ + "'");
-  const std::regex ours(R"(tree_\d+\.xml)");
+  auto ours = [](const std::string& n) {  // tree_<digits>.xml
+    if (n.size() < 10 || n.rfind("tree_", 0) != 0 || n.substr(n.size() - 4) != ".xml") return false;
+    return std::all_of(n.begin() + 5, n.end() - 4, [](char c) { return c >= '0' && c <= '9'; });
+  };
   for (const auto& e : fs::directory_iterator(dir_, ec))
-    if (e.is_regular_file() && std::regex_match(e.path().filename().string(), ours)) fs::remove(e.path(), ec);
+    if (e.is_regular_file() && ours(e.path().filename().string())) fs::remove(e.path(), ec);
   const fs::path probe = fs::path(dir_) / ".rtamp-write-test";
   if (!std::ofstream(probe)) throw Error("cannot write into the tree directory '" + dir_ + "'");
   fs::remove(probe, ec);
