@@ -95,8 +95,8 @@ TEST(ReactiveLoop, TaskWithHistoryFinishes) {
   EXPECT_EQ(w.truth().things.at("o1").location, "r1");
 }
 
-// After the red block reached r3 a person disturbs another block: the loop
-// must not bring red back to r3 (the visit already happened).
+// After the red block has been in r3 a person puts it back into r1: the loop
+// must take it to r2, not to r3 again (the visit already happened).
 TEST(ReactiveLoop, FinishedWorkIsNotRedoneAfterAnIntervention) {
   world::Scenario s = scene("F (red_in_r3 & F G all_in_r2)", 3);
   SymbolicWorld probe(s);
