@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "probes.hpp"
+#include "sample_trees.hpp"
 #include "rtamp/bt/bt.hpp"
 
 namespace rtamp::bt {
@@ -18,6 +19,7 @@ namespace {
 using testing::make;
 using testing::Probe;
 using testing::probe_action;
+using testing::every_node_type;
 
 // ---- a tiny XML reader: elements, attributes, text, comments, <?xml?> ----
 struct Element {
@@ -152,43 +154,6 @@ class XmlReader {
   std::size_t i_ = 0;
 };
 
-// A tree using every node type, with names that need escaping.
-std::unique_ptr<Node> every_node_type(Probe& p) {
-  auto root = std::make_unique<ReactiveSequence>("root <&> \"quoted\"");
-  auto chooser = std::make_unique<Chooser>("o1: r1 -> r2");
-  auto post = std::make_unique<Sequence>("post");
-  auto at = std::make_unique<Condition>(
-      "o1 in r2", [] { return false; }, "ObjectAt");
-  at->set_port("object", "o1", "the object");
-  at->set_port("region", "r2");
-  post->add(std::move(at));
-  auto pre = std::make_unique<Sequence>("pre+act");
-  auto at2 = std::make_unique<Condition>(
-      "o1 in r1", [] { return true; }, "ObjectAt");
-  at2->set_port("object", "o1");
-  at2->set_port("region", "r1");
-  at2->set_port("tolerance", "0.01");  // a port only this instance has
-  pre->add(std::move(at2));
-  auto move = probe_action("move o1", p, "MoveObject");
-  move->set_port("object", "o1");
-  move->set_port("from", "r1");
-  move->set_port("to", "r2");
-  auto update = std::make_unique<StateUpdate>(
-      "update", [](Node&) {}, std::move(move));
-  update->set_port("effect", "o1@r2");
-  pre->add(std::make_unique<Timeout>("limit", std::chrono::milliseconds(1500),
-                                     std::make_unique<Retry>("again", 3, std::move(update))));
-  chooser->add(std::move(post));
-  chooser->add(std::move(pre));
-  root->add(std::move(chooser));
-  auto par = std::make_unique<Parallel>("watch", 2, -1);
-  par->add(std::make_unique<Inverter>(probe_action("i", p)));
-  par->add(make<Fallback>("fb", probe_action("x", p)));
-  par->add(std::make_unique<ReactiveFallback>("empty rf"));
-  root->add(std::move(par));
-  root->add(std::make_unique<Sequence>("empty seq"));
-  return root;
-}
 
 const std::set<std::string> kBuiltins = {
     "Sequence", "ReactiveSequence",     "Fallback", "ReactiveFallback", "Parallel",
@@ -204,9 +169,7 @@ void check_element(const Element& e, const Node& n, const std::map<std::string, 
   SCOPED_TRACE(n.name());
   EXPECT_EQ(e.tag, n.type_id());
   ASSERT_NE(e.attr("name"), nullptr);
-  EXPECT_EQ(*e.attr("name"), n.name());
-  ASSERT_NE(e.attr("_uid"), nullptr);
-  EXPECT_EQ(*e.attr("_uid"), std::to_string(n.id()));
+  EXPECT_EQ(*e.attr("name"), n.name() + " #" + std::to_string(n.id())) << "unique names keep our ids";
   std::set<std::string> allowed;
   if (kBuiltins.count(e.tag) != 0) {
     EXPECT_EQ(model.count(e.tag), 0u) << "built-ins are not redeclared";
@@ -222,7 +185,7 @@ void check_element(const Element& e, const Node& n, const std::map<std::string, 
     }
   }
   for (const auto& [k, v] : e.attrs) {
-    if (k == "name" || k == "_uid") continue;
+    if (k == "name") continue;
     EXPECT_EQ(allowed.count(k), 1u) << "attribute " << k << " of <" << e.tag << "> is not a declared port";
   }
   for (const Port& p : n.user_ports()) {
@@ -295,12 +258,12 @@ TEST(XmlExport, OptionsEmptyTreeAndErrors) {
   tree.set_root(make<Sequence>("s", probe_action("a", p)));
   XmlOptions opt;
   opt.tree_id = "Plan";
-  opt.include_uids = false;
+  opt.unique_names = false;
   opt.include_model = false;
   Element r2 = XmlReader(to_btcpp_xml(tree, opt)).parse();
   EXPECT_EQ(*r2.attr("main_tree_to_execute"), "Plan");
   EXPECT_EQ(r2.children.size(), 1u);
-  EXPECT_EQ(r2.children[0].children[0].attr("_uid"), nullptr);
+  EXPECT_EQ(*r2.children[0].children[0].attr("name"), "s");
   opt.tree_id = "root";
   EXPECT_THROW(to_btcpp_xml(tree, opt), rtamp::Error);
   // One type ID for two kinds of node.

@@ -134,7 +134,13 @@ TEST(Composites, EmptyOutcomes) {
   EXPECT_EQ(tick_empty(std::make_unique<Fallback>()), Status::Failure);
   EXPECT_EQ(tick_empty(std::make_unique<ReactiveFallback>()), Status::Failure);
   EXPECT_EQ(tick_empty(std::make_unique<Chooser>()), Status::Failure);
-  EXPECT_EQ(tick_empty(std::make_unique<Parallel>()), Status::Success);
+  // An empty Parallel succeeds whatever its thresholds (issue 12: (1, 1) used to fail).
+  for (int sc = -3; sc <= 3; ++sc) {
+    for (int fc = -3; fc <= 3; ++fc) {
+      EXPECT_EQ(tick_empty(std::make_unique<Parallel>("par", sc, fc)), Status::Success) << sc << " " << fc;
+    }
+  }
+  EXPECT_EQ(tick_empty(Parallel::success_on_one()), Status::Success);
   Tree empty;
   EXPECT_EQ(empty.tick(), Status::Invalid);
 }
@@ -354,7 +360,7 @@ TEST(CustomNode, DerivedControlTicksAndExports) {
   tree.halt();
   EXPECT_EQ(a.halts, 1);
   const std::string xml = to_btcpp_xml(tree);
-  EXPECT_NE(xml.find("<FirstOnly name=\"first only\""), std::string::npos) << xml;
+  EXPECT_NE(xml.find("<FirstOnly name=\"first only #1\""), std::string::npos) << xml;
   EXPECT_NE(xml.find("<Control ID=\"FirstOnly\"/>"), std::string::npos) << xml;
 }
 

@@ -45,7 +45,9 @@ namespace {
 
 struct ModelEntry {
   NodeKind kind;
-  std::vector<Port> ports;  // union over instances, first-seen order
+  std::vector<Port> ports;        // union over instances, first-seen order
+  std::vector<int> port_uses;     // instances that carry ports[i]
+  int instances = 0;
 };
 
 std::string_view placeholder_for(const Node& node) {
@@ -65,9 +67,11 @@ class XmlWriter : public Visitor {
       throw rtamp::Error("cannot export behavior tree: decorator '" + node.name() + "' has no child");
     }
     if (!node.btcpp_builtin()) record_model(node);
+    ++preorder_;
     indent(depth);
-    out_ << '<' << node.type_id() << " name=\"" << xml_escape(node.name()) << '"';
-    if (opt_.include_uids && node.id() != kNoId) out_ << " _uid=\"" << node.id() << '"';
+    out_ << '<' << node.type_id() << " name=\"" << xml_escape(node.name());
+    if (opt_.unique_names) out_ << " #" << (node.id() != kNoId ? node.id() : preorder_);
+    out_ << '"';
     ports_.clear();
     node.collect_ports(ports_);
     for (const Port& p : ports_) out_ << ' ' << p.name << "=\"" << xml_escape(p.value) << '"';
@@ -79,7 +83,7 @@ class XmlWriter : public Visitor {
     out_ << ">\n";
     if (node.child_count() == 0) {
       indent(depth + 1);
-      out_ << '<' << placeholder_for(node) << " name=\"(empty)\"/>\n";
+      out_ << '<' << placeholder_for(node) << "/>\n";  // no name: BehaviorTree.CPP makes its path unique
     }
     return true;
   }
@@ -106,10 +110,16 @@ class XmlWriter : public Visitor {
                          std::string(to_string(it->second.kind)) + " and " +
                          std::string(to_string(node.kind())) + " nodes");
     }
+    ModelEntry& e = it->second;
+    ++e.instances;
     for (const Port& p : node.user_ports()) {
-      bool known = false;
-      for (const Port& q : it->second.ports) known = known || q.name == p.name;
-      if (!known) it->second.ports.push_back(Port{p.name, {}, p.description});
+      std::size_t i = 0;
+      while (i < e.ports.size() && e.ports[i].name != p.name) ++i;
+      if (i == e.ports.size()) {
+        e.ports.push_back(Port{p.name, {}, p.description});
+        e.port_uses.push_back(0);
+      }
+      ++e.port_uses[i];
     }
   }
 
@@ -118,6 +128,7 @@ class XmlWriter : public Visitor {
   std::map<std::string, ModelEntry, std::less<>>& model_;
   std::vector<std::string>& model_order_;
   std::vector<Port> ports_;
+  NodeId preorder_ = 0;  // stands in for the id of a detached node
 };
 
 std::string export_xml(const Node* root, const XmlOptions& opt) {
@@ -129,6 +140,7 @@ std::string export_xml(const Node* root, const XmlOptions& opt) {
   std::map<std::string, ModelEntry, std::less<>> model;
   std::vector<std::string> order;
   out << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n";
+  if (opt.unique_names) out << "<!-- " << kUniqueNamesMarker << " -->\n";
   out << "<root BTCPP_format=\"4\" main_tree_to_execute=\"" << xml_escape(opt.tree_id) << "\">\n";
   out << "  <BehaviorTree ID=\"" << xml_escape(opt.tree_id) << "\">\n";
   if (root != nullptr) {
@@ -148,8 +160,11 @@ std::string export_xml(const Node* root, const XmlOptions& opt) {
         continue;
       }
       out << ">\n";
-      for (const Port& p : e.ports) {
+      for (std::size_t i = 0; i < e.ports.size(); ++i) {
+        const Port& p = e.ports[i];
         out << "      <input_port name=\"" << p.name << "\" type=\"std::string\"";
+        // A port some instance lacks gets a default, so the instance passes the schema.
+        if (e.port_uses[i] < e.instances) out << " default=\"\"";
         if (p.description.empty()) {
           out << "/>\n";
         } else {

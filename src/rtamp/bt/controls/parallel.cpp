@@ -9,8 +9,9 @@ std::size_t Parallel::resolve(int threshold) const {
 }
 
 Status Parallel::on_tick() {
-  if (status() != Status::Running) reset_from(0);
   const std::size_t n = children_.size();
+  if (n == 0) return Status::Success;  // whatever the thresholds (a positive S would make it fail)
+  if (status() != Status::Running) reset_from(0);
   std::size_t s = 0;
   std::size_t f = 0;
   for (std::size_t i = 0; i < n; ++i) {

@@ -13,7 +13,7 @@
 // still RUNNING are halted. py_trees policies map to: SuccessOnAll = (S=-1, F=1),
 // SuccessOnOne = (S=1, F=1). Difference from BehaviorTree.CPP: it stops ticking
 // children as soon as a threshold is met within the loop; we tick every pending
-// child first. Empty: SUCCESS (S resolves to 0).
+// child first. Empty: SUCCESS, whatever the thresholds.
 #pragma once
 
 #include <string>
