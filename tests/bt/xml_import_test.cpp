@@ -6,7 +6,9 @@
 // tree, and bad files fail with file:line:column.
 #include <gtest/gtest.h>
 
+#include <fstream>
 #include <functional>
+#include <sstream>
 #include <random>
 #include <string>
 #include <vector>
@@ -225,6 +227,22 @@ TEST(XmlImport, TreesAfterChangesRoundTripUpToTheirIds) {
   EXPECT_EQ(to_btcpp_xml(b, plain), to_btcpp_xml(a, plain));
 }
 
+TEST(XmlImport, NamesAndPortValuesSurviveEscaping) {
+  const std::string awkward = "a\tb\nc\r d <&> \"q\" 'x' \xC3\xBC #12 ";
+  Tree t;
+  auto c = std::make_unique<Condition>(awkward, [] { return true; }, "Cond");
+  c->set_port("value", awkward);
+  auto root = std::make_unique<Sequence>("ctl\x01");
+  root->add(std::move(c));
+  t.set_root(std::move(root));
+  Log log;
+  const std::string xml = to_btcpp_xml(t);
+  auto back = from_btcpp_xml(xml, scripted_registry(log));
+  EXPECT_EQ(back->name(), "ctl\xEF\xBF\xBD") << "a control character XML cannot hold becomes U+FFFD";
+  EXPECT_EQ(back->child(0).name(), awkward) << "only the last ' #<id>' is the export's";
+  EXPECT_EQ(*back->child(0).port("value"), awkward);
+}
+
 TEST(XmlImport, EmptyTreeAndDetachedSubtrees) {
   Tree empty;
   EXPECT_EQ(from_btcpp_xml(to_btcpp_xml(empty), NodeRegistry{}), nullptr);
@@ -252,50 +270,13 @@ std::string signature(const Node& n) {
   return s;
 }
 
-constexpr const char* kGroot2File = R"(<?xml version="1.0" encoding="UTF-8"?>
-<root BTCPP_format="4" main_tree_to_execute="Main">
-  <!-- drawn in Groot2 -->
-  <BehaviorTree ID="Main" _fullpath="">
-    <Sequence>
-      <Condition ID="IsDoorOpen" name="door open?" door="front"/>
-      <Parallel success_count="1">
-        <Action ID="MoveTo" goal="kitchen"/>
-        <Timeout msec="2500">
-          <Wait/>
-        </Timeout>
-      </Parallel>
-      <SubTree ID="Grasp" _autoremap="false"/>
-      <Control ID="ReactiveFallback" name="guard">
-        <Inverter><IsDoorOpen door="back"/></Inverter>
-        <RetryUntilSuccessful num_attempts="-1" _uid="9">
-          <MoveTo goal="hall"/>
-        </RetryUntilSuccessful>
-      </Control>
-    </Sequence>
-  </BehaviorTree>
-  <BehaviorTree ID="Grasp">
-    <Chooser name="pick">
-      <StateUpdate effect="held">
-        <MoveTo goal="shelf"/>
-      </StateUpdate>
-    </Chooser>
-  </BehaviorTree>
-  <TreeNodesModel>
-    <Condition ID="IsDoorOpen">
-      <input_port name="door" type="std::string">which door</input_port>
-      <description>Is the door open?</description>
-    </Condition>
-    <Action ID="MoveTo">
-      <input_port name="goal" type="std::string"/>
-      <output_port name="reached" type="bool"/>
-    </Action>
-    <Action ID="Wait"/>
-    <Control ID="Chooser"/>
-    <Decorator ID="StateUpdate"><input_port name="effect"/></Decorator>
-    <SubTree ID="Grasp"/>
-  </TreeNodesModel>
-</root>
-)";
+// A file as Groot2 writes it, plus the explicit form, a SubTree and defaults.
+std::string groot2_file() {
+  std::ifstream in(RTAMP_SOURCE_DIR "/tests/bt/data/groot2_door.xml");
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
 
 TEST(XmlImport, Groot2StyleFileWithExplicitFormSubTreesAndDefaults) {
   NodeRegistry r;
@@ -311,7 +292,9 @@ TEST(XmlImport, Groot2StyleFileWithExplicitFormSubTreesAndDefaults) {
                                            {},
                                            {}});
   r.add_action("Wait", Action::Callbacks{[](Node&) { return Status::Running; }, {}, {}});
-  auto root = from_btcpp_xml(kGroot2File, r, {"groot.xml", {}});
+  const std::string file = groot2_file();
+  ASSERT_FALSE(file.empty());
+  auto root = from_btcpp_xml(file, r, {"groot.xml", {}});
   ASSERT_NE(root, nullptr);
   EXPECT_EQ(signature(*root),
             "Sequence(Sequence)[IsDoorOpen(door open? door=front),"
@@ -330,7 +313,7 @@ TEST(XmlImport, Groot2StyleFileWithExplicitFormSubTreesAndDefaults) {
       << "the Inverter succeeds when the back door is closed, so the retry is not reached";
   // A tree picked by ID.
   XmlImportOptions grasp{"groot.xml", "Grasp"};
-  EXPECT_EQ(signature(*from_btcpp_xml(kGroot2File, r, grasp)),
+  EXPECT_EQ(signature(*from_btcpp_xml(file, r, grasp)),
             "Chooser(pick)[StateUpdate(StateUpdate effect=held)[MoveTo(MoveTo goal=shelf)]]");
 }
 

@@ -29,10 +29,12 @@ std::string xml_escape(std::string_view text) {
         out += "&apos;";
         break;
       default:
-        if (static_cast<unsigned char>(c) < 0x20) {
+        if (c == '\t' || c == '\n' || c == '\r') {
           char buf[8];
           std::snprintf(buf, sizeof buf, "&#%d;", static_cast<int>(c));
-          out += buf;
+          out += buf;  // kept through attribute-value normalisation
+        } else if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f) {
+          out += "\xEF\xBF\xBD";  // U+FFFD: XML 1.0 has no other control characters
         } else {
           out += c;
         }

@@ -1,5 +1,5 @@
 // rtamp::bt::to_btcpp_xml — export a tree as BehaviorTree.CPP v4 XML
-// (DESIGN.md: "Trees export to BehaviorTree.CPP's XML (v4) so Groot2 opens them").
+// (docs/design.md: "Trees export to BehaviorTree.CPP's XML (v4) so Groot2 opens them").
 //
 // Mapping (see docs/behavior-trees.md):
 //   Sequence → <Sequence>, ReactiveSequence → <ReactiveSequence>,
@@ -47,7 +47,8 @@ std::string to_btcpp_xml(const Tree& tree, const XmlOptions& options = {});
 // A detached subtree (ids are 0 until attached: unique names use pre-order numbers).
 std::string to_btcpp_xml(const Node& root, const XmlOptions& options = {});
 
-// XML attribute/text escaping (& < > " ' and control characters).
+// XML attribute/text escaping (& < > " '; tab, newline and CR as character
+// references; other control characters, which XML 1.0 cannot hold, as U+FFFD).
 std::string xml_escape(std::string_view text);
 
 }  // namespace rtamp::bt

@@ -87,7 +87,7 @@ struct ModelInfo {
 class Importer {
  public:
   Importer(const XmlDocument& doc, const NodeRegistry& registry, const XmlImportOptions& opt)
-      : doc_(doc), registry_(registry), file_(opt.file) {
+      : registry_(registry), file_(opt.file) {
     for (const std::string& c : doc.leading_comments) {
       if (c.find(kUniqueNamesMarker) != std::string::npos) strip_ = true;
     }
@@ -353,7 +353,6 @@ class Importer {
     return tree(*id, *it->second);
   }
 
-  const XmlDocument& doc_;
   const NodeRegistry& registry_;
   std::string file_;
   bool strip_ = false;
