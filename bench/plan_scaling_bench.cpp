@@ -1,5 +1,5 @@
 // How the cost of a cold plan grows with the number of objects and of
-// regions, for four kinds of task (DESIGN.md "Benchmarks"; the figure and
+// regions, for four kinds of task (docs/design.md "Benchmarks"; the figure and
 // table are in docs/benchmarks.md, "Scaling").
 //
 //   BM_PlanScaling/<task>/<M>/<n>   a cold A* plan (partial construction,

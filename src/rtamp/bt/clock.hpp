@@ -1,6 +1,6 @@
 // rtamp::bt::Clock — the time source of a tree (used by Timeout, and by user
 // actions through Node::now()). Injectable because the executor runs in
-// simulated time (DESIGN.md "Time"): the exec layer implements Clock over the
+// simulated time (docs/design.md "Time"): the exec layer implements Clock over the
 // simulation clock; tests use ManualClock. Invariant: now() is monotonic.
 #pragma once
 

@@ -1,7 +1,7 @@
 // Plans and planning results: value types that cross into the bt / exec
-// layers (DESIGN.md "Types that cross layers").
+// layers (docs/design.md "Types that cross layers").
 //
-// A Plan is a lasso over the product automaton (DESIGN.md "Plans are
+// A Plan is a lasso over the product automaton (docs/design.md "Plans are
 // lassos"): `prefix` leads from a start product node (the current state and
 // one of the planner's automaton states) to a node J, `cycle` (non-empty)
 // leads from J back to J and passes an accepting node (J itself need not be

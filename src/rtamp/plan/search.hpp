@@ -1,5 +1,5 @@
 // Search strategies over the product graph and the lasso search (paper
-// Section III.B: graph search with motion costs; DESIGN.md "Plans are lassos").
+// Section III.B: graph search with motion costs; docs/design.md "Plans are lassos").
 //
 // A lasso plan is a path (the prefix) from one of the start nodes to a node
 // J plus a cycle (>= 1 edge) from J back to J that passes an accepting node:

@@ -1,6 +1,6 @@
 // The collision-checking interface the skills plan against. The robot layer never
 // calls MuJoCo: the sim layer implements this with MuJoCo's collision detection on
-// a scratch copy of the world (DESIGN.md, "Collision-aware motion"); tests use
+// a scratch copy of the world (docs/design.md, "Collision-aware motion"); tests use
 // synthetic checkers. Segments are checked by dense sampling.
 // Invariant: config_collides is a pure function of q for the checker's lifetime
 // (the world it checks against does not change while a plan is being made).

@@ -1,6 +1,6 @@
 // Joint vectors of a 6-axis arm, joint limits, angle wrapping and the weighted
 // joint distance used to pick "the solution nearest the current configuration"
-// (DESIGN.md robot layer; the paper's skill library moves a UR5 in joint space).
+// (docs/design.md robot layer; the paper's skill library moves a UR5 in joint space).
 //
 // Invariants: a JointLimits has lower[j] <= upper[j] for every joint; wrap_joint
 // returns an angle equivalent (mod 2π) to its input and inside [lower, upper]

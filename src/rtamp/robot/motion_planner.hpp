@@ -1,6 +1,6 @@
 // Collision-free joint-space motion between two configurations: the straight
 // joint segment when it is free, otherwise a detour planned with OMPL's
-// RRTConnect (DESIGN.md robot layer; issue "plan around with OMPL") followed by
+// RRTConnect (docs/design.md robot layer; issue "plan around with OMPL") followed by
 // shortcut simplification.
 //
 // Determinism: the same inputs and seed give the same path. OMPL's own random

@@ -1,5 +1,5 @@
 // MJCF generation: the MuJoCo world of a scenario, built as XML text at run time
-// (DESIGN.md "Simulation"; the paper's Gazebo scene of Section V, rebuilt for MuJoCo).
+// (docs/design.md "Simulation"; the paper's Gazebo scene of Section V, rebuilt for MuJoCo).
 //
 // What the model holds, in this order (the order is part of the contract with
 // simulation.hpp: the arm's 6 hinge joints are joints 0..5 = dofs 0..5, the two

@@ -1,4 +1,4 @@
-// Offscreen pictures of the simulation (DESIGN.md "Headless by default; pictures and
+// Offscreen pictures of the simulation (docs/design.md "Headless by default; pictures and
 // videos through offscreen rendering"): EGL on Mesa's surfaceless platform (no display,
 // no X server), MuJoCo's renderer into its offscreen buffer, PNG through libpng, MP4
 // through a pipe to Debian's ffmpeg. Nothing here runs unless a Renderer is created, so

@@ -1,4 +1,4 @@
-// The running MuJoCo world of a scenario (DESIGN.md "Simulation"): loads the MJCF of
+// The running MuJoCo world of a scenario (docs/design.md "Simulation"): loads the MJCF of
 // mjcf_builder.hpp from memory, steps the physics with exact gravity compensation of
 // the arm, grasps with weld equalities, and lets the operator teleport, hide and show
 // bodies. The paper's execution layer runs on top of this (Section IV-C, Fig. 2's

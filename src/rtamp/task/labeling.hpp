@@ -1,6 +1,6 @@
 // The labeling function L : S -> 2^Π of the paper's Definition 1, compiled
 // from the scenario's proposition expressions (world::PropExpr) into a fast
-// evaluator over packed states (DESIGN.md "Propositions are defined over the
+// evaluator over packed states (docs/design.md "Propositions are defined over the
 // world").
 //
 // Each automaton atom is resolved to a proposition of the scenario by name

@@ -1,4 +1,4 @@
-// The symbolic state of the transition system (paper Definition 1, DESIGN.md
+// The symbolic state of the transition system (paper Definition 1, docs/design.md
 // "Symbolic state") and its actions, as small packed value types.
 //
 // A State assigns every movable thing (object or container) a location (a

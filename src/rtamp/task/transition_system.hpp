@@ -1,5 +1,5 @@
 // The transition system TS = (S, s0, A, δ_t, Π, L) of the paper's Definition 1,
-// for one set of regions, containers and objects (DESIGN.md "Symbolic state",
+// for one set of regions, containers and objects (docs/design.md "Symbolic state",
 // "Containers are objects and locations at once").
 //
 // Indexing (fixed for the lifetime of a System; names are the stable identity

@@ -1,5 +1,5 @@
 // Proposition expressions over the world: parser, printer and the reference
-// evaluator (DESIGN.md "Propositions are defined over the world"; the atomic
+// evaluator (docs/design.md "Propositions are defined over the world"; the atomic
 // propositions Π and labelling L(s) of the paper's Section II).
 //
 // Grammar (documented with PropExpr in scenario.hpp; `&&`, `||` are accepted

@@ -1,5 +1,5 @@
 // The scenario: everything rtamp knows about a workspace before it runs
-// (DESIGN.md "Files users touch"; paper Section II: regions R, objects O, the
+// (docs/design.md "Files users touch"; paper Section II: regions R, objects O, the
 // LTL task φ, and Section V's scripted interventions).
 //
 // Plain value types, loaded from YAML by scenario_io.hpp and written back by it.
@@ -58,7 +58,7 @@ struct Robot {
   double yaw = 0;  // rotation about z, radians
 };
 
-// Proposition expressions, defined over the world (DESIGN.md "Propositions are
+// Proposition expressions, defined over the world (docs/design.md "Propositions are
 // defined over the world"). Grammar (propositions.hpp parses it):
 //   expr   := term ('|' term)*          term := factor ('&' factor)*
 //   factor := '!' factor | '(' expr ')' | atom

@@ -1,4 +1,4 @@
-// Reading and writing scenarios as YAML (DESIGN.md "Files users touch"; the
+// Reading and writing scenarios as YAML (docs/design.md "Files users touch"; the
 // format is documented with a complete example in docs/scenario.md).
 //
 // parse_scenario() is strict: unknown keys (typos), wrong types, missing
