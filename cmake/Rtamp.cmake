@@ -1,7 +1,13 @@
 # Helpers shared by every layer's CMakeLists.txt.
 # GCC 12 reports a false -Wrestrict in std::string concatenation at -O2 (GCC bug 105329): disabled for GCC.
 #   rtamp_add_layer(NAME SOURCES ... [DEPS ...] [SYSTEM_DEPS ...])
-#     -> static library rtamp_<NAME>, alias rtamp::<NAME>, headers included as "rtamp/<NAME>/x.hpp"
+#     -> static library rtamp_<NAME> (-fPIC), alias rtamp::<NAME>, headers included as
+#        "rtamp/<NAME>/x.hpp"; installed and exported as rtamp::<NAME> (cmake/RtampInstall.cmake):
+#        the layers in RTAMP_MUJOCO_LAYERS go to the "mujoco" component, the others to the core.
+#        Wrap build-only header libraries in $<BUILD_INTERFACE:...> in SYSTEM_DEPS so that
+#        users of the installed package need not have them (e.g. nlohmann_json).
+#   rtamp_options: the project's warning (and sanitizer) flags, linked PRIVATE by every
+#     project target and never passed on to users of the libraries.
 #   rtamp_add_test(NAME SOURCES ... DEPS ... [LABELS ...] [TIMEOUT s])
 #     -> GoogleTest executable registered with ctest (one ctest entry per TEST)
 
@@ -24,12 +30,30 @@ if(RTAMP_FUZZ)
   target_link_options(rtamp_options INTERFACE -fsanitize=address,undefined)
 endif()
 
+include(GNUInstallDirs)
+include(rtampDependencies)
+# The layers that link MuJoCo (directly or through sim): the "mujoco" component.
+set(RTAMP_MUJOCO_LAYERS sim episode exp)
+
 function(rtamp_add_layer name)
   cmake_parse_arguments(L "" "" "SOURCES;DEPS;SYSTEM_DEPS" ${ARGN})
   add_library(rtamp_${name} STATIC ${L_SOURCES})
   add_library(rtamp::${name} ALIAS rtamp_${name})
-  target_link_libraries(rtamp_${name} PUBLIC rtamp_options ${L_DEPS} ${L_SYSTEM_DEPS})
-  set_target_properties(rtamp_${name} PROPERTIES POSITION_INDEPENDENT_CODE ON)
+  # Warnings are private; for a static library CMake still passes the link options
+  # (the sanitizers) on to in-tree users as $<LINK_ONLY:...>, which is what they need.
+  target_link_libraries(rtamp_${name} PUBLIC ${L_DEPS} ${L_SYSTEM_DEPS} PRIVATE $<BUILD_INTERFACE:rtamp_options>)
+  target_include_directories(rtamp_${name} PUBLIC $<BUILD_INTERFACE:${PROJECT_SOURCE_DIR}/src>
+                                                  $<INSTALL_INTERFACE:${CMAKE_INSTALL_INCLUDEDIR}>)
+  target_compile_features(rtamp_${name} PUBLIC cxx_std_20)
+  set_target_properties(rtamp_${name} PROPERTIES POSITION_INDEPENDENT_CODE ON EXPORT_NAME ${name})
+  if(name IN_LIST RTAMP_MUJOCO_LAYERS)
+    set(export rtampMujocoTargets)
+    set_property(GLOBAL APPEND PROPERTY RTAMP_MUJOCO_TARGETS rtamp_${name})
+  else()
+    set(export rtampTargets)
+    set_property(GLOBAL APPEND PROPERTY RTAMP_CORE_TARGETS rtamp_${name})
+  endif()
+  install(TARGETS rtamp_${name} EXPORT ${export} ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR} COMPONENT dev)
 endfunction()
 
 function(rtamp_add_test name)

@@ -4,6 +4,8 @@
 #include <memory>
 
 #include "command.hpp"
+#include "rtamp/robot/ompl_logging.hpp"
+#include "rtamp/sim/mujoco_logging.hpp"
 #include "rtamp/util/error.hpp"
 
 namespace rtamp::cli {
@@ -15,6 +17,10 @@ std::vector<Command>& commands() {
 
 int main(int argc, char** argv) {
   using namespace rtamp::cli;
+  // The library changes no process-wide state on its own; the CLI keeps MuJoCo's
+  // warnings in mjData's counters only and OMPL to errors (docs/library.md).
+  rtamp::sim::install_mujoco_log_handler();
+  rtamp::robot::quiet_ompl_logging();
   CLI::App app{
       "rtamp — reactive task and motion planning under linear temporal logic.\n"
       "Run 'rtamp COMMAND --help' for the options of a command."};

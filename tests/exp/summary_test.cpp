@@ -4,6 +4,7 @@
 #include "rtamp/exp/summary.hpp"
 
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include <cmath>
 #include <sstream>
@@ -144,7 +145,7 @@ TEST(Summary, MarkdownTable) {
 }
 
 TEST(Summary, JsonAndTsv) {
-  const nlohmann::json j = to_json(summarize(table_one()));
+  const nlohmann::json j = nlohmann::json::parse(to_json(summarize(table_one())));
   EXPECT_EQ(j["episodes"], 12);
   ASSERT_EQ(j["rows"].size(), 3u);
   EXPECT_EQ(j["rows"][0]["algorithm"], "astar-exp");
@@ -152,7 +153,7 @@ TEST(Summary, JsonAndTsv) {
   EXPECT_DOUBLE_EQ(j["rows"][0]["completion_s"]["mean"].get<double>(), 402);
   EXPECT_EQ(j["rows"][0]["completion_s"]["n"], 3);
   // A single successful episode: CI is null in JSON.
-  const nlohmann::json one = to_json(summarize({rec("none", "astar", "offline", 1, 10)}));
+  const nlohmann::json one = nlohmann::json::parse(to_json(summarize({rec("none", "astar", "offline", 1, 10)})));
   EXPECT_TRUE(one["rows"][0]["completion_s"]["ci95"].is_null());
 
   const std::string tsv = format_tsv(summarize(table_one()));

@@ -7,6 +7,8 @@
 #include <set>
 #include <sstream>
 
+#include <nlohmann/json.hpp>
+
 #include "rtamp/util/error.hpp"
 
 namespace rtamp::exp {
@@ -272,7 +274,7 @@ std::string format_markdown(const Summary& s) {
   return o.str();
 }
 
-nlohmann::json to_json(const Summary& s) {
+std::string to_json(const Summary& s, int indent) {
   nlohmann::json rows = nlohmann::json::array();
   for (const auto& r : s.rows) {
     rows.push_back({{"scenario", r.scenario},
@@ -289,11 +291,12 @@ nlohmann::json to_json(const Summary& s) {
                     {"motion_cost", stats_json(r.motion_cost)},
                     {"wall_s", stats_json(r.wall_s)}});
   }
-  return {{"episodes", s.episodes},
-          {"episode_wall_s", s.wall_s},
-          {"confidence", "95% Student t interval of the mean (ci95 = half-width)"},
-          {"completion_over", "successful episodes"},
-          {"rows", rows}};
+  const nlohmann::json j = {{"episodes", s.episodes},
+                            {"episode_wall_s", s.wall_s},
+                            {"confidence", "95% Student t interval of the mean (ci95 = half-width)"},
+                            {"completion_over", "successful episodes"},
+                            {"rows", rows}};
+  return j.dump(indent);
 }
 
 std::string format_tsv(const Summary& s) {

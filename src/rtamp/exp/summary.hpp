@@ -20,8 +20,6 @@
 #include <string_view>
 #include <vector>
 
-#include <nlohmann/json.hpp>
-
 #include "rtamp/exp/record.hpp"
 #include "rtamp/exp/statistics.hpp"
 
@@ -58,7 +56,8 @@ std::string mean_median(const Stats& s);
 
 std::string format_text(const Summary& s);
 std::string format_markdown(const Summary& s);
-nlohmann::json to_json(const Summary& s);
+// JSON text (nlohmann::json::dump(indent): -1 compact, >= 0 pretty with that indent).
+std::string to_json(const Summary& s, int indent = -1);
 std::string format_tsv(const Summary& s);
 
 }  // namespace rtamp::exp

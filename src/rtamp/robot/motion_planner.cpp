@@ -2,7 +2,6 @@
 
 #include <chrono>
 #include <memory>
-#include <mutex>
 #include <ompl/base/PlannerTerminationCondition.h>
 #include <ompl/base/ProblemDefinition.h>
 #include <ompl/base/SpaceInformation.h>
@@ -11,7 +10,6 @@
 #include <ompl/datastructures/NearestNeighborsLinear.h>
 #include <ompl/geometric/PathGeometric.h>
 #include <ompl/geometric/planners/rrt/RRTConnect.h>
-#include <ompl/util/Console.h>
 #include <random>
 
 namespace rtamp::robot {
@@ -128,8 +126,6 @@ JointPathResult plan_joint_path(const Joints& from, const Joints& to, CollisionC
     r.why = "goal configuration collides";
     return r;
   }
-  static std::once_flag quiet;
-  std::call_once(quiet, [] { ompl::msg::setLogLevel(ompl::msg::LOG_ERROR); });
 
   r.planned = true;
   std::mt19937_64 rng(options.seed);
