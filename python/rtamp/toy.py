@@ -1,0 +1,126 @@
+"""ToyWorld: a World written in pure Python (the pattern for plugging in your own robot).
+
+It keeps an exact symbolic placement, runs each move as a fixed-duration
+discrete event (so the reactive loop jumps from event to event instead of
+ticking), and applies a scripted person: (time, thing, location) relocations.
+A real robot's World would read perception in observe() and drive the arm in
+start()/poll()/halt(); everything else stays the same.
+
+    world = rtamp.toy.ToyWorld(scenario, move_time=2.0, script=[(5.0, "o2", "r1")])
+    metrics = rtamp.ReactiveLoop(world, scenario, planning="inline").run()
+
+Invariants: at most one move runs; a thing is in exactly one place (a region,
+a container, or "hand" while held); a move whose thing a person moved away
+fails ("thing moved"); a halted move puts its thing back at once.
+"""
+
+import math
+
+import rtamp
+
+
+class ToyWorld(rtamp.World):
+    """A discrete-event symbolic world in pure Python (see the module docstring)."""
+
+    def __init__(self, scenario, move_time=2.0, script=(), fails=None):
+        super().__init__(scenario)
+        self.t = 0.0
+        self.move_time = float(move_time)
+        self.script = sorted(script)      # [(time, thing, location)]
+        self.fails = fails                # callable(move) -> bool, or None
+        self.place = rtamp.initial_placement(scenario).locations()
+        self.move = None                  # the running move
+        self.end = math.inf               # when it ends
+        self.status = rtamp.MoveStatus.IDLE
+        self.why = ""
+        self.last_hand = ""
+        self.events = []
+        self.calls = 0                    # callbacks from C++ (for tests)
+
+    # --- rtamp.World
+    def time(self):
+        return self.t
+
+    def next_event_time(self):
+        nxt = self.end
+        if self.script:
+            nxt = min(nxt, self.script[0][0])
+        return nxt
+
+    def advance(self, dt):
+        self.calls += 1
+        target = self.t + dt
+        while True:
+            due = self.next_event_time()
+            if due > target + 1e-9:
+                break
+            self.t = max(self.t, due)
+            if self.move is not None and self.end <= self.t + 1e-9:
+                self._finish()
+            elif self.script and self.script[0][0] <= self.t + 1e-9:
+                _, thing, loc = self.script.pop(0)
+                self._relocate(thing, loc)
+        self.t = target
+
+    def observe(self):
+        self.calls += 1
+        return self.place
+
+    def start(self, move):
+        self.calls += 1
+        if self.place.get(move.thing) is None:
+            self.status, self.why = rtamp.MoveStatus.FAILED, "unknown thing"
+            return
+        self.move = move
+        self.source = self.place[move.thing]
+        self.place = dict(self.place)
+        self.place[move.thing] = "hand"
+        self.end = self.t + self.move_time
+        self.status = rtamp.MoveStatus.RUNNING
+
+    def poll(self):
+        self.calls += 1
+        return self.status, self.why
+
+    def halt(self):
+        self.calls += 1
+        if self.move is not None:
+            self.place = dict(self.place)
+            self.place[self.move.thing] = self.source
+            self.move, self.end = None, math.inf
+            self.status, self.why = rtamp.MoveStatus.FAILED, "halted"
+
+    def busy(self):
+        return False
+
+    def hand(self):
+        return self.last_hand
+
+    def take_events(self):
+        out, self.events = self.events, []
+        return out
+
+    # --- the toy's own model
+    def _finish(self):
+        m = self.move
+        self.move, self.end = None, math.inf
+        self.place = dict(self.place)
+        if self.fails is not None and self.fails(m):
+            self.place[m.thing] = self.source
+            self.status, self.why = rtamp.MoveStatus.FAILED, "grasp slipped"
+            return
+        self.place[m.thing] = m.to
+        self.last_hand = m.to
+        self.status, self.why = rtamp.MoveStatus.SUCCEEDED, ""
+
+    def _relocate(self, thing, loc):
+        iv = rtamp.Intervention("relocate", thing, loc, time=self.t)
+        if thing not in self.place:
+            self.events.append(rtamp.WorldEvent(self.t, iv, False, "no such thing"))
+            return
+        self.place = dict(self.place)
+        if self.move is not None and self.move.thing == thing:
+            self.move, self.end = None, math.inf
+            self.status, self.why = rtamp.MoveStatus.FAILED, "thing taken"
+        self.place[thing] = loc
+        self.events.append(rtamp.WorldEvent(self.t, iv, True, loc))

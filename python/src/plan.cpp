@@ -1,0 +1,386 @@
+// Python bindings of the planning facade (paper Sections II-III.C, Algorithm 1
+// lines 9-14): Planner(scenario, algorithm=..., cost=...), plan(), replanning
+// after a change of the world, plans (prefix, cycle, cost, statistics, action
+// tuples), and motion-cost models written in Python (CostModel, a trampoline
+// over plan::MotionCostModel). plan() runs without the GIL; a Python cost
+// model takes it for each call, from whatever thread the planner runs on (the
+// reactive loop's worker thread, too).
+#include "plan.hpp"
+
+#include "choices.hpp"
+
+#include "loop.hpp"
+#include "plan_view.hpp"
+#include "rtamp/ltl/printer.hpp"
+#include "rtamp/robot/ik_motion_cost.hpp"
+
+namespace rtamp::python {
+
+using plan::MotionCostModel;
+using plan::MotionQuery;
+
+namespace {
+
+// The Python override of `name`, or null; takes the GIL the caller must hold.
+py::function override_of(const MotionCostModel* self, const char* name) {
+  return py::get_override(self, name);
+}
+
+// The trampoline: a MotionCostModel whose methods are a Python subclass's.
+// Only cost() is required; the others have safe defaults (lower bound 0,
+// depends on every query field, expensive: the planner caches its costs, no
+// carry bound).
+class PyCostModel : public MotionCostModel {
+ public:
+  using MotionCostModel::cost;
+  std::string name() const override {
+    py::gil_scoped_acquire gil;
+    if (py::function f = override_of(this, "name")) return f().cast<std::string>();
+    const MotionCostModel* base = this;
+    py::handle self = py::detail::get_object_handle(base, py::detail::get_type_info(typeid(MotionCostModel)));
+    return self ? py::str(self.get_type().attr("__name__")).cast<std::string>() : std::string("python");
+  }
+  double cost(const MotionQuery& q) const override {
+    py::gil_scoped_acquire gil;
+    if (py::function f = override_of(this, "cost")) return f(q).cast<double>();
+    throw Error("a CostModel subclass must define cost(query)");
+  }
+  double lower_bound(const MotionQuery& q, bool to_anywhere) const override {
+    py::gil_scoped_acquire gil;
+    if (py::function f = override_of(this, "lower_bound")) return f(q, to_anywhere).cast<double>();
+    return 0.0;
+  }
+  unsigned depends() const override {
+    py::gil_scoped_acquire gil;
+    if (py::function f = override_of(this, "depends")) return f().cast<unsigned>();
+    return plan::kDependsAll;
+  }
+  bool expensive() const override {
+    py::gil_scoped_acquire gil;
+    if (py::function f = override_of(this, "expensive")) return f().cast<bool>();
+    return true;
+  }
+  double carry_bound(const world::Vec3& from, const world::Vec3& to) const override {
+    py::gil_scoped_acquire gil;
+    if (py::function f = override_of(this, "carry_bound")) return f(from, to).cast<double>();
+    return 0.0;
+  }
+};
+
+std::string join(const std::vector<std::string>& v) {
+  std::string s;
+  for (const auto& x : v) s += (s.empty() ? "" : " ") + x;
+  return s;
+}
+
+}  // namespace
+
+std::shared_ptr<MotionCostModel> builtin_cost_model(const std::string& name, const world::Scenario& scenario) {
+  if (name == "ik") return std::make_shared<robot::IkMotionCost>(robot::IkMotionCost::params_for(scenario));
+  if (name == "euclid") return std::make_shared<plan::EuclidCost>();
+  if (name == "region") return std::make_shared<plan::RegionCost>();
+  if (name == "unit") return std::make_shared<plan::UnitCost>();
+  throw Error("unknown motion-cost model '" + name + "' (expected one of: euclid, region, unit, ik, or a CostModel)");
+}
+
+PlannerConfig planner_config(const world::Scenario& scenario, const std::string& algorithm, const py::object& cost,
+                             const std::string& graph, bool symmetry, bool diagnose_capacity, double time_limit,
+                             std::size_t max_nodes) {
+  plan::PlannerOptions o;
+  o.algorithm = parse_choice(kAlgorithms, algorithm, "algorithm");
+  o.graph = parse_choice(kGraphs, graph, "graph construction");
+  o.symmetry = symmetry;
+  o.diagnose_capacity = diagnose_capacity;
+  o.limits.time_limit = time_limit;
+  o.limits.max_nodes = max_nodes;
+  if (py::isinstance<py::str>(cost)) {
+    const std::string name = cost.cast<std::string>();
+    o.model = builtin_cost_model(name, scenario);
+    o.cost = name;
+    return PlannerConfig{std::move(o), PyRef()};
+  }
+  o.model = cost.cast<std::shared_ptr<MotionCostModel>>();
+  o.cost = o.model->name();
+  return PlannerConfig{std::move(o), PyRef(cost)};
+}
+
+PlanView make_view(plan::Planner& planner, const plan::PlanResult& r) {
+  PlanView v;
+  v.found = r.found;
+  v.reason = r.found ? "none" : plan::to_string(r.reason);
+  v.message = r.message;
+  v.prefix_cost = r.plan.prefix_cost;
+  v.cycle_cost = r.plan.cycle_cost;
+  v.stats = r.stats;
+  v.automaton_states = planner.automaton_states();
+  if (!r.found) return v;
+  const task::System& ts = planner.system();
+  const auto& atoms = planner.automaton().atoms;
+  auto steps = [&](const std::vector<plan::Step>& in, std::vector<StepView>& out) {
+    for (const plan::Step& s : in) {
+      StepView sv;
+      sv.action = ts.action_name(s.action);
+      if (!s.action.is_stay()) {
+        sv.thing = ts.thing_name(s.action.thing);
+        sv.to = ts.location_name(s.action.to);
+      }
+      sv.from_state = ts.to_string(s.from);
+      sv.to_state = ts.to_string(s.to);
+      sv.ba_from = s.ba_from;
+      sv.ba_to = s.ba_to;
+      sv.cost = s.cost;
+      for (std::size_t i = 0; i < atoms.size(); ++i)
+        if (s.label >> i & 1) sv.label.push_back(atoms[i]);
+      sv.packed = s.action.packed();
+      out.push_back(std::move(sv));
+    }
+  };
+  steps(r.plan.prefix, v.prefix);
+  steps(r.plan.cycle, v.cycle);
+  v.actions = planner.action_tuples(r.plan);
+  return v;
+}
+
+PyPlanner::PyPlanner(world::Scenario scenario, PlannerConfig config) : model_ref_(std::move(config.model_ref)) {
+  py::gil_scoped_release release;
+  planner_ = std::make_unique<plan::Planner>(std::move(scenario), std::move(config.options));
+}
+
+PyPlanner::~PyPlanner() = default;
+
+PlanView PyPlanner::plan() {
+  py::gil_scoped_release release;
+  std::lock_guard<std::mutex> lock(mutex_);
+  plan::PlanResult r = planner_->plan();
+  return make_view(*planner_, r);
+}
+
+void bind_plan(py::module_& m) {
+  py::class_<MotionQuery>(m, "MotionQuery",
+                          "What a motion cost may depend on: the moved thing (stable id, container or not),\n"
+                          "the hand's point before the move, the thing's point and the destination's point\n"
+                          "([x, y, z] metres; points are location centres).")
+      .def(py::init<>())
+      .def_readwrite("thing", &MotionQuery::thing, "Stable id of the moved thing.")
+      .def_readwrite("container", &MotionQuery::container, "The moved thing is a container.")
+      .def_readwrite("hand", &MotionQuery::hand, "The hand's point before the move.")
+      .def_readwrite("from_", &MotionQuery::from, "The thing's point.")
+      .def_readwrite("to", &MotionQuery::to, "The destination's point.");
+
+  py::class_<MotionCostModel, PyCostModel, std::shared_ptr<MotionCostModel>>(
+      m, "CostModel",
+      "A motion-cost model (the edge weight w of the paper's Section III.B). Subclass it in Python:\n\n"
+      "    class Manhattan(rtamp.CostModel):\n"
+      "        def cost(self, q):            # required: >= 0\n"
+      "            return sum(abs(a - b) for a, b in zip(q.from_, q.to))\n"
+      "        def lower_bound(self, q, to_anywhere):  # optional, default 0 (always admissible)\n"
+      "            return 0.0\n"
+      "        def depends(self):            # optional: DEPENDS_* bits the cost reads (default all)\n"
+      "            return rtamp.DEPENDS_FROM | rtamp.DEPENDS_TO\n"
+      "        def expensive(self):          # optional: cache the costs (default True)\n"
+      "            return True\n\n"
+      "lower_bound must bound from below the cost of any move sequence that picks the thing at\n"
+      "q.from_ and brings it to q.to (consistent, for the A* searches to stay optimal).\n"
+      "The planner may call these from a worker thread; each call takes the GIL.")
+      .def(py::init<>())
+      .def("name", &MotionCostModel::name, "The model's name (default: the class name).")
+      .def("cost", py::overload_cast<const MotionQuery&>(&MotionCostModel::cost, py::const_), py::arg("query"),
+           "Cost of the move described by the query (>= 0).")
+      .def("lower_bound", &MotionCostModel::lower_bound, py::arg("query"), py::arg("to_anywhere"),
+           "A lower bound on the cost of bringing the thing to q.to (to_anywhere: destination unknown).")
+      .def("depends", &MotionCostModel::depends, "DEPENDS_* bits: which query fields cost() reads.")
+      .def("expensive", &MotionCostModel::expensive, "True: the planner caches this model's costs.");
+
+  m.def("cost_model", &builtin_cost_model, py::arg("name"), py::arg("scenario") = world::Scenario{},
+        "A built-in motion-cost model: 'euclid' (hand to thing plus thing to destination), 'region'\n"
+        "(centre to centre), 'unit' (1 per move) or 'ik' (UR5 tool path from inverse kinematics).");
+  m.attr("DEPENDS_THING") = static_cast<unsigned>(plan::kDependsThing);
+  m.attr("DEPENDS_HAND") = static_cast<unsigned>(plan::kDependsHand);
+  m.attr("DEPENDS_FROM") = static_cast<unsigned>(plan::kDependsFrom);
+  m.attr("DEPENDS_TO") = static_cast<unsigned>(plan::kDependsTo);
+  m.attr("DEPENDS_ALL") = static_cast<unsigned>(plan::kDependsAll);
+  m.def("algorithms", [] {
+    std::vector<std::string> v;
+    for (const auto& [n, a] : kAlgorithms) v.emplace_back(n);
+    return v;
+  }, "The search algorithms: 'astar-exp' (A* with experience, the default), 'astar', 'dijkstra'.");
+
+  py::class_<plan::SearchStats>(m, "SearchStats", "What one planning query did.")
+      .def_readonly("generated", &plan::SearchStats::generated, "Product nodes created during the query.")
+      .def_readonly("expanded", &plan::SearchStats::expanded, "Node expansions (prefix and cycle searches).")
+      .def_readonly("successor_generations", &plan::SearchStats::successor_generations)
+      .def_readonly("cycle_searches", &plan::SearchStats::cycle_searches)
+      .def_readonly("graph_nodes", &plan::SearchStats::graph_nodes, "Nodes of the product graph after the query.")
+      .def_readonly("graph_edges", &plan::SearchStats::graph_edges)
+      .def_readonly("cache_used", &plan::SearchStats::cache_used)
+      .def_readonly("cache_hits", &plan::SearchStats::cache_hits)
+      .def_readonly("cache_misses", &plan::SearchStats::cache_misses)
+      .def_readonly("reused_nodes", &plan::SearchStats::reused_nodes, "Nodes already in the graph (experience).")
+      .def_readonly("reused_path_edges", &plan::SearchStats::reused_path_edges)
+      .def_readonly("memory_bytes", &plan::SearchStats::memory_bytes)
+      .def_readonly("construction_seconds", &plan::SearchStats::construction_seconds)
+      .def_readonly("seconds", &plan::SearchStats::seconds, "Wall time of the whole query.")
+      .def_readonly("hit_node_limit", &plan::SearchStats::hit_node_limit)
+      .def_readonly("hit_time_limit", &plan::SearchStats::hit_time_limit)
+      .def("__repr__", [](const plan::SearchStats& s) {
+        return "<rtamp.SearchStats expanded=" + std::to_string(s.expanded) + " graph_nodes=" +
+               std::to_string(s.graph_nodes) + " seconds=" + std::to_string(s.seconds) + ">";
+      });
+
+  py::class_<plan::Condition>(m, "Condition", "thing is at location (a state or action condition).")
+      .def_readonly("thing", &plan::Condition::thing)
+      .def_readonly("location", &plan::Condition::location)
+      .def("__repr__", [](const plan::Condition& c) { return c.thing + "@" + c.location; });
+
+  py::class_<plan::ActionTuple>(m, "ActionTuple",
+                                "One move of a plan as the behavior tree gets it (paper Section III.D): the\n"
+                                "action, its thing, source and destination, the full state before/after (pre,\n"
+                                "post) and the relaxed action conditions, the hand before/after, its cost.")
+      .def_readonly("action", &plan::ActionTuple::action, "'move(o1, r2)'")
+      .def_readonly("thing", &plan::ActionTuple::thing)
+      .def_readonly("from_", &plan::ActionTuple::from)
+      .def_readonly("to", &plan::ActionTuple::to)
+      .def_readonly("pre", &plan::ActionTuple::pre)
+      .def_readonly("post", &plan::ActionTuple::post)
+      .def_readonly("relaxed_pre", &plan::ActionTuple::relaxed_pre)
+      .def_readonly("relaxed_post", &plan::ActionTuple::relaxed_post)
+      .def_readonly("hand_before", &plan::ActionTuple::hand_before)
+      .def_readonly("hand_after", &plan::ActionTuple::hand_after)
+      .def_readonly("cost", &plan::ActionTuple::cost)
+      .def_readonly("in_cycle", &plan::ActionTuple::in_cycle, "The move belongs to the plan's cycle.")
+      .def("__repr__", [](const plan::ActionTuple& a) { return "<rtamp.ActionTuple " + a.action + ">"; });
+
+  py::class_<StepView>(m, "Step",
+                       "One step of a lasso plan: the action, the TS states before and after, the Büchi\n"
+                       "states, the motion cost and the label (atoms true in the state it leaves).")
+      .def_readonly("action", &StepView::action, "'move(o1, r2)' or 'stay'.")
+      .def_readonly("thing", &StepView::thing, "The moved thing ('' for stay).")
+      .def_readonly("to", &StepView::to, "The destination ('' for stay).")
+      .def_readonly("from_state", &StepView::from_state, "'o1@r1 o2@r1 r3@r1 hand@home'")
+      .def_readonly("to_state", &StepView::to_state)
+      .def_readonly("ba_from", &StepView::ba_from, "Büchi state before.")
+      .def_readonly("ba_to", &StepView::ba_to, "Büchi state after.")
+      .def_readonly("cost", &StepView::cost)
+      .def_readonly("label", &StepView::label)
+      .def("__repr__", [](const StepView& s) { return "<rtamp.Step " + s.action + " cost=" + std::to_string(s.cost) + ">"; });
+
+  py::class_<PlanView>(m, "Plan",
+                       "A planning result. found: a lasso exists; then prefix (steps to the cycle),\n"
+                       "cycle (repeated forever), prefix_cost + cycle_cost = cost, actions (the moves as\n"
+                       "ActionTuples for the behavior tree), stats. Otherwise reason ('unsatisfiable',\n"
+                       "'no-accepting-cycle', 'capacity', 'unknown-name', 'node-limit', 'time-limit') and\n"
+                       "message. bool(plan) is plan.found.")
+      .def_readonly("found", &PlanView::found)
+      .def_readonly("reason", &PlanView::reason)
+      .def_readonly("message", &PlanView::message)
+      .def_readonly("prefix", &PlanView::prefix)
+      .def_readonly("cycle", &PlanView::cycle)
+      .def_readonly("prefix_cost", &PlanView::prefix_cost)
+      .def_readonly("cycle_cost", &PlanView::cycle_cost)
+      .def_property_readonly("cost", [](const PlanView& v) { return v.prefix_cost + v.cycle_cost; })
+      .def_readonly("actions", &PlanView::actions)
+      .def_readonly("stats", &PlanView::stats)
+      .def_readonly("automaton_states", &PlanView::automaton_states, "The Büchi states it started from.")
+      .def_property_readonly("moves", [](const PlanView& v) {
+        std::vector<std::string> out;
+        for (const auto& s : v.prefix) if (s.action != "stay") out.push_back(s.action);
+        for (const auto& s : v.cycle) if (s.action != "stay") out.push_back(s.action);
+        return out;
+      }, "The names of the moves, prefix first, then the cycle's.")
+      .def("__bool__", [](const PlanView& v) { return v.found; })
+      .def("__repr__", [](const PlanView& v) {
+        if (!v.found) return "<rtamp.Plan not found: " + v.reason + ">";
+        std::vector<std::string> mv;
+        for (const auto& a : v.actions) mv.push_back(a.action);
+        return "<rtamp.Plan cost=" + std::to_string(v.prefix_cost + v.cycle_cost) + " " + join(mv) + ">";
+      });
+
+  py::class_<plan::Change>(m, "Change",
+                           "A change of the world between plans: build with the static constructors or\n"
+                           "Change.parse('move o1 r2' | 'add o4 block r1' | 'remove o1' | 'add-container t2 tray r1 3'\n"
+                           "| 'remove-container t2' | 'add-region r4 0.5 0.2 [capacity]').")
+      .def_static("parse", &plan::Change::parse, py::arg("text"))
+      .def_static("relocate", &plan::Change::relocate, py::arg("thing"), py::arg("location"))
+      .def_static("add_object", &plan::Change::add_object, py::arg("object"), py::arg("cls"), py::arg("location"))
+      .def_static("remove_object", &plan::Change::remove_object, py::arg("object"))
+      .def_static("add_container", &plan::Change::add_container, py::arg("container"), py::arg("cls"),
+                  py::arg("region"), py::arg("capacity") = 4)
+      .def_static("remove_container", &plan::Change::remove_container, py::arg("container"))
+      .def_static("add_region", &plan::Change::add_region, py::arg("region"))
+      .def("__str__", &plan::Change::to_string)
+      .def("__repr__", [](const plan::Change& c) { return "rtamp.Change.parse('" + c.to_string() + "')"; });
+
+  py::class_<PyPlanner>(m, "Planner",
+                        "The planning front door (OMPL SimpleSetup style):\n\n"
+                        "    p = rtamp.Planner(rtamp.load_scenario('3-block-tray'))\n"
+                        "    plan = p.plan()                     # cheapest lasso from the current state\n"
+                        "    p.apply('move o2 r1')               # a person moved o2 back\n"
+                        "    plan2 = p.plan()                    # replan (astar-exp reuses experience)\n\n"
+                        "algorithm: 'astar-exp' (default), 'astar', 'dijkstra'. cost: 'euclid' (default),\n"
+                        "'region', 'unit', 'ik' or a CostModel instance. graph: 'partial' or 'full'.\n"
+                        "Raises rtamp.Error on a bad task or option.")
+      .def(py::init([](const world::Scenario& s, const std::string& algorithm, const py::object& cost,
+                       const std::string& graph, bool symmetry, bool diagnose_capacity, double time_limit,
+                       std::size_t max_nodes) {
+             return std::make_unique<PyPlanner>(
+                 s, planner_config(s, algorithm, cost, graph, symmetry, diagnose_capacity, time_limit, max_nodes));
+           }),
+           py::arg("scenario"), py::kw_only(), py::arg("algorithm") = "astar-exp", py::arg("cost") = "euclid",
+           py::arg("graph") = "partial", py::arg("symmetry") = true, py::arg("diagnose_capacity") = true,
+           py::arg("time_limit") = 60.0, py::arg("max_nodes") = std::size_t{20'000'000})
+      .def("plan", &PyPlanner::plan,
+           "The cheapest lasso plan from the current state and automaton states (the GIL is\n"
+           "released while it searches).")
+      .def("apply",
+           [](PyPlanner& p, const py::object& c) {
+             const plan::Change ch =
+                 py::isinstance<py::str>(c) ? plan::Change::parse(c.cast<std::string>()) : c.cast<plan::Change>();
+             p.locked([&](plan::Planner& pl) { pl.apply(ch); });
+           },
+           py::arg("change"), "Applies a change of the world (a Change or its text, e.g. 'move o1 r2').")
+      .def("execute",
+           [](PyPlanner& p, const StepView& s) {
+             p.locked([&](plan::Planner& pl) { pl.execute(task::Action::unpack(s.packed)); });
+           },
+           py::arg("step"), "The robot executed this plan step: the state advances, experience is kept.")
+      .def("set_placement",
+           [](PyPlanner& p, const py::object& placement, const std::string& hand) {
+             world::Placement pl = to_placement(placement, class_table(p.raw().scenario()));
+             p.locked([&](plan::Planner& x) { x.set_placement(std::move(pl), hand); });
+           },
+           py::arg("placement"), py::arg("hand") = "",
+           "Replaces the current state: a Placement or {thing: location} (hand: where the hand is).")
+      .def("set_automaton_states",
+           [](PyPlanner& p, std::vector<std::uint32_t> s) {
+             p.locked([&](plan::Planner& x) { x.set_automaton_states(std::move(s)); });
+           },
+           py::arg("states"), "The Büchi states plan() starts from (default: the initial state).")
+      .def_property_readonly("automaton_states", [](PyPlanner& p) { return p.raw().automaton_states(); })
+      .def("forbid_move",
+           [](PyPlanner& p, const std::string& t, const std::string& l) {
+             p.locked([&](plan::Planner& x) { x.forbid_move(t, l); });
+           },
+           py::arg("thing"), py::arg("location"), "move(thing, location) is in no plan until clear_forbidden_moves().")
+      .def("clear_forbidden_moves", [](PyPlanner& p) { p.locked([](plan::Planner& x) { x.clear_forbidden_moves(); }); })
+      .def_property_readonly("forbidden_moves", [](PyPlanner& p) { return p.raw().forbidden_moves(); })
+      .def_property_readonly("scenario", [](PyPlanner& p) { return p.raw().scenario(); }, "A copy of the scenario.")
+      .def_property_readonly("automaton", [](PyPlanner& p) { return p.raw().automaton(); },
+                             "The task's Büchi automaton (a copy).")
+      .def_property_readonly("formula", [](PyPlanner& p) -> py::object {
+        const auto& f = p.raw().formula();
+        if (f.is_null()) return py::none();
+        return py::cast(f);
+      }, "The task formula.")
+      .def_property_readonly("placement", [](PyPlanner& p) { return p.raw().placement(); }, "The current state.")
+      .def_property_readonly("hand", [](PyPlanner& p) { return p.raw().hand(); }, "Where the hand is ('' = home).")
+      .def_property_readonly("state", [](PyPlanner& p) {
+        std::string s;
+        p.locked([&](plan::Planner& x) { s = x.system().to_string(x.state()); });
+        return s;
+      }, "The current TS state as text: 'o1@r1 o2@r1 r3@r1 hand@home'.")
+      .def_property_readonly("algorithm", [](PyPlanner& p) { return choice_name(kAlgorithms, p.raw().options().algorithm); })
+      .def_property_readonly("cost_model", [](PyPlanner& p) { return p.raw().options().cost; },
+                             "The motion-cost model's name.");
+}
+
+}  // namespace rtamp::python

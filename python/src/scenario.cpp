@@ -1,0 +1,240 @@
+// Python bindings of the world layer's scenario (paper Section II: regions R,
+// objects O, the task φ; Section V's scripted interventions): load a YAML file
+// or a built-in, parse YAML text, write YAML, generate parametric scenes (as
+// `rtamp gen` does), and the symbolic Placement (where every thing is).
+// Scenario fields are plain values: reading a list (s.objects) gives a copy;
+// assign the whole list back to change it.
+#include "bindings.hpp"
+#include "choices.hpp"
+#include "rtamp/world/builtin_scenarios.hpp"
+#include "rtamp/world/generator.hpp"
+#include "rtamp/world/geometry.hpp"
+#include "rtamp/world/placement.hpp"
+#include "rtamp/world/scenario.hpp"
+#include "rtamp/world/scenario_io.hpp"
+#include "rtamp/world/validate.hpp"
+
+namespace rtamp::python {
+
+namespace {
+
+using namespace rtamp::world;
+
+py::object location_tuple(const SourceLocation& w) {
+  if (w.file.empty() && w.line == 0) return py::none();
+  return py::make_tuple(w.file, w.line, w.column);
+}
+
+}  // namespace
+
+Intervention::Kind parse_intervention_kind(const std::string& s) {
+  return parse_choice(kInterventionKinds, s, "intervention kind");
+}
+const char* intervention_kind_name(Intervention::Kind k) { return choice_name(kInterventionKinds, k); }
+
+void bind_scenario(py::module_& m) {
+  py::class_<Region>(m, "Region", "A fixed region of the table: an axis-aligned box [center ± size/2] in x, y (metres).")
+      .def(py::init([](std::string name, Vec3 center, Vec3 size, int capacity) {
+             Region r;
+             r.name = std::move(name);
+             r.center = center;
+             r.size = size;
+             r.capacity = capacity;
+             return r;
+           }),
+           py::arg("name"), py::arg("center") = Vec3{0, 0, 0}, py::arg("size") = Vec3{0.2, 0.2, 0},
+           py::arg("capacity") = 8)
+      .def_readwrite("name", &Region::name)
+      .def_readwrite("center", &Region::center, "[x, y, z] in metres.")
+      .def_readwrite("size", &Region::size, "[x, y, z] extents (z ignored).")
+      .def_readwrite("capacity", &Region::capacity, "How many movable things fit.")
+      .def_property_readonly("where", [](const Region& r) { return location_tuple(r.where); },
+                             "(file, line, column) where it was defined, or None.")
+      .def("__repr__", [](const Region& r) { return "<rtamp.Region " + r.name + ">"; });
+
+  py::class_<Container>(m, "Container", "A movable region (a tray): moving it carries its contents.")
+      .def(py::init([](std::string name, std::string cls, Vec3 position, Vec3 size, int capacity) {
+             Container c;
+             c.name = std::move(name);
+             c.cls = std::move(cls);
+             c.position = position;
+             c.size = size;
+             c.capacity = capacity;
+             return c;
+           }),
+           py::arg("name"), py::arg("cls") = "tray", py::arg("position") = Vec3{0, 0, 0},
+           py::arg("size") = Vec3{0.24, 0.16, 0.03}, py::arg("capacity") = 4)
+      .def_readwrite("name", &Container::name)
+      .def_readwrite("cls", &Container::cls, "Its class, e.g. 'tray'.")
+      .def_readwrite("position", &Container::position)
+      .def_readwrite("size", &Container::size)
+      .def_readwrite("capacity", &Container::capacity)
+      .def("__repr__", [](const Container& c) { return "<rtamp.Container " + c.name + ">"; });
+
+  py::class_<Object>(m, "Object", "A movable object (a block).")
+      .def(py::init([](std::string name, std::string cls, Vec3 position, Vec3 size) {
+             Object o;
+             o.name = std::move(name);
+             o.cls = std::move(cls);
+             o.position = position;
+             o.size = size;
+             return o;
+           }),
+           py::arg("name"), py::arg("cls") = "block", py::arg("position") = Vec3{0, 0, 0},
+           py::arg("size") = Vec3{0.04, 0.04, 0.04})
+      .def_readwrite("name", &Object::name)
+      .def_readwrite("cls", &Object::cls)
+      .def_readwrite("position", &Object::position, "Centre of its base, metres.")
+      .def_readwrite("size", &Object::size)
+      .def("__repr__", [](const Object& o) { return "<rtamp.Object " + o.name + ">"; });
+
+  py::class_<Proposition>(m, "Proposition", "A named proposition over the world, e.g. all_in_r2 = 'all block in r2'.")
+      .def_readonly("name", &Proposition::name)
+      .def_readonly("text", &Proposition::text, "The expression as written.")
+      .def("__repr__", [](const Proposition& p) { return "<rtamp.Proposition " + p.name + " = '" + p.text + "'>"; });
+
+  py::class_<Robot>(m, "Robot", "The robot: model name, base position and yaw.")
+      .def_readwrite("model", &Robot::model)
+      .def_readwrite("base", &Robot::base)
+      .def_readwrite("yaw", &Robot::yaw);
+
+  py::class_<Intervention>(m, "Intervention",
+                           "A person's action on the world: kind 'relocate', 'add', 'remove', 'add-container',\n"
+                           "'remove-container' or 'take-from-gripper', at `time` seconds.")
+      .def(py::init([](const std::string& kind, std::string subject, std::string location, std::string cls,
+                       double time) {
+             Intervention iv;
+             iv.kind = parse_intervention_kind(kind);
+             iv.subject = std::move(subject);
+             iv.location = std::move(location);
+             iv.cls = std::move(cls);
+             iv.time = time;
+             return iv;
+           }),
+           py::arg("kind"), py::arg("subject") = "", py::arg("location") = "", py::arg("cls") = "",
+           py::arg("time") = 0.0)
+      .def_property("kind", [](const Intervention& iv) { return intervention_kind_name(iv.kind); },
+                    [](Intervention& iv, const std::string& k) { iv.kind = parse_intervention_kind(k); })
+      .def_readwrite("time", &Intervention::time)
+      .def_readwrite("subject", &Intervention::subject)
+      .def_readwrite("cls", &Intervention::cls)
+      .def_readwrite("location", &Intervention::location)
+      .def_readwrite("position", &Intervention::position, "[x, y, z] or None.")
+      .def("__repr__", [](const Intervention& iv) {
+        return std::string("<rtamp.Intervention ") + intervention_kind_name(iv.kind) + " " + iv.subject +
+               (iv.location.empty() ? "" : " -> " + iv.location) + " at " + std::to_string(iv.time) + " s>";
+      });
+
+  py::class_<Scenario>(m, "Scenario",
+                       "A workspace and its task: regions, containers, objects, robot, propositions, the LTL\n"
+                       "task (text) and scripted interventions. Load with load_scenario(), parse_scenario()\n"
+                       "or generate_scenario(); write with to_yaml(). List fields return copies.")
+      .def_readwrite("name", &Scenario::name)
+      .def_readwrite("description", &Scenario::description)
+      .def_readwrite("regions", &Scenario::regions)
+      .def_readwrite("containers", &Scenario::containers)
+      .def_readwrite("objects", &Scenario::objects)
+      .def_readwrite("robot", &Scenario::robot)
+      .def_readonly("propositions", &Scenario::propositions)
+      .def_readwrite("task", &Scenario::task, "The LTL task over proposition names, e.g. 'F G all_in_r2'.")
+      .def_readwrite("interventions", &Scenario::interventions, "The scripted operator, sorted by time.")
+      .def_readonly("source", &Scenario::source, "The file it was loaded from ('' if generated).")
+      .def("to_yaml", &to_yaml, "The scenario as YAML (parse_scenario() reads it back).")
+      .def("validate", [](const Scenario& s) { validate(s); }, "Checks every invariant; raises rtamp.Error naming the first problem.")
+      .def("copy", [](const Scenario& s) { return s; }, "A copy.")
+      .def(py::pickle([](const Scenario& s) { return py::make_tuple(to_yaml(s), s.source); },
+                      [](const py::tuple& t) {
+                        Scenario s = parse_scenario(t[0].cast<std::string>(), t[1].cast<std::string>());
+                        return s;
+                      }))
+      .def("__repr__", [](const Scenario& s) {
+        return "<rtamp.Scenario '" + s.name + "': " + std::to_string(s.regions.size()) + " regions, " +
+               std::to_string(s.containers.size()) + " containers, " + std::to_string(s.objects.size()) +
+               " objects, task '" + s.task + "'>";
+      });
+
+  m.def("load_scenario", &load_scenario, py::arg("path_or_builtin"),
+        "A built-in scenario by name ('3-block', '3-block-tray', ...: builtin_scenarios()) or a YAML\n"
+        "file by path (write ./NAME to read a file named like a built-in). Errors are rtamp.Error\n"
+        "with file, line and column.");
+  m.def("parse_scenario", &parse_scenario, py::arg("yaml"), py::arg("source") = "<string>",
+        "A scenario from YAML text (docs/scenario.md); `source` names it in error locations.");
+  m.def("builtin_scenarios", &builtin_scenario_names, "Names of the built-in scenarios, sorted.");
+  m.def("builtin_scenario_text",
+        [](const std::string& name) -> py::object {
+          auto t = builtin_scenario_text(name);
+          if (!t) return py::none();
+          return py::str(std::string(*t));
+        },
+        py::arg("name"), "The YAML text of a built-in scenario, or None.");
+  m.def("initial_placement", &initial_placement, py::arg("scenario"),
+        "Where every thing of the scenario starts (from its position: the region or container under it).");
+  m.def("to_yaml", &to_yaml, py::arg("scenario"), "The scenario as YAML.");
+  m.def("generate_scenario",
+        [](int regions, int objects, int containers, const std::string& layout, std::uint64_t seed,
+           const std::string& task, const std::vector<std::pair<std::string, std::string>>& propositions) {
+          GeneratorOptions o;
+          o.regions = regions;
+          o.objects = objects;
+          o.containers = containers;
+          o.layout = parse_layout(layout);
+          o.seed = seed;
+          o.task = task;
+          o.propositions = propositions;
+          return generate_scenario(o);
+        },
+        py::kw_only(), py::arg("regions") = 2, py::arg("objects") = 3, py::arg("containers") = 0,
+        py::arg("layout") = "line", py::arg("seed") = 1, py::arg("task") = "",
+        py::arg("propositions") = std::vector<std::pair<std::string, std::string>>{},
+        "A parametric scene, as `rtamp gen` writes it: regions r1..rM, objects o1..oN (4 cm blocks)\n"
+        "in r1, trays t1..tC in rM, rM-1, ...; layout 'line' or 'random' (seeded, the same on every\n"
+        "machine); proposition all_in_r2 plus `propositions` [(name, expression), ...]; task\n"
+        "'F G all_in_r2' unless given.");
+
+  py::class_<Placement::Thing>(m, "Thing", "Where one thing is: location, class, and whether it is a container.")
+      .def(py::init([](std::string location, std::string cls, bool container) {
+             return Placement::Thing{std::move(location), std::move(cls), container};
+           }),
+           py::arg("location"), py::arg("cls") = "block", py::arg("container") = false)
+      .def_readwrite("location", &Placement::Thing::location)
+      .def_readwrite("cls", &Placement::Thing::cls)
+      .def_readwrite("container", &Placement::Thing::container)
+      .def("__eq__", [](const Placement::Thing& a, const Placement::Thing& b) { return a == b; })
+      .def("__repr__", [](const Placement::Thing& t) {
+        return "rtamp.Thing('" + t.location + "', '" + t.cls + "'" + (t.container ? ", container=True" : "") + ")";
+      });
+
+  py::class_<Placement>(m, "Placement",
+                        "The symbolic state: where every movable thing is (a region, a container, 'hand' when\n"
+                        "held, 'none' outside every location), with its class.")
+      .def(py::init<>())
+      .def_readwrite("things", &Placement::things, "{name: Thing} (a copy).")
+      .def("set", &Placement::set, py::arg("name"), py::arg("location"), py::arg("cls") = "block",
+           py::arg("container") = false, "Puts a thing somewhere.")
+      .def("location_of",
+           [](const Placement& p, const std::string& n) -> py::object {
+             const std::string* l = p.location_of(n);
+             return l ? py::object(py::str(*l)) : py::object(py::none());
+           },
+           py::arg("name"), "Where the thing is, or None.")
+      .def("locations",
+           [](const Placement& p) {
+             std::map<std::string, std::string> out;
+             for (const auto& [n, t] : p.things) out[n] = t.location;
+             return out;
+           },
+           "{name: location}.")
+      .def("__eq__", [](const Placement& a, const Placement& b) { return a == b; })
+      .def("__len__", [](const Placement& p) { return p.things.size(); })
+      .def("__repr__", [](const Placement& p) {
+        std::string s = "rtamp.Placement({";
+        bool first = true;
+        for (const auto& [n, t] : p.things) {
+          s += (first ? "'" : ", '") + n + "': '" + t.location + "'";
+          first = false;
+        }
+        return s + "})";
+      });
+}
+
+}  // namespace rtamp::python

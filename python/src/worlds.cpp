@@ -1,0 +1,140 @@
+// Python bindings of rtamp's own worlds on the rtamp.World base: the symbolic
+// world (exec/symbolic_world.hpp: exact placement, discrete-event arm, seeded
+// failures and interventions; thousands of episodes a second) and the MuJoCo
+// UR5 (episode/sim_world.hpp), plus run_episode (episode/episode.hpp): one
+// whole episode with the standard observers — JSON Lines log, tree dumps,
+// timeline, and a video of the MuJoCo run. Episodes run without the GIL.
+#include <optional>
+
+#include "bindings.hpp"
+#include "choices.hpp"
+#include "rtamp/episode/episode.hpp"
+#include "rtamp/episode/sim_world.hpp"
+#include "rtamp/exec/symbolic_world.hpp"
+
+namespace rtamp::python {
+
+void bind_worlds(py::module_& m) {
+  py::class_<exec::SymbolicWorld, exec::World>(
+      m, "SymbolicWorld",
+      "A world with no physics (docs/symbolic-world.md): the exact placement, a discrete-event arm\n"
+      "(approach, grasp, carry, place, retreat), seeded failures and a seeded or scripted person.\n"
+      "Options: seed, failure_probability, script (Interventions; pass scenario.interventions for the\n"
+      "scenario's operator), random_rate / random_start / random_end (a Poisson process of random\n"
+      "interventions), fails (a callable Move -> bool: those moves fail at the end of phase\n"
+      "fails_in), speed and the phase durations.")
+      .def(py::init([](const world::Scenario& s, std::uint64_t seed, double failure_probability,
+                       std::vector<world::Intervention> script, double random_rate, double random_start,
+                       double random_end, std::optional<std::function<bool(const exec::Move&)>> fails,
+                       const std::string& fails_in, double speed, double approach_base, double grasp,
+                       double carry_base, double place, double retreat, double return_base) {
+             exec::SymbolicWorldOptions o;
+             o.seed = seed;
+             o.failure_probability = failure_probability;
+             o.script = std::move(script);
+             o.random_rate = random_rate;
+             o.random_start = random_start;
+             o.random_end = random_end;
+             if (fails) o.fails = *fails;
+             o.fails_in = parse_choice(kPhases, fails_in, "phase");
+             o.speed = speed;
+             o.approach_base = approach_base;
+             o.grasp = grasp;
+             o.carry_base = carry_base;
+             o.place = place;
+             o.retreat = retreat;
+             o.return_base = return_base;
+             return std::make_unique<exec::SymbolicWorld>(s, std::move(o));
+           }),
+           py::arg("scenario"), py::kw_only(), py::arg("seed") = 1, py::arg("failure_probability") = 0.0,
+           py::arg("script") = std::vector<world::Intervention>{}, py::arg("random_rate") = 0.0,
+           py::arg("random_start") = 0.0, py::arg("random_end") = std::numeric_limits<double>::infinity(),
+           py::arg("fails") = py::none(), py::arg("fails_in") = "grasp", py::arg("speed") = 0.25,
+           py::arg("approach_base") = 0.5, py::arg("grasp") = 0.5, py::arg("carry_base") = 0.5,
+           py::arg("place") = 0.5, py::arg("retreat") = 0.5, py::arg("return_base") = 0.5)
+      .def_property_readonly("truth", &exec::SymbolicWorld::truth, "The exact placement (a held thing in 'hand').")
+      .def_property_readonly("phase", [](const exec::SymbolicWorld& w) { return choice_name(kPhases, w.phase()); },
+                             "The arm's phase: 'idle', 'approach', 'grasp', 'carry', 'place', 'retreat', 'return'.")
+      .def("apply", &exec::SymbolicWorld::apply, py::arg("intervention"),
+           "Applies an intervention now, as a person would; returns the WorldEvent (applied or refused).")
+      .def_property_readonly("history", &exec::SymbolicWorld::history, "Every intervention so far (WorldEvents).")
+      .def("capacity", &exec::SymbolicWorld::capacity, py::arg("location"), "-1 if there is no such location.")
+      .def("refusal", &exec::SymbolicWorld::refusal, py::arg("thing"), py::arg("location"),
+           "'' if the location would take the thing now, else why not.")
+      .def("check_invariants", &exec::SymbolicWorld::check_invariants, "'' if every invariant holds, else what is wrong.");
+
+  py::class_<episode::SimWorld, exec::World>(
+      m, "MujocoWorld",
+      "The simulated UR5 in MuJoCo as a World: moves are the pick and place skills, perception maps\n"
+      "body poses to regions, and the scripted or random operator acts between physics steps.\n"
+      "Options: seed, script (Interventions), random_rate. Use run_episode(..., video=...) to film.")
+      .def(py::init([](const world::Scenario& s, std::uint64_t seed, std::vector<world::Intervention> script,
+                       double random_rate) {
+             sim::SessionOptions so;
+             so.seed = seed;
+             so.op.script = std::move(script);
+             so.op.random_rate = random_rate;
+             py::gil_scoped_release release;
+             return std::make_unique<episode::SimWorld>(s, so);
+           }),
+           py::arg("scenario"), py::kw_only(), py::arg("seed") = 1,
+           py::arg("script") = std::vector<world::Intervention>{}, py::arg("random_rate") = 0.0)
+      .def("snapshot", [](episode::SimWorld& w, const std::string& png) {
+        py::gil_scoped_release release;
+        w.session().snapshot(png);
+      }, py::arg("png_path"), "Renders the scene now to a PNG file.");
+
+  m.def("run_episode",
+        [](const world::Scenario& s, const std::string& world, const std::string& algorithm, const std::string& cost,
+           const std::string& conditions, const std::string& reconfiguration, const std::string& planning,
+           std::uint64_t seed, double max_time, double tick_period, int cycles, bool randomize_initial,
+           bool scripted_operator, const std::optional<std::string>& random_change, double random_rate,
+           double failure_probability, int max_consecutive_failures, double outside_grace, const std::string& log,
+           const std::string& trees, const std::string& video,
+           std::optional<std::function<void(const std::string&)>> timeline) {
+          episode::EpisodeOptions o;
+          o.world = parse_choice(kWorlds, world, "world");
+          o.algorithm = parse_choice(kAlgorithms, algorithm, "algorithm");
+          o.cost = cost;
+          o.conditions = parse_choice(kConditions, conditions, "condition mode");
+          o.reconfiguration = parse_choice(kReconfigurations, reconfiguration, "reconfiguration");
+          o.planning = parse_choice(kPlanning, planning, "planning mode");
+          o.seed = seed;
+          o.max_time = max_time;
+          o.tick_period = tick_period;
+          o.cycles = cycles;
+          o.randomize_initial = randomize_initial;
+          o.scripted_operator = scripted_operator;
+          if (random_change) o.random_change = parse_intervention_kind(*random_change);
+          o.random_rate = random_rate;
+          o.failure_probability = failure_probability;
+          o.max_consecutive_failures = max_consecutive_failures;
+          o.outside_grace = outside_grace;
+          o.log_path = log;
+          o.tree_dir = trees;
+          o.video_path = video;
+          if (timeline) o.timeline = *timeline;
+          exec::EpisodeMetrics r;
+          {
+            py::gil_scoped_release release;
+            r = episode::run_episode(s, o);
+          }
+          return r;
+        },
+        py::arg("scenario"), py::kw_only(), py::arg("world") = "mujoco", py::arg("algorithm") = "astar-exp",
+        py::arg("cost") = "euclid", py::arg("conditions") = "action", py::arg("reconfiguration") = "online",
+        py::arg("planning") = "worker", py::arg("seed") = 1, py::arg("max_time") = 900.0,
+        py::arg("tick_period") = 0.02, py::arg("cycles") = 0, py::arg("randomize_initial") = false,
+        py::arg("scripted_operator") = true, py::arg("random_change") = py::none(), py::arg("random_rate") = 0.0,
+        py::arg("failure_probability") = 0.0, py::arg("max_consecutive_failures") = 5,
+        py::arg("outside_grace") = 3.0, py::arg("log") = "", py::arg("trees") = "", py::arg("video") = "",
+        py::arg("timeline") = py::none(),
+        "One episode of the reactive loop, as `rtamp run` runs it: world 'mujoco' (the UR5) or\n"
+        "'symbolic'; log: a JSON Lines log file; trees: a directory for the tree after each change\n"
+        "(BehaviorTree.CPP XML); video: an MP4 of the MuJoCo run; timeline: a callable that gets each\n"
+        "readable line as it happens. random_change: one random intervention of that kind ('relocate',\n"
+        "'add', 'remove', ...) at a random time in 2-20 s. Returns the EpisodeMetrics. The GIL is\n"
+        "released while it runs.");
+}
+
+}  // namespace rtamp::python

@@ -1,0 +1,155 @@
+"""Behavior-tree bindings: build from specs, tick, halt, change, export; leaves as Python callables."""
+
+import pytest
+
+import rtamp
+from rtamp import Status, bt
+
+
+class Counter:
+    """An action that runs for `n` ticks, then succeeds; records starts and halts."""
+
+    def __init__(self, n):
+        self.n, self.ticks, self.starts, self.halts = n, 0, 0, 0
+
+    def start(self):
+        self.starts += 1
+        self.ticks = 1
+        return Status.RUNNING if self.n > 1 else Status.SUCCESS
+
+    def running(self):
+        self.ticks += 1
+        return "SUCCESS" if self.ticks >= self.n else "RUNNING"
+
+    def halted(self):
+        self.halts += 1
+
+
+def test_sequence_of_python_leaves():
+    c = Counter(3)
+    ok = {"v": True}
+    tree = rtamp.Tree(bt.Sequence("main", bt.Condition("ok", lambda: ok["v"]),
+                                  bt.Action("work", c.start, c.running, c.halted)))
+    assert tree.tick() == Status.RUNNING
+    assert tree.tick() == Status.RUNNING
+    assert tree.tick() == Status.SUCCESS
+    assert c.starts == 1 and c.ticks == 3 and tree.tick_count == 3
+    ok["v"] = False
+    assert tree.tick() == Status.FAILURE
+
+
+def test_reactive_sequence_halts_the_running_action():
+    c = Counter(10)
+    ok = {"v": True}
+    tree = rtamp.Tree(bt.ReactiveSequence("r", bt.Condition("ok", lambda: ok["v"]),
+                                          bt.Action("work", c.start, c.running, c.halted)))
+    assert tree.tick() == Status.RUNNING
+    ok["v"] = False
+    assert tree.tick() == Status.FAILURE
+    assert c.halts == 1
+    tree.halt()
+    assert tree.status == Status.INVALID
+
+
+def test_other_nodes():
+    assert rtamp.Tree(bt.Fallback("f", bt.Condition("no", lambda: False), bt.Condition("yes", lambda: True))).tick() == Status.SUCCESS
+    assert rtamp.Tree(bt.ReactiveFallback("f", bt.Condition("no", lambda: False))).tick() == Status.FAILURE
+    assert rtamp.Tree(bt.Inverter("i", bt.Condition("no", lambda: False))).tick() == Status.SUCCESS
+    runs = []
+
+    def flaky():
+        runs.append(1)
+        return Status.SUCCESS if len(runs) >= 3 else Status.FAILURE
+    retry = rtamp.Tree(bt.Retry("r", bt.Action("a", flaky), num_attempts=3))
+    while retry.tick() == Status.RUNNING:
+        pass
+    assert retry.status == Status.SUCCESS and len(runs) == 3
+    runs.clear()
+    once = rtamp.Tree(bt.Retry("r", bt.Action("a", flaky), num_attempts=2))
+    while once.tick() == Status.RUNNING:
+        pass
+    assert once.status == Status.FAILURE and len(runs) == 2
+    par = rtamp.Tree(bt.Parallel("p", bt.Condition("y", lambda: True), bt.Action("r", lambda: Status.RUNNING),
+                                 success_count=1))
+    assert par.tick() == Status.SUCCESS
+    ch = rtamp.Tree(bt.Chooser("c", bt.Condition("no", lambda: False), bt.Action("a", lambda: Status.SUCCESS)))
+    assert ch.tick() == Status.SUCCESS
+
+
+def test_timeout_with_a_manual_clock():
+    tree = rtamp.Tree(bt.Timeout("t", bt.Action("forever", lambda: Status.RUNNING), seconds=2.0), clock="manual")
+    assert tree.tick() == Status.RUNNING
+    tree.advance_clock(1.0)
+    assert tree.tick() == Status.RUNNING
+    tree.advance_clock(1.5)
+    assert tree.tick() == Status.FAILURE
+    with pytest.raises(rtamp.Error):
+        rtamp.Tree(bt.Condition("x", lambda: True)).advance_clock(1)
+
+
+def test_changes_between_ticks_keep_the_running_action():
+    a, b = Counter(5), Counter(1)
+    tree = rtamp.Tree(bt.Sequence("main", bt.Action("a", a.start, a.running, a.halted)))
+    root = tree.root
+    assert tree.tick() == Status.RUNNING
+    changes = []
+    tree.on_change(lambda kind, node, prev, parent, pos: changes.append((kind, parent, pos)))
+    bid = tree.insert(root, 1, bt.Action("b", b.start))
+    assert tree.node(bid)["name"] == "b" and tree.node(root)["children"][1] == bid
+    assert tree.tick() == Status.RUNNING and a.starts == 1  # the running action was not restarted
+    new = tree.replace(bid, bt.Condition("c", lambda: True))
+    tree.remove(new)
+    cid = tree.append(root, bt.Condition("d", lambda: True))
+    assert [k for k, _, _ in changes] == ["insert", "replace", "remove", "insert"]
+    assert len(tree) == 3 and tree.find("d") == cid and tree.find("zzz") is None
+    assert tree.change_count == 5  # set_root counts too
+    while tree.tick() == Status.RUNNING:
+        pass
+    assert tree.status == Status.SUCCESS and a.starts == 1
+
+
+def test_non_interruptible_nodes_refuse_a_cut():
+    tree = rtamp.Tree(bt.Sequence("main", bt.Action("arm", lambda: Status.RUNNING, interruptible=False)))
+    tree.tick()
+    arm = tree.find("arm")
+    assert not tree.can_cut(arm)
+    with pytest.raises(rtamp.Error):
+        tree.remove(arm)
+    tree.remove(arm, force=True)
+    assert len(tree) == 1
+
+
+def test_status_observer_and_nodes():
+    seen = []
+    tree = rtamp.Tree(bt.Sequence("s", bt.Condition("c", lambda: True)))
+    tree.on_status(lambda i, name, prev, cur: seen.append((name, prev, cur)))
+    tree.tick()
+    assert ("c", Status.INVALID, Status.SUCCESS) in seen
+    nodes = tree.nodes()
+    assert [n["name"] for n in nodes] == ["s", "c"] and nodes[0]["kind"] == "Control"
+    assert nodes[1]["parent"] == nodes[0]["id"]
+
+
+def test_export():
+    tree = rtamp.Tree(bt.Sequence("s", bt.Condition("holds", lambda: True, type_id="InRegion", ports={"object": "o1"})))
+    tree.set_port(tree.find("holds"), "region", "r2")
+    xml = tree.to_xml()
+    assert "<root" in xml and 'BTCPP_format="4"' in xml and "InRegion" in xml and 'region="r2"' in xml
+    assert tree.to_dot().startswith("digraph")
+    tree.tick()
+    text = tree.to_text()
+    assert "[o]" in text and "holds" in text
+
+
+def test_python_errors_in_leaves_propagate():
+    def boom():
+        raise KeyError("no such sensor")
+    tree = rtamp.Tree(bt.Sequence("s", bt.Action("a", boom)))
+    with pytest.raises(KeyError):
+        tree.tick()
+    with pytest.raises(rtamp.Error):
+        rtamp.Tree(bt.Action("a", lambda: 42)).tick()
+    with pytest.raises(rtamp.Error):
+        rtamp.Tree(bt.Inverter("i"))
+    with pytest.raises(rtamp.Error):
+        rtamp.Tree(bt.Condition("c", lambda: True)).set_root(bt.Spec("x"))

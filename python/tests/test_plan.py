@@ -1,0 +1,153 @@
+"""Planning bindings: Planner, plan(), replanning after changes, plans, statistics, Python cost models."""
+
+import math
+import threading
+
+import pytest
+
+import rtamp
+
+
+def dist(a, b):
+    return math.sqrt(sum((x - y) ** 2 for x, y in zip(a, b)))
+
+
+class PyEuclid(rtamp.CostModel):
+    """The built-in euclid model, written in Python: the planner must find the same optimum."""
+
+    def __init__(self):
+        super().__init__()
+        self.calls = 0
+        self.threads = set()
+
+    def cost(self, q):
+        self.calls += 1
+        self.threads.add(threading.get_ident())
+        return dist(q.hand, q.from_) + dist(q.from_, q.to)
+
+    def lower_bound(self, q, to_anywhere):
+        return dist(q.hand, q.from_) + (0.0 if to_anywhere else dist(q.from_, q.to))
+
+    def depends(self):
+        return rtamp.DEPENDS_HAND | rtamp.DEPENDS_FROM | rtamp.DEPENDS_TO
+
+
+class OnlyCost(rtamp.CostModel):
+    def cost(self, q):
+        return 1.0
+
+
+def test_first_plan_of_3_block_tray(tray):
+    p = rtamp.Planner(tray)
+    plan = p.plan()
+    assert plan and plan.found and plan.reason == "none"
+    assert plan.cost == pytest.approx(plan.prefix_cost + plan.cycle_cost)
+    assert plan.cost == pytest.approx(sum(s.cost for s in plan.prefix + plan.cycle))
+    # the optimal plan carries the blocks on the tray (the scenario's comment): 7 moves
+    assert len(plan.moves) == 7 and "move(r3, r2)" in plan.moves
+    assert [a.action for a in plan.actions] == plan.moves
+    assert plan.actions[0].hand_before == "home" and plan.actions[0].pre
+    assert plan.cycle and all(s.action == "stay" for s in plan.cycle)
+    assert plan.prefix[0].from_state.endswith("hand@home")
+    assert plan.stats.expanded > 0 and plan.stats.graph_nodes > 0 and plan.stats.seconds >= 0
+    assert plan.automaton_states == [p.automaton.initial]
+    assert "cost=" in repr(plan)
+
+
+def test_algorithms_agree_and_python_cost_model_matches_builtin(tray):
+    costs = {a: rtamp.Planner(tray, algorithm=a).plan().cost for a in rtamp.algorithms()}
+    assert len(set(round(c, 9) for c in costs.values())) == 1
+    py = PyEuclid()
+    plan = rtamp.Planner(tray, cost=py).plan()
+    assert plan.cost == pytest.approx(costs["astar-exp"])
+    assert py.calls > 0
+    for c in ("region", "unit"):
+        assert rtamp.Planner(tray, cost=c).plan().found
+    assert rtamp.Planner(tray, cost="unit").plan().cost == 3  # three blocks, one move each
+
+
+def test_cost_model_defaults_and_builtins(tray):
+    m = OnlyCost()
+    assert m.name() == "OnlyCost" and m.depends() == rtamp.DEPENDS_ALL and m.expensive()
+    assert m.lower_bound(rtamp.MotionQuery(), False) == 0.0
+    p = rtamp.Planner(tray, cost=m)
+    assert p.cost_model == "OnlyCost" and p.plan().cost == 3
+    e = rtamp.cost_model("euclid")
+    q = rtamp.MotionQuery()
+    q.hand, q.from_, q.to = [0, 0, 0.5], [0.4, 0, 0], [0.4, 0.5, 0]
+    assert e.cost(q) == pytest.approx(1.1403, abs=1e-4)  # the example in plan/motion_cost.hpp
+    assert e.name() == "euclid" and not e.expensive()
+
+
+def test_cost_model_survives_its_python_name(tray):
+    p = rtamp.Planner(tray, cost=PyEuclid())  # no other reference to the model
+    import gc
+    gc.collect()
+    assert p.plan().found
+
+
+def test_replan_after_changes(tray):
+    p = rtamp.Planner(tray, algorithm="astar-exp")
+    first = p.plan()
+    for step in first.prefix[:2]:
+        p.execute(step)
+    assert "o" in p.state
+    p.apply("move o2 r1")
+    p.apply(rtamp.Change.relocate("o3", "r1"))
+    again = p.plan()
+    assert again.found
+    assert again.stats.reused_nodes > 0  # astar-exp keeps its graph while the TS is unchanged
+    cold = rtamp.Planner(p.scenario, algorithm="dijkstra")
+    cold.set_placement(p.placement, p.hand)
+    assert cold.plan().cost == pytest.approx(again.cost)
+    p.apply(rtamp.Change.add_object("o4", "block", "r1"))
+    assert "o4" in p.placement.locations()
+    with_four = p.plan()
+    assert with_four.found and any("o4" in m for m in with_four.moves)
+    p.apply("remove o4")
+    assert p.plan().found
+
+
+def test_state_controls(tray):
+    p = rtamp.Planner(tray)
+    p.forbid_move("r3", "r2")
+    assert p.forbidden_moves == [("r3", "r2")]
+    plan = p.plan()
+    assert plan.found and "move(r3, r2)" not in plan.moves
+    p.clear_forbidden_moves()
+    p.set_placement({"o1": "r2", "o2": "r2", "o3": "r2", "r3": "r1"})
+    assert p.plan().cost == 0
+    p.set_automaton_states([p.automaton.initial])
+    assert p.automaton_states == [p.automaton.initial]
+    with pytest.raises(rtamp.Error):
+        p.set_automaton_states([10_000])
+    assert p.formula == rtamp.parse("F G all_in_r2")
+    assert p.algorithm == "astar-exp" and p.scenario.name == "3-block-tray"
+
+
+def test_not_found_has_a_reason():
+    s = rtamp.load_scenario("3-block")
+    s.task = "F all_in_r2 & G !all_in_r2"
+    plan = rtamp.Planner(s).plan()
+    assert not plan and plan.reason == "unsatisfiable" and plan.message
+
+
+def test_plan_from_several_python_threads(tray):
+    """Threads share one planner: each call drops the GIL, then waits for the planner's lock."""
+    p = rtamp.Planner(tray, cost=PyEuclid())
+    results = []
+    threads = [threading.Thread(target=lambda: results.append(p.plan().cost)) for _ in range(4)]
+    for t in threads:
+        t.start()
+    for t in threads:
+        t.join()
+    assert len(results) == 4 and len(set(round(c, 9) for c in results)) == 1
+
+
+def test_change_text():
+    c = rtamp.Change.parse("move o1 r2")
+    assert str(c) == "move o1 r2"
+    assert str(rtamp.Change.remove_object("o1")) == "remove o1"
+    assert str(rtamp.Change.add_container("t2", "tray", "r1", 3)).startswith("add-container t2")
+    assert str(rtamp.Change.remove_container("t2")) == "remove-container t2"
+    assert str(rtamp.Change.add_region(rtamp.Region("r7", center=[0.5, 0, 0]))).startswith("add-region r7")
