@@ -15,6 +15,7 @@
 #include <thread>
 
 #include "command.hpp"
+#include "options.hpp"
 #include "rtamp/exp/csv.hpp"
 #include "rtamp/exp/merge.hpp"
 #include "rtamp/exp/progress.hpp"
@@ -66,7 +67,7 @@ void print_summary(const BatchArgs& a, const std::vector<exp::EpisodeRecord>& re
   const exp::Summary s = exp::summarize(records, exp::parse_grouping(a.group_by));
   std::string format = a.json ? "json" : a.markdown ? "markdown" : a.format;
   if (format == "json") {
-    std::cout << exp::to_json(s, 2) << "\n";
+    std::cout << exp::to_json(s).dump(2) << "\n";
   } else if (format == "markdown") {
     std::cout << exp::format_markdown(s);
   } else if (format == "tsv") {
@@ -110,6 +111,7 @@ int run_merge(const BatchArgs& a) {
   };
   std::erase_if(records, [&](const auto& r) { return !keep(r); });
   if (!a.output.empty()) {
+    rtamp::cli::check_output_file("--output", a.output);
     write_sorted(a.output, records);
     std::cerr << "rtamp batch: merged " << a.merge.size() << " file(s), " << records.size() << " episodes into "
               << a.output << "\n";
@@ -121,6 +123,7 @@ int run_merge(const BatchArgs& a) {
 int run_batch(const BatchArgs& a) {
   if (a.scenario.empty()) throw Error("rtamp batch needs a scenario (or --merge CSV files)");
   const world::Scenario scenario = world::load_scenario(a.scenario);
+  if (!a.output.empty()) rtamp::cli::check_output_file("--output", a.output);
   exp::Grid grid;
   grid.algorithms = parse_all(a.algos, exp::parse_algorithm);
   grid.changes = parse_all(a.changes, exp::parse_change);
@@ -130,7 +133,6 @@ int run_batch(const BatchArgs& a) {
   auto trials = exp::make_trials(grid);
   const std::size_t grid_size = trials.size();
   if (!a.shard.empty()) trials = exp::select_shard(trials, exp::parse_shard(a.shard));
-  if (a.jobs < 1) throw Error("--jobs must be at least 1 (got " + std::to_string(a.jobs) + ")");
 
   exp::BatchOptions opt;
   opt.jobs = a.jobs;
@@ -146,7 +148,7 @@ int run_batch(const BatchArgs& a) {
   std::ofstream csv;
   if (!a.output.empty()) {
     csv.open(a.output, std::ios::binary | std::ios::trunc);
-    if (!csv) throw Error("cannot write '" + a.output + "'");
+    if (!csv) throw Error("--output: cannot write '" + a.output + "'");
     exp::write_header(csv);
     csv.flush();
   }
@@ -246,25 +248,23 @@ rtamp::cli::Registrar reg{
       a->changes = {"relocate", "remove", "add"};
       a->algos = {"astar-exp", "astar", "dijkstra"};
       a->bts = {"online-action"};
-      sub.add_option("scenario", a->scenario, "Built-in scenario name (3-block, 3-block-tray) or YAML file");
+      rtamp::cli::add_scenario(sub, a->scenario);
       sub.add_option("--merge", a->merge, "Join these CSV files (slices of sharded runs) instead of running")
           ->expected(1, -1);
-      sub.add_option("--trials,-n", a->trials, "Trials per cell (each with its own seed)")->capture_default_str();
+      rtamp::cli::add_integer(sub, "--trials,-n", a->trials, 1, 1000000, "Trials per cell (each with its own seed)");
       a->change_opt = sub.add_option("--change", a->changes,
                                      "Random change per episode: relocate, remove, add, none (repeatable; default: "
                                      "relocate remove add)")
                           ->check(CLI::IsMember({"relocate", "remove", "add", "none"}));
-      a->algo_opt = sub.add_option("--algo", a->algos,
-                                   "Search algorithm: astar-exp, astar, dijkstra (repeatable; default: all three)")
-                        ->check(CLI::IsMember({"astar-exp", "astar", "dijkstra"}));
+      a->algo_opt = rtamp::cli::add_choices(sub, "--algo", a->algos, rtamp::cli::algorithm_choices(),
+                                            "Search algorithm (repeatable; default: all):");
       a->bt_opt = sub.add_option("--bt", a->bts,
                                  "BT variant: online-action, online-state, offline (repeatable; default: "
                                  "online-action)")
                       ->check(CLI::IsMember({"online-action", "online-state", "offline"}));
-      sub.add_option("--seed", a->seed, "Base seed; trial k's seed is derived from (k, base seed)")
-          ->capture_default_str();
+      rtamp::cli::add_seed(sub, "--seed", a->seed, "Base seed; trial k's seed is derived from (k, base seed)");
       sub.add_option("--shard", a->shard, "Run only the K-th of N interleaved slices of the trial list (K/N, 1-based)");
-      sub.add_option("--jobs,-j", a->jobs, "Episodes run in parallel (worker threads)")->capture_default_str();
+      rtamp::cli::add_integer(sub, "--jobs,-j", a->jobs, 1, 256, "Episodes run in parallel (worker threads)");
       a->output_opt = sub.add_option("--output,-o", a->output,
                                      "Per-episode CSV (running: default results.csv; merging: none unless given)");
       sub.add_flag("--json", a->json, "Print the summary as JSON (same as --format json)");
@@ -275,10 +275,9 @@ rtamp::cli::Registrar reg{
       sub.add_option("--group-by", a->group_by,
                      "Summary cells: comma-separated subset of scenario,change,algorithm,bt (others pooled)")
           ->capture_default_str();
-      sub.add_option("--max-time", a->max_time, "Simulated seconds before an episode gives up")->capture_default_str();
-      sub.add_option("--cost", a->cost, "Planner motion-cost model: euclid, region, unit, ik")
-          ->check(CLI::IsMember({"euclid", "region", "unit", "ik"}))
-          ->capture_default_str();
+      rtamp::cli::add_real(sub, "--max-time", a->max_time, {0, 1e7, true},
+                           "Seconds of world time before an episode gives up");
+      rtamp::cli::add_choice(sub, "--cost", a->cost, rtamp::cli::cost_model_choices(), "Planner motion-cost model:");
       sub.add_option("--log-dir", a->log_dir, "Write each episode's JSON Lines log into this directory");
       sub.add_option("--world", a->world, "World: mujoco (simulated UR5) | symbolic (no physics, milliseconds an episode)")
           ->check(CLI::IsMember({"mujoco", "symbolic"}))

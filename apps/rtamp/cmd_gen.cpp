@@ -4,6 +4,7 @@
 #include <iostream>
 
 #include "command.hpp"
+#include "options.hpp"
 #include "rtamp/util/error.hpp"
 #include "rtamp/world/generator.hpp"
 #include "rtamp/world/scenario_io.hpp"
@@ -25,16 +26,15 @@ rtamp::cli::Registrar reg{
     "gen", "Generate a scenario (regions r1..rM, objects o1..oN in r1) and print it as YAML",
     [](CLI::App& sub) -> rtamp::cli::Action {
       auto args = std::make_shared<GenArgs>();
-      sub.add_option("--regions,-m", args->regions, "Number of regions M (1-64)")->capture_default_str();
-      sub.add_option("--objects,-n", args->objects, "Number of objects N (1-256), all starting in r1")
-          ->capture_default_str();
+      rtamp::cli::add_integer(sub, "--regions,-m", args->regions, 1, 64, "Number of regions M");
+      rtamp::cli::add_integer(sub, "--objects,-n", args->objects, 1, 256, "Number of objects N, all starting in r1");
       sub.add_option("--layout", args->layout, "Region layout: line (0.5 m apart) or random (1 m square)")
           ->check(CLI::IsMember({"line", "random"}))
           ->capture_default_str();
-      sub.add_option("--seed", args->seed, "Seed of the random layout")->capture_default_str();
+      rtamp::cli::add_seed(sub, "--seed", args->seed, "Seed of the random layout");
       sub.add_option("--task", args->task, "LTL task (default: F G all_in_r2, all_in_r2 = \"all block in r2\")");
-      sub.add_option("--containers,-c", args->containers, "Number of trays t1..tC, one per region rM, rM-1, ...")
-          ->capture_default_str();
+      rtamp::cli::add_integer(sub, "--containers,-c", args->containers, 0, 64,
+                              "Number of trays t1..tC, one per region rM, rM-1, ...");
       sub.add_option("--prop", args->props, "Extra proposition NAME=EXPR, e.g. --prop 'o1_in_r3=o1 in r3' (repeatable)");
       sub.add_option("--output,-o", args->output, "Write to this file instead of standard output");
       return [args]() -> int {
@@ -51,6 +51,7 @@ rtamp::cli::Registrar reg{
             throw rtamp::Error("--prop '" + p + "' must be NAME=EXPRESSION, e.g. 'o1_in_r3=o1 in r3'");
           o.propositions.emplace_back(p.substr(0, eq), p.substr(eq + 1));
         }
+        if (!args->output.empty()) rtamp::cli::check_output_file("--output", args->output);
         const std::string yaml = rtamp::world::to_yaml(rtamp::world::generate_scenario(o));
         if (args->output.empty()) {
           std::cout << yaml;
@@ -60,7 +61,7 @@ rtamp::cli::Registrar reg{
           std::ofstream out(args->output, std::ios::binary);
           out << yaml;
           out.close();
-          if (!out) throw rtamp::Error("cannot write '" + args->output + "'");
+          if (!out) throw rtamp::Error("--output: cannot write '" + args->output + "'");
         }
         return 0;
       };

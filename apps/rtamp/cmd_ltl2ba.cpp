@@ -3,6 +3,7 @@
 // claim or one line of statistics per formula. Formulas come from the command
 // line or, one per line, from files (-F), like Spot's ltl2tgba.
 #include <chrono>
+#include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <iterator>
@@ -79,9 +80,13 @@ std::vector<Job> read_formula_file(const std::string& path) {
   if (path == "-") {
     text.assign(std::istreambuf_iterator<char>(std::cin), std::istreambuf_iterator<char>());
   } else {
+    std::error_code ec;
+    if (std::filesystem::is_directory(path, ec))
+      throw rtamp::Error("-F: cannot read formula file '" + path + "': it is a directory");
     std::ifstream in(path, std::ios::binary);
-    if (!in) throw rtamp::Error("cannot open formula file '" + path + "'");
+    if (!in) throw rtamp::Error("-F: cannot open formula file '" + path + "'");
     text.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+    if (in.bad()) throw rtamp::Error("-F: cannot read formula file '" + path + "'");
   }
   std::vector<Job> jobs;
   std::istringstream lines(text);
@@ -95,11 +100,6 @@ std::vector<Job> read_formula_file(const std::string& path) {
     jobs.push_back({line, rtamp::SourceLocation{name, number, 1}});
   }
   return jobs;
-}
-
-void report(const rtamp::Error& e) {
-  std::cerr << "rtamp: error: " << e.what() << "\n";
-  if (!e.detail().empty()) std::cerr << e.detail() << "\n";
 }
 
 int run(const Ltl2baArgs& args) {
@@ -149,7 +149,7 @@ int run(const Ltl2baArgs& args) {
         throw Error(e.message(), job.origin, e.detail());
       }
     } catch (const Error& e) {
-      report(e);
+      rtamp::cli::report_error(e);
       failed = true;
     }
     // Stream large batches instead of holding every automaton in memory.

@@ -6,12 +6,13 @@
 #include <cstdio>
 #include <iomanip>
 #include <iostream>
+#include <limits>
 #include <nlohmann/json.hpp>
 #include <sstream>
 
 #include "command.hpp"
+#include "options.hpp"
 #include "rtamp/plan/planner.hpp"
-#include "rtamp/robot/ik_motion_cost.hpp"
 #include "rtamp/util/error.hpp"
 #include "rtamp/world/scenario_io.hpp"
 
@@ -114,12 +115,6 @@ void print_result(plan::Planner& p, const plan::PlanResult& r, const std::string
   out << "\n";
 }
 
-plan::Algorithm parse_algo(const std::string& s) {
-  if (s == "dijkstra") return plan::Algorithm::Dijkstra;
-  if (s == "astar") return plan::Algorithm::AStar;
-  return plan::Algorithm::AStarExperience;
-}
-
 // A one-line report on stderr while a query runs longer than half a second
 // (SearchLimits::on_progress), rewritten in place and cleared when it ends.
 struct ProgressLine {
@@ -148,33 +143,28 @@ rtamp::cli::Registrar reg{
     "plan", "Plan for a scenario's LTL task (minimum motion cost lasso), optionally replanning after changes",
     [](CLI::App& sub) -> rtamp::cli::Action {
       auto a = std::make_shared<PlanArgs>();
-      sub.add_option("scenario", a->scenario, "Built-in scenario name (3-block, 3-block-tray) or YAML file")
-          ->required();
-      sub.add_option("--algo", a->algo, "Search: dijkstra, astar, astar-exp (A* with experience)")
-          ->check(CLI::IsMember({"dijkstra", "astar", "astar-exp"}))
-          ->capture_default_str();
+      rtamp::cli::add_scenario(sub, a->scenario)->required();
+      rtamp::cli::add_choice(sub, "--algo", a->algo, rtamp::cli::algorithm_choices(), "Search algorithm:");
       sub.add_option("--graph", a->graph, "Product construction: partial (on the fly) or full (before searching)")
           ->check(CLI::IsMember({"partial", "full"}))
           ->capture_default_str();
-      sub.add_option("--cost", a->cost,
-                     "Motion-cost model: euclid, region, unit, or ik (tool path length of the UR5's pick and "
-                     "place skills, from inverse kinematics; no collision checks)")
-          ->check(CLI::IsMember({"euclid", "region", "unit", "ik"}))
-          ->capture_default_str();
+      rtamp::cli::add_choice(sub, "--cost", a->cost, rtamp::cli::cost_model_choices(), "Motion-cost model:");
       sub.add_option("--change", a->changes,
                      "A change applied after the previous plan, followed by a replan (repeatable, in order): "
                      "'move OBJ LOC', 'add OBJ CLASS LOC', 'remove OBJ', 'add-container NAME CLASS REGION [CAP]', "
                      "'remove-container NAME', 'add-region NAME X Y [CAP]'");
       sub.add_flag("--json", a->json, "Print one JSON object (fields: docs/cli.md)");
-      sub.add_option("--max-nodes", a->max_nodes, "Node limit of each search")->capture_default_str();
-      sub.add_option("--time-limit", a->time_limit, "Time limit of each search, seconds")->capture_default_str();
+      rtamp::cli::add_integer(sub, "--max-nodes", a->max_nodes, 1, std::numeric_limits<long long>::max(),
+                              "Node limit of each search");
+      rtamp::cli::add_real(sub, "--time-limit", a->time_limit, {0, std::numeric_limits<double>::max(), true, true},
+                           "Time limit of each search in seconds");
       sub.add_flag("--no-progress", a->no_progress,
                    "Do not show the progress line that searches longer than 0.5 s print on a terminal's stderr");
       return [a]() -> int {
         std::vector<plan::Change> changes;
         for (const auto& c : a->changes) changes.push_back(plan::Change::parse(c));
         plan::PlannerOptions opt;
-        opt.algorithm = parse_algo(a->algo);
+        opt.algorithm = plan::parse_algorithm(a->algo);
         opt.graph = a->graph == "full" ? plan::GraphConstruction::Full : plan::GraphConstruction::Partial;
         opt.cost = a->cost;
         opt.limits.max_nodes = a->max_nodes;
@@ -183,7 +173,6 @@ rtamp::cli::Registrar reg{
         if (!a->no_progress && ::isatty(STDERR_FILENO))
           opt.limits.on_progress = [progress](const plan::SearchProgress& p) { (*progress)(p); };
         world::Scenario scenario = world::load_scenario(a->scenario);
-        if (a->cost == "ik") opt.model = std::make_shared<robot::IkMotionCost>(robot::IkMotionCost::params_for(scenario));
         plan::Planner planner(std::move(scenario), opt);
 
         nlohmann::json doc;

@@ -7,8 +7,10 @@
 #include <iostream>
 
 #include "command.hpp"
+#include "options.hpp"
 #include "rtamp/episode/episode.hpp"
 #include "rtamp/exec/episode_log.hpp"
+#include "rtamp/util/format.hpp"
 #include "rtamp/world/scenario_io.hpp"
 
 namespace {
@@ -39,36 +41,30 @@ rtamp::cli::Registrar reg{
           "time) unless --quiet; --json prints only the metrics as JSON on stdout (the timeline then goes to\n"
           "stderr). Exit code 0 if the task was done, 1 if the episode ended otherwise, 2 on bad input,\n"
           "130 / 143 when interrupted by SIGINT / SIGTERM.");
-      app.add_option("scenario", o->scenario, "Scenario file or built-in name")->required();
+      rtamp::cli::add_scenario(app, o->scenario)->required();
       app.add_option("--world", o->world, "World: mujoco (simulated UR5) | symbolic (no physics)")
           ->check(CLI::IsMember({"mujoco", "symbolic"}));
-      app.add_option("--algo", o->algo, "Search: dijkstra | astar | astar-exp (A* with experience)")
-          ->check(CLI::IsMember({"dijkstra", "astar", "astar-exp"}));
+      rtamp::cli::add_choice(app, "--algo", o->algo, rtamp::cli::algorithm_choices(), "Search algorithm:");
       app.add_option("--bt", o->bt,
                      "Tree variant: online-action (Algorithm 2, action conditions) | online-state (state "
                      "conditions) | offline (rebuild from scratch)")
           ->check(CLI::IsMember({"online-action", "online-state", "offline"}));
-      app.add_option("--cost", o->cost, "Planner motion cost: euclid | region | unit | ik (UR5 skill paths)")
-          ->check(CLI::IsMember({"euclid", "region", "unit", "ik"}));
+      rtamp::cli::add_choice(app, "--cost", o->cost, rtamp::cli::cost_model_choices(), "Planner motion-cost model:");
       app.add_option("--planning", o->planning,
                      "worker: plan on a thread, charging its time to world time (default for mujoco) | inline: "
                      "plan synchronously, charged nothing, deterministic (default for symbolic)")
           ->check(CLI::IsMember({"worker", "inline"}));
-      app.add_option("--seed", o->seed, "Seed of the episode (operator, perception, random initial layout)");
+      rtamp::cli::add_seed(app, "--seed", o->seed, "Seed of the episode (operator, perception, random initial layout)");
       app.add_option("--change", o->change, "Add one random intervention: relocate | add | remove")
           ->check(CLI::IsMember({"relocate", "add", "remove"}));
-      app.add_option("--rate", o->rate, "Random interventions per second of world time, of every kind (default 0)")
-          ->check(CLI::Range(0.0, 100.0));
-      app.add_option("--failures", o->failures, "Symbolic world: probability that a move fails (default 0)")
-          ->check(CLI::Range(0.0, 1.0));
-      app.add_option("--cycles", o->cycles,
-                     "Recurring tasks (plans that cycle through moves): succeed after K completed cycles "
-                     "(default 0: run until --max-time)")
-          ->check(CLI::Range(0, 1000000));
+      rtamp::cli::add_real(app, "--rate", o->rate, {0, 100}, "Random interventions per second of world time, of every kind");
+      rtamp::cli::add_real(app, "--failures", o->failures, {0, 1}, "Symbolic world: probability that a move fails");
+      rtamp::cli::add_integer(app, "--cycles", o->cycles, 0, 1000000,
+                              "Recurring tasks (plans that cycle through moves): succeed after K completed cycles "
+                              "(0: run until --max-time)");
       app.add_flag("--random-initial", o->random_initial, "Shuffle objects inside their initial locations");
       app.add_flag("--no-operator", o->no_operator, "Ignore the scenario's scripted operator");
-      app.add_option("--max-time", o->max_time, "Give up after this many seconds of world time (default 900)")
-          ->check(CLI::Range(1e-3, 1e7));
+      rtamp::cli::add_real(app, "--max-time", o->max_time, {0, 1e7, true}, "Give up after this many seconds of world time");
       app.add_option("--log", o->log, "Write the episode as JSON Lines to FILE");
       app.add_option("--trees", o->trees, "Write the tree as BehaviorTree.CPP XML after each change into DIR");
       app.add_option("--video", o->video, "Record the run to FILE.mp4 (offscreen rendering; mujoco only)");
@@ -77,11 +73,10 @@ rtamp::cli::Registrar reg{
       return [o]() -> int {
         using namespace rtamp;
         const world::Scenario scenario = world::load_scenario(o->scenario);
+        if (!o->video.empty()) rtamp::cli::check_output_file("--video", o->video);  // before ffmpeg starts
         episode::EpisodeOptions opt;
         opt.world = o->world == "symbolic" ? episode::WorldKind::Symbolic : episode::WorldKind::MuJoCo;
-        opt.algorithm = o->algo == "dijkstra" ? plan::Algorithm::Dijkstra
-                        : o->algo == "astar"  ? plan::Algorithm::AStar
-                                              : plan::Algorithm::AStarExperience;
+        opt.algorithm = plan::parse_algorithm(o->algo);
         opt.conditions = o->bt == "online-state" ? exec::ConditionMode::State : exec::ConditionMode::Action;
         opt.reconfiguration = o->bt == "offline" ? exec::Reconfiguration::Offline : exec::Reconfiguration::Online;
         const std::string planning =
@@ -118,16 +113,16 @@ rtamp::cli::Registrar reg{
         if (o->json) {
           std::cout << exec::to_json(m, 2) << '\n';
         } else {
-          char completion[48] = "none";
-          if (m.completion_time) std::snprintf(completion, sizeof completion, "%.2f s", *m.completion_time);
-          std::printf("\n%s: %s\n  completion %s (world time), motion cost %.3f m, %d replans (%.1f us total), "
-                      "first plan %.1f us, %zu tree changes, %d interventions (%d applied, %d refused)%s, "
-                      "real-time factor %.1fx\n",
-                      m.success ? "SUCCESS" : "FAILURE", m.reason.c_str(), completion, m.motion_cost, m.replans,
-                      m.replan_seconds * 1e6, m.first_plan_seconds * 1e6, m.tree_changes, m.interventions,
+          const std::string completion = m.completion_time ? format_number(*m.completion_time) + " s" : "none";
+          std::printf("\n%s: %s\n  completion %s (world time), motion cost %s m, %d replans (%s total), "
+                      "first plan %s, %zu tree changes, %d interventions (%d applied, %d refused)%s, "
+                      "real-time factor %sx\n",
+                      m.success ? "SUCCESS" : "FAILURE", escape_text(m.reason).c_str(), completion.c_str(),
+                      format_number(m.motion_cost).c_str(), m.replans, format_seconds(m.replan_seconds).c_str(),
+                      format_seconds(m.first_plan_seconds).c_str(), m.tree_changes, m.interventions,
                       m.interventions_applied, m.interventions_refused,
                       m.cycles > 0 ? (", " + std::to_string(m.cycles) + " cycles").c_str() : "",
-                      m.real_time_factor);
+                      format_number(m.real_time_factor, 3).c_str());
         }
         if (m.end == exec::EndReason::Interrupted) return g_signal.load() == SIGTERM ? 143 : 130;
         return m.success ? 0 : 1;

@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "command.hpp"
+#include "options.hpp"
 #include "rtamp/sim/session.hpp"
 #include "rtamp/util/error.hpp"
 #include "rtamp/world/scenario_io.hpp"
@@ -40,28 +41,29 @@ rtamp::cli::Registrar reg{
     "sim", "Run actions in the MuJoCo simulation of a scenario (headless), or write its MJCF",
     [](CLI::App& sub) -> rtamp::cli::Action {
       auto a = std::make_shared<SimArgs>();
-      sub.add_option("scenario", a->scenario, "Scenario: built-in name (3-block, 3-block-tray) or YAML file")
-          ->required();
+      rtamp::cli::add_scenario(sub, a->scenario)->required();
       sub.add_option("--do", a->actions,
                      "Actions separated by ';': move THING LOC | pick THING | place LOC | wait SECONDS");
       sub.add_option("--mjcf", a->mjcf, "Write the generated MuJoCo model (MJCF XML) to this file");
       sub.add_flag("--json", a->json, "Print one JSON object instead of text");
-      sub.add_option("--seed", a->seed, "Seed of perception noise and the random operator")->capture_default_str();
+      rtamp::cli::add_seed(sub, "--seed", a->seed, "Seed of perception noise and the random operator");
       sub.add_flag("--operator", a->scripted, "Apply the scenario's scripted operator interventions");
-      sub.add_option("--random-interventions", a->random_rate,
-                     "Random operator interventions per simulated second (relocate, add, remove)")
-          ->check(CLI::Range(0.0, 10.0));
-      sub.add_option("--noise", a->noise, "Perception: standard deviation of x, y position noise (m)")
-          ->check(CLI::Range(0.0, 1.0));
-      sub.add_option("--miss", a->miss, "Perception: probability of missing a thing")->check(CLI::Range(0.0, 1.0));
+      rtamp::cli::add_real(sub, "--random-interventions", a->random_rate, {0, 10},
+                           "Random operator interventions per simulated second (relocate, add, remove)");
+      rtamp::cli::add_real(sub, "--noise", a->noise, {0, 1}, "Perception: standard deviation of x, y position noise (m)");
+      rtamp::cli::add_real(sub, "--miss", a->miss, {0, 1}, "Perception: probability of missing a thing");
       sub.add_option("--snapshot", a->snapshot, "Render the final scene to this PNG file");
       sub.add_option("--video", a->video, "Record the run to this MP4 file (ffmpeg)");
-      sub.add_option("--width", a->width, "Image width for --snapshot/--video")->check(CLI::Range(16, 4096));
-      sub.add_option("--height", a->height, "Image height for --snapshot/--video")->check(CLI::Range(16, 4096));
+      rtamp::cli::add_integer(sub, "--width", a->width, 16, 4096, "Image width for --snapshot/--video");
+      rtamp::cli::add_integer(sub, "--height", a->height, 16, 4096, "Image height for --snapshot/--video");
       return [a]() -> int {
         using namespace rtamp;
         const world::Scenario scenario = world::load_scenario(a->scenario);
         const std::vector<sim::SimAction> actions = sim::parse_actions(a->actions);
+        // Outputs first: a bad path is refused before the simulation starts.
+        if (!a->video.empty()) rtamp::cli::check_output_file("--video", a->video);
+        if (!a->snapshot.empty()) rtamp::cli::check_output_file("--snapshot", a->snapshot);
+        if (!a->mjcf.empty()) rtamp::cli::check_output_file("--mjcf", a->mjcf);
         sim::SessionOptions opt;
         opt.seed = a->seed;
         opt.scripted_operator = a->scripted;

@@ -7,13 +7,16 @@
 // The setup function adds options to `sub` and returns the action to run when
 // the subcommand is chosen; the action returns the exit code. Errors a user
 // can cause are thrown as rtamp::Error and turned by main() into one line on
-// stderr and exit code 2.
+// stderr and exit code 2 (report_error: the one way rtamp prints an error).
+// Typed options (numbers, seeds, names from the planner's registry): options.hpp.
 #pragma once
 
 #include <CLI/CLI.hpp>
 #include <functional>
 #include <string>
 #include <vector>
+
+#include "rtamp/util/error.hpp"
 
 namespace rtamp::cli {
 
@@ -27,6 +30,11 @@ struct Command {
 };
 
 std::vector<Command>& commands();
+
+// "rtamp: error: MESSAGE" on stderr, control bytes escaped, then the detail's
+// lines (e.g. the input with a caret).
+void report_error(const std::string& message, const std::string& detail = {});
+void report_error(const rtamp::Error& e);
 
 struct Registrar {
   Registrar(std::string name, std::string description, Setup setup) {

@@ -108,7 +108,9 @@ TEST(ScenarioErrors, WrongTypes) {
          with_line(3, "  - {name: r1, center: [0.4, 0.3, 0], size: [0.3, 0.3], capacity: 99999999999}"), 3, "999",
          "out of range"});
   check({"quoted number", with_line(6, "  - {name: o1, position: [\"0.4\", 0.3, 0]}"), 6, "\"0.4\"",
-         "position must be a number, found '0.4'"});
+         "position must be a number, found the quoted string '0.4' (write it without quotes)"});
+  check({"quoted capacity", with_line(3, "  - {name: r1, center: [0.4, 0.3, 0], size: [0.3, 0.3], capacity: \"6\"}"), 3,
+         "\"6\"", "capacity must be an integer, found the quoted string '6' (write it without quotes)"});
   check({"short vector", with_line(6, "  - {name: o1, position: [0.4]}"), 6, "[0.4]",
          "position must be a list [x, y] or [x, y, z], found a list of 1 numbers"});
   check({"vector is text", with_line(6, "  - {name: o1, position: here}"), 6, "here", "must be a list"});

@@ -109,9 +109,8 @@ EpisodeMetrics run_episode(const world::Scenario& input, const EpisodeOptions& o
 
   exec::LoopOptions lo;
   lo.planner.algorithm = opt.algorithm;
+  robot::register_ik_cost_model();  // the episode layer brings the robot's cost model
   lo.planner.cost = opt.cost;
-  if (opt.cost == "ik")
-    lo.planner.model = std::make_shared<robot::IkMotionCost>(robot::IkMotionCost::params_for(scenario));
   lo.conditions = opt.conditions;
   lo.reconfiguration = opt.reconfiguration;
   lo.planning = opt.planning;

@@ -3,8 +3,6 @@
 #include <algorithm>
 #include <limits>
 
-#include "rtamp/util/error.hpp"
-
 namespace rtamp::plan {
 
 MotionQuery MotionCostModel::query(const task::System& ts, const task::State& s, const task::Action& a) {
@@ -87,13 +85,6 @@ double RegionCost::transport_bound(const TransportQuery& t) const {
   v.clear();
   for (std::size_t i = 0; i < t.n; ++i) v.push_back(distance(t.from[i], t.to));
   return t.one_at_a_time ? sum_smallest(v, t.m) : kth_smallest(v, t.m);
-}
-
-std::unique_ptr<MotionCostModel> make_cost_model(const std::string& name) {
-  if (name == "euclid") return std::make_unique<EuclidCost>();
-  if (name == "region") return std::make_unique<RegionCost>();
-  if (name == "unit") return std::make_unique<UnitCost>();
-  throw Error("unknown motion-cost model '" + name + "' (expected euclid, region or unit)");
 }
 
 }  // namespace rtamp::plan

@@ -159,7 +159,6 @@ class UnitCost final : public MotionCostModel {
   double carry_bound(const world::Vec3&, const world::Vec3&) const override { return 1.0; }
 };
 
-// "euclid", "region" or "unit"; throws rtamp::Error otherwise.
-std::unique_ptr<MotionCostModel> make_cost_model(const std::string& name);
+// Models by name (euclid, region, unit, and those other layers register): plan/registry.hpp.
 
 }  // namespace rtamp::plan

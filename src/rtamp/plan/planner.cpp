@@ -147,7 +147,7 @@ Planner::~Planner() = default;
 
 void Planner::init() {
   ba_starts_.assign(1, ba_.initial);
-  model_ = options_.model ? options_.model : std::shared_ptr<MotionCostModel>(make_cost_model(options_.cost));
+  model_ = options_.model ? options_.model : make_cost_model(options_.cost, scenario_);
   cache_.set_depends(model_->depends());
   placement_ = world::initial_placement(scenario_);
   hand_.clear();
@@ -319,10 +319,10 @@ PlanResult Planner::plan() {
 PlanResult Planner::search(task::System& ts, task::Labeling& lab, bool allow_diagnosis) {
   PlanResult res;
   const std::int64_t t0 = steady_now_ns();
-  const bool exp = options_.algorithm == Algorithm::AStarExperience && &ts == ts_.get();
-  std::int64_t deadline = options_.limits.time_limit > 0
-                              ? t0 + static_cast<std::int64_t>(options_.limits.time_limit * 1e9)
-                              : 0;
+  const bool exp = algorithm_info(options_.algorithm).keeps_experience && &ts == ts_.get();
+  // No deadline for a limit <= 0, NaN, infinite or beyond ~30 years (it would overflow the clock).
+  const double limit = options_.limits.time_limit;
+  std::int64_t deadline = limit > 0 && limit < 1e9 ? t0 + static_cast<std::int64_t>(limit * 1e9) : 0;
   auto finish = [&](NoPlanReason reason, std::string message) {
     res.reason = reason;
     res.message = std::move(message);
@@ -395,11 +395,7 @@ PlanResult Planner::search(task::System& ts, task::Labeling& lab, bool allow_dia
     if (exp) {
       hp = exp_heuristic_.get();
     } else {
-      switch (options_.algorithm) {
-        case Algorithm::Dijkstra: h = std::make_unique<ZeroHeuristic>(); break;
-        case Algorithm::AStar: h = std::make_unique<GuardHeuristic>(*g); break;
-        case Algorithm::AStarExperience: h = std::make_unique<ExperienceHeuristic>(*g); break;
-      }
+      h = algorithm_info(options_.algorithm).make_heuristic(*g);
       hp = h.get();
     }
     const bool astar = options_.algorithm != Algorithm::Dijkstra;

@@ -37,6 +37,7 @@
 #include "rtamp/plan/motion_cost.hpp"
 #include "rtamp/plan/plan.hpp"
 #include "rtamp/plan/product_graph.hpp"
+#include "rtamp/plan/registry.hpp"
 #include "rtamp/plan/search.hpp"
 #include "rtamp/task/labeling.hpp"
 #include "rtamp/task/transition_system.hpp"
@@ -48,7 +49,7 @@ namespace rtamp::plan {
 struct PlannerOptions {
   Algorithm algorithm = Algorithm::AStarExperience;
   GraphConstruction graph = GraphConstruction::Partial;
-  std::string cost = "euclid";                 // euclid | region | unit (ignored if `model` is set)
+  std::string cost = "euclid";                 // a registered name (plan/registry.hpp); ignored if `model` is set
   std::shared_ptr<MotionCostModel> model;      // e.g. the robot layer's ik model
   SearchLimits limits;
   bool diagnose_capacity = true;               // on failure, retry without capacities to tell "capacity"

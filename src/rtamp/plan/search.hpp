@@ -108,7 +108,7 @@ struct SearchProgress {
 
 struct SearchLimits {
   std::size_t max_nodes = 20'000'000;  // product nodes in the graph
-  double time_limit = 60;              // seconds; <= 0: none
+  double time_limit = 60;              // seconds; <= 0, NaN or infinite: none
   // Called about every `progress_interval` seconds while a query runs (never
   // if it ends sooner), from the planning thread; it must not use the planner.
   std::function<void(const SearchProgress&)> on_progress;

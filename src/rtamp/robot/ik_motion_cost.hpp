@@ -17,6 +17,7 @@
 #include <string>
 
 #include "rtamp/plan/motion_cost.hpp"
+#include "rtamp/plan/registry.hpp"
 #include "rtamp/robot/ik_cost_model.hpp"
 #include "rtamp/task/transition_system.hpp"
 #include "rtamp/world/scenario.hpp"
@@ -58,5 +59,17 @@ class IkMotionCost final : public plan::MotionCostModel {
   static Eigen::Vector3d v(const world::Vec3& x) { return Eigen::Vector3d(x[0], x[1], x[2]); }
   IkCostModel model_;
 };
+
+// Adds "ik" to the planner's cost-model registry (plan/registry.hpp), built for
+// each scenario with params_for(). Idempotent; programs that want the name
+// call it once (the rtamp CLI at start, run_episode before planning).
+inline void register_ik_cost_model() {
+  plan::register_cost_model({"ik",
+                             "tool path length of the UR5's pick and place skills, from inverse kinematics "
+                             "(no collision checks)",
+                             [](const world::Scenario& s) -> std::shared_ptr<plan::MotionCostModel> {
+                               return std::make_shared<IkMotionCost>(IkMotionCost::params_for(s));
+                             }});
+}
 
 }  // namespace rtamp::robot

@@ -172,7 +172,13 @@ VideoWriter::~VideoWriter() {
 
 void VideoWriter::add(const std::vector<std::uint8_t>& rgb) {
   if (!pipe_) return;
-  std::fwrite(rgb.data(), 1, rgb.size(), pipe_);
+  // ffmpeg gone (bad path, not installed): a short write, an error, not SIGPIPE
+  // (the rtamp CLI ignores SIGPIPE; a program that does not gets the signal).
+  if (std::fwrite(rgb.data(), 1, rgb.size(), pipe_) != rgb.size()) {
+    pclose(pipe_);
+    pipe_ = nullptr;
+    throw Error("ffmpeg stopped reading the frames of '" + path_ + "' (is the path writable? is ffmpeg installed?)");
+  }
   ++frames_;
 }
 

@@ -2,12 +2,22 @@
 
 #include <algorithm>
 #include <cstring>
+#include <mutex>
 
 #include "rtamp/util/error.hpp"
 
 namespace rtamp::sim {
 
 namespace {
+
+// MuJoCo's default warning handler appends to MUJOCO_LOG.TXT in the current directory;
+// the counters in mjData are what we report, so warnings are only kept in memory.
+void quiet_warning(const char*) {}
+
+void install_handlers() {
+  static std::once_flag once;
+  std::call_once(once, [] { mju_user_warning = quiet_warning; });
+}
 
 Eigen::Isometry3d to_iso(const mjtNum* pos, const mjtNum* xmat) {
   Eigen::Isometry3d t = Eigen::Isometry3d::Identity();
@@ -42,6 +52,7 @@ const char* Warnings::name(int i) {
 
 Simulation::Simulation(const world::Scenario& scenario, SimOptions options)
     : scenario_(scenario), options_(std::move(options)) {
+  install_handlers();
   mjcf_ = build_mjcf(scenario_, options_.mjcf);
   std::unique_ptr<mjVFS, VfsDeleter> vfs(new mjVFS);
   mj_defaultVFS(vfs.get());
@@ -282,8 +293,9 @@ int Simulation::add(const std::string& name, const std::string& cls, bool contai
     show(static_cast<int>(i), p);
     return static_cast<int>(i);
   }
-  throw Error(std::string("cannot add '") + name + "': no reserved " + (container ? "tray" : "block") +
-              " body left (raise MjcfOptions::spare_" + (container ? "trays" : "blocks") + ")");
+  const int reserved = container ? options_.mjcf.spare_trays : options_.mjcf.spare_blocks;
+  throw Error(std::string("cannot add '") + name + "': the simulation has no spare " + (container ? "tray" : "block") +
+              " body left (it reserves " + std::to_string(reserved) + " for things added during a run)");
 }
 
 bool Simulation::fingers_touch(int i) const {

@@ -271,8 +271,9 @@ class Reader {
   }
 
   double number(const YAML::Node& n, const std::string& what) const {
-    if (!n.IsScalar() || is_quoted(n) || n.Tag() == "!")
-      fail(n, what + " must be a number, found " + describe(n));
+    if (n.IsScalar() && (is_quoted(n) || n.Tag() == "!"))
+      fail(n, what + " must be a number, found the quoted string " + describe(n) + " (write it without quotes)");
+    if (!n.IsScalar()) fail(n, what + " must be a number, found " + describe(n));
     const std::string& v = n.Scalar();
     const char* first = v.data();
     const char* last = v.data() + v.size();
@@ -285,8 +286,9 @@ class Reader {
   }
 
   int integer(const YAML::Node& n, const std::string& what) const {
-    if (!n.IsScalar() || is_quoted(n) || n.Tag() == "!")
-      fail(n, what + " must be an integer, found " + describe(n));
+    if (n.IsScalar() && (is_quoted(n) || n.Tag() == "!"))
+      fail(n, what + " must be an integer, found the quoted string " + describe(n) + " (write it without quotes)");
+    if (!n.IsScalar()) fail(n, what + " must be an integer, found " + describe(n));
     const std::string& v = n.Scalar();
     const char* first = v.data();
     const char* last = v.data() + v.size();

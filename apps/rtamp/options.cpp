@@ -1,0 +1,217 @@
+#include "options.hpp"
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <cctype>
+#include <cerrno>
+#include <charconv>
+#include <cmath>
+#include <filesystem>
+#include <system_error>
+
+#include "rtamp/plan/registry.hpp"
+#include "rtamp/util/error.hpp"
+#include "rtamp/util/format.hpp"
+#include "rtamp/world/builtin_scenarios.hpp"
+#include "rtamp/world/suggest.hpp"
+
+namespace rtamp::cli {
+
+namespace {
+
+std::string shown(std::string_view text) { return world::quoted(escape_text(text)); }
+
+std::string lower(std::string_view s) {
+  std::string out(s);
+  for (char& c : out) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return out;
+}
+
+// CLI11 calls option callbacks with the option's text; errors become ValidationErrors.
+template <typename F>
+void as_validation(const std::string& name, F&& f) {
+  try {
+    f();
+  } catch (const Error& e) {
+    throw CLI::ValidationError(name, e.what());
+  }
+}
+
+std::string choice_help(const std::string& description, const std::vector<Choice>& choices) {
+  std::string out = description;
+  bool described = false;
+  for (const auto& c : choices) described = described || !c.description.empty();
+  if (!described) {
+    out += " (";
+    for (std::size_t i = 0; i < choices.size(); ++i) out += (i ? ", " : "") + choices[i].name;
+    return out + ")";
+  }
+  for (const auto& c : choices) out += "\n  " + c.name + (c.description.empty() ? "" : ": " + c.description);
+  return out;
+}
+
+CLI::Validator choice_validator(const std::vector<Choice>& choices) {
+  std::vector<std::string> names;
+  for (const auto& c : choices) names.push_back(c.name);
+  return CLI::Validator(
+      [names](std::string& value) -> std::string {
+        if (std::find(names.begin(), names.end(), value) != names.end()) return {};
+        return "unknown value " + shown(value) + world::suggestion(escape_text(value), names);
+      },
+      "");  // the help text lists the names
+}
+
+}  // namespace
+
+std::string RealRange::text() const {
+  std::string out;
+  const bool no_max = max >= std::numeric_limits<double>::max();
+  if (no_max) {
+    out = (min_open ? "> " : ">= ") + format_number(min);
+  } else {
+    out = (min_open ? "in (" : "in [") + format_number(min) + ", " + format_number(max) + "]";
+  }
+  if (allow_inf) out += " or inf (no limit)";
+  return out;
+}
+
+double parse_real(std::string_view text, const RealRange& range) {
+  const std::string l = lower(text);
+  double v = 0;
+  if (l == "inf" || l == "+inf" || l == "infinity" || l == "+infinity") {
+    if (!range.allow_inf) throw Error("must be a finite number " + range.text() + ", found " + shown(text));
+    return std::numeric_limits<double>::infinity();
+  }
+  const char* b = text.data();
+  const char* e = b + text.size();
+  if (b != e && *b == '+') ++b;
+  const auto [p, ec] = std::from_chars(b, e, v);
+  if (b == e || ec == std::errc::invalid_argument || p != e || std::isnan(v) || std::isinf(v))
+    throw Error("expected a number " + range.text() + ", found " + shown(text));
+  if (ec == std::errc::result_out_of_range)
+    throw Error("number out of range: " + shown(text) + " (expected " + range.text() + ")");
+  const bool below = range.min_open ? !(v > range.min) : !(v >= range.min);
+  if (below || v > range.max) throw Error("must be " + range.text() + ", found " + shown(text));
+  return v;
+}
+
+std::string integer_range(long long min, long long max) {
+  if (max == std::numeric_limits<long long>::max()) return ">= " + std::to_string(min);
+  return "in [" + std::to_string(min) + ", " + std::to_string(max) + "]";
+}
+
+long long parse_integer(std::string_view text, long long min, long long max) {
+  const std::string range = integer_range(min, max);
+  const char* b = text.data();
+  const char* e = b + text.size();
+  if (b != e && *b == '+') ++b;
+  long long v = 0;
+  const auto [p, ec] = std::from_chars(b, e, v);
+  if (ec == std::errc::result_out_of_range) throw Error("must be an integer " + range + ", found " + shown(text));
+  if (b == e || ec != std::errc() || p != e) throw Error("expected an integer " + range + ", found " + shown(text));
+  if (v < min || v > max) throw Error("must be an integer " + range + ", found " + shown(text));
+  return v;
+}
+
+std::uint64_t parse_seed(std::string_view text) {
+  const char* b = text.data();
+  const char* e = b + text.size();
+  std::uint64_t v = 0;
+  const bool digits = b != e && std::all_of(b, e, [](char c) { return c >= '0' && c <= '9'; });
+  const auto [p, ec] = std::from_chars(b, e, v);
+  if (!digits || ec != std::errc() || p != e)
+    throw Error("a seed is an integer in [0, 18446744073709551615], found " + shown(text));
+  return v;
+}
+
+CLI::Option* add_real(CLI::App& app, const std::string& name, double& target, const RealRange& range,
+                      const std::string& description) {
+  const std::string key = name.substr(0, name.find(','));
+  auto* opt = app.add_option_function<std::string>(
+      name, [&target, range, key](const std::string& s) { as_validation(key, [&] { target = parse_real(s, range); }); },
+      description + ", " + range.text());
+  opt->type_name("NUMBER")->default_str(format_number(target));
+  return opt;
+}
+
+CLI::Option* add_integer_with(CLI::App& app, const std::string& name, std::function<void(long long)> store,
+                              long long min, long long max, const std::string& default_text,
+                              const std::string& description) {
+  const std::string key = name.substr(0, name.find(','));
+  const std::string range = integer_range(min, max);
+  auto* opt = app.add_option_function<std::string>(
+      name,
+      [store = std::move(store), min, max, key](const std::string& s) {
+        as_validation(key, [&] { store(parse_integer(s, min, max)); });
+      },
+      description + ", an integer " + range);
+  opt->type_name("INT")->default_str(default_text);
+  return opt;
+}
+
+CLI::Option* add_seed(CLI::App& app, const std::string& name, std::uint64_t& target, const std::string& description) {
+  const std::string key = name.substr(0, name.find(','));
+  auto* opt = app.add_option_function<std::string>(
+      name, [&target, key](const std::string& s) { as_validation(key, [&] { target = parse_seed(s); }); },
+      description + ", unsigned 64-bit");
+  opt->type_name("SEED")->default_str(std::to_string(target));
+  return opt;
+}
+
+std::vector<Choice> algorithm_choices() {
+  std::vector<Choice> out;
+  for (const auto& a : plan::algorithms()) out.push_back({a.name, a.description});
+  return out;
+}
+
+std::vector<Choice> cost_model_choices() {
+  std::vector<Choice> out;
+  for (const auto& c : plan::cost_models()) out.push_back({c.name, c.description});
+  return out;
+}
+
+CLI::Option* add_choice(CLI::App& app, const std::string& name, std::string& target, const std::vector<Choice>& choices,
+                        const std::string& description) {
+  auto* opt = app.add_option(name, target, choice_help(description, choices));
+  opt->check(choice_validator(choices))->type_name("NAME")->default_str(target);
+  return opt;
+}
+
+CLI::Option* add_choices(CLI::App& app, const std::string& name, std::vector<std::string>& target,
+                         const std::vector<Choice>& choices, const std::string& description) {
+  auto* opt = app.add_option(name, target, choice_help(description, choices));
+  opt->check(choice_validator(choices))->type_name("NAME");
+  return opt;
+}
+
+CLI::Option* add_scenario(CLI::App& app, std::string& target) {
+  std::string names;
+  std::vector<std::string> builtins = world::builtin_scenario_names();
+  std::sort(builtins.begin(), builtins.end());
+  for (const auto& n : builtins) names += (names.empty() ? "" : ", ") + n;
+  return app.add_option("scenario", target, "A scenario YAML file or a built-in scenario: " + names)
+      ->type_name("SCENARIO");
+}
+
+void check_output_file(const std::string& option, const std::string& path) {
+  namespace fs = std::filesystem;
+  auto fail = [&](const std::string& why) {
+    throw Error(option + ": cannot write " + shown(path) + ": " + why);
+  };
+  if (path.empty()) fail("empty path");
+  std::error_code ec;
+  const fs::path p(path);
+  const auto st = fs::status(p, ec);
+  if (fs::is_directory(st)) fail("it is a directory");
+  fs::path dir = p.parent_path();
+  if (dir.empty()) dir = ".";
+  if (!fs::is_directory(dir, ec)) fail("no directory " + shown(dir.string()));
+  if (fs::exists(st)) {
+    if (::access(path.c_str(), W_OK) != 0) fail(std::error_code(errno, std::generic_category()).message());
+  } else if (::access(dir.c_str(), W_OK | X_OK) != 0) {
+    fail(std::error_code(errno, std::generic_category()).message());
+  }
+}
+
+}  // namespace rtamp::cli

@@ -1,0 +1,167 @@
+// The rtamp command line speaking with one voice, through the built binary:
+// numeric options within their documented ranges (inf where a time limit may
+// be unlimited, seeds unsigned 64-bit), names from the planner's registry with
+// a did-you-mean, output files checked before anything runs, the argument
+// parser's and unknown-command errors in the `rtamp: error: ...` form with
+// exit 2, control bytes escaped, and --json writing only JSON on stdout.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <nlohmann/json.hpp>
+
+#include "run_cli.hpp"
+
+namespace rtamp::cli::testing {
+namespace {
+
+// One line on stderr, in the documented form, naming `where`; exit 2.
+void expect_refused(const Result& r, const std::string& where, const std::string& cmd) {
+  EXPECT_EQ(r.rc, 2) << cmd << "\n" << r.err;
+  EXPECT_EQ(r.err.rfind("rtamp: error: ", 0), 0u) << cmd << "\n" << r.err;
+  EXPECT_NE(r.err.find(where), std::string::npos) << cmd << "\n" << r.err;
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << cmd << "\n" << r.err;
+  EXPECT_TRUE(r.out.empty()) << cmd << "\n" << r.out;
+}
+
+TEST(CliOptions, NumbersOutsideTheirRangesAreRefused) {
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {"plan 3-block --time-limit 0", "--time-limit"},
+      {"plan 3-block --time-limit -1", "--time-limit"},
+      {"plan 3-block --time-limit nan", "--time-limit"},
+      {"plan 3-block --time-limit 5s", "--time-limit"},
+      {"plan 3-block --time-limit ''", "--time-limit"},
+      {"plan 3-block --max-nodes -1", "--max-nodes"},
+      {"plan 3-block --max-nodes 0", "--max-nodes"},
+      {"plan 3-block --max-nodes 1.5", "--max-nodes"},
+      {"plan 3-block --max-nodes 99999999999999999999999", "--max-nodes"},
+      {"run 3-block --world symbolic --max-time nan", "--max-time"},
+      {"run 3-block --world symbolic --max-time -5", "--max-time"},
+      {"run 3-block --world symbolic --max-time 0", "--max-time"},
+      {"run 3-block --world symbolic --max-time inf", "--max-time"},
+      {"run 3-block --world symbolic --seed -1", "--seed"},
+      {"run 3-block --world symbolic --seed 18446744073709551616", "--seed"},
+      {"run 3-block --world symbolic --seed 1e3", "--seed"},
+      {"run 3-block --world symbolic --rate 101", "--rate"},
+      {"run 3-block --world symbolic --failures 1.5", "--failures"},
+      {"run 3-block --world symbolic --cycles -1", "--cycles"},
+      {"batch 3-block --world symbolic --trials 0", "--trials"},
+      {"batch 3-block --world symbolic --jobs 0", "--jobs"},
+      {"batch 3-block --world symbolic --seed +1", "--seed"},
+      {"gen --regions 0", "--regions"},
+      {"gen --objects 257", "--objects"},
+      {"gen --seed -3", "--seed"},
+      {"sim 3-block --width 8", "--width"},
+      {"sim 3-block --noise inf", "--noise"},
+  };
+  for (const auto& [cmd, where] : cases) expect_refused(run(cmd), where, cmd);
+  // The message says what is allowed, with numbers written plainly.
+  const Result r = run("run 3-block --world symbolic --max-time 0");
+  EXPECT_NE(r.err.find("must be in (0, 10000000]"), std::string::npos) << r.err;
+  EXPECT_EQ(r.err.find("000000 "), std::string::npos) << r.err;
+}
+
+TEST(CliOptions, InfiniteAndHugeTimeLimitsMeanNoLimit) {
+  for (const std::string limit : {"inf", "1e10", "Infinity"}) {
+    const Result r = run("plan 3-block-tray --time-limit " + limit + " --json");
+    ASSERT_EQ(r.rc, 0) << limit << "\n" << r.err;
+    const auto j = nlohmann::json::parse(r.out);
+    EXPECT_EQ(j["plans"][0]["found"], true) << limit;
+    EXPECT_EQ(j["plans"][0]["stats"]["hit_time_limit"], false) << limit;
+  }
+}
+
+TEST(CliOptions, TheLargestSeedIsAccepted) {
+  const Result r = run("run 3-block --world symbolic --quiet --json --seed 18446744073709551615");
+  ASSERT_NE(r.rc, 2) << r.err;
+  EXPECT_EQ(nlohmann::json::parse(r.out).at("seed").get<std::uint64_t>(), 18446744073709551615ull);
+}
+
+TEST(CliOptions, RegistryNamesWithDidYouMean) {
+  Result r = run("plan 3-block --algo astr");
+  expect_refused(r, "--algo", "--algo astr");
+  EXPECT_NE(r.err.find("did you mean 'astar'?"), std::string::npos) << r.err;
+  r = run("run 3-block --cost eucild");
+  expect_refused(r, "--cost", "--cost eucild");
+  EXPECT_NE(r.err.find("did you mean 'euclid'?"), std::string::npos) << r.err;
+  r = run("batch 3-block --algo astar --algo dijkstr");
+  expect_refused(r, "--algo", "--algo dijkstr");
+  EXPECT_NE(r.err.find("did you mean 'dijkstra'?"), std::string::npos) << r.err;
+  // --help lists every registered name with its description, and every built-in scenario.
+  r = run("plan --help");
+  ASSERT_EQ(r.rc, 0);
+  for (const char* s : {"astar-exp:", "dijkstra:", "euclid:", "unit:", "ik:", "inverse kinematics", "3-block-tray-handover"})
+    EXPECT_NE(r.out.find(s), std::string::npos) << s << "\n" << r.out;
+}
+
+TEST(CliOptions, CommandsAndParserErrorsSpeakLikeTheRest) {
+  Result r = run("foo");
+  expect_refused(r, "unknown command 'foo'", "foo");
+  r = run("plna 3-block");
+  expect_refused(r, "did you mean 'plan'?", "plna");
+  r = run("");
+  expect_refused(r, "no command given", "(none)");
+  r = run("plan 3-block --bogus");
+  expect_refused(r, "unknown option '--bogus'", "--bogus");
+  r = run("plan");
+  expect_refused(r, "scenario is required", "plan");
+  r = run("plan 3-block --time-limit");
+  expect_refused(r, "--time-limit", "--time-limit without a value");
+  EXPECT_EQ(run("--help").rc, 0);
+  EXPECT_EQ(run("--version").rc, 0);
+}
+
+TEST(CliOptions, ControlBytesAreEscaped) {
+  const Result r = run("plan \"$(printf 'no\\033[2Jsuch\\007')\"");
+  EXPECT_EQ(r.rc, 2);
+  EXPECT_EQ(r.err.find('\x1b'), std::string::npos) << r.err;
+  EXPECT_EQ(r.err.find('\x07'), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("\\x1b[2Jsuch\\x07"), std::string::npos) << r.err;
+}
+
+TEST(CliOptions, OutputFilesAreCheckedBeforeAnythingRuns) {
+  namespace fs = std::filesystem;
+  const fs::path dir = scratch() / "outputs";
+  fs::create_directories(dir);
+  const std::string missing = (dir / "no-such-dir" / "x").string();
+  struct Case {
+    std::string cmd, where;
+  };
+  const std::vector<Case> cases = {
+      {"run 3-block --video '" + missing + ".mp4'", "--video"},
+      {"run 3-block --video '" + dir.string() + "'", "--video"},
+      {"sim 3-block --do 'move o1 r2' --video '" + missing + ".mp4'", "--video"},
+      {"sim 3-block --do 'move o1 r2' --snapshot '" + missing + ".png'", "--snapshot"},
+      {"gen -o '" + missing + ".yaml'", "--output"},
+      {"gen -o '" + dir.string() + "'", "--output"},
+      {"batch 3-block --world symbolic --trials 1 -o '" + missing + ".csv'", "--output"},
+      {"batch 3-block --world symbolic --trials 1 -o '" + dir.string() + "'", "--output"},
+      {"ltl2ba -F '" + dir.string() + "'", "is a directory"},
+  };
+  for (const auto& c : cases) {
+    const Result r = run(c.cmd);
+    expect_refused(r, c.where, c.cmd);
+  }
+  // --trees to a place that cannot be a directory: refused before the episode (no timeline).
+  const std::string file = write_file("not_a_dir", "x");
+  const Result r = run("run 3-block --world symbolic --trees '" + file + "/trees'");
+  EXPECT_EQ(r.rc, 2) << r.err;
+  EXPECT_EQ(r.out.find("first plan"), std::string::npos) << r.out;
+  EXPECT_FALSE(fs::exists(dir / "no-such-dir"));
+}
+
+TEST(CliOptions, JsonMeansOnlyJsonOnStdout) {
+  const std::string csv = (scratch() / "json.csv").string();
+  const std::vector<std::string> cmds = {
+      "plan 3-block --json", "run 3-block --world symbolic --json",
+      "run 3-block-tray --world symbolic --json --rate 0.2 --seed 3",
+      "batch 3-block --world symbolic --trials 1 --algo astar --change none --json -o '" + csv + "'"};
+  for (const std::string& cmd : cmds) {
+    const Result r = run(cmd);
+    EXPECT_NE(r.rc, 2) << cmd << "\n" << r.err;
+    EXPECT_TRUE(nlohmann::json::accept(r.out)) << cmd << "\n" << r.out;
+  }
+}
+
+}  // namespace
+}  // namespace rtamp::cli::testing
