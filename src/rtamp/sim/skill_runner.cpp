@@ -25,6 +25,22 @@ robot::Grasp SkillRunner::grasp_for(int i) const {
   return g;
 }
 
+robot::Grasp SkillRunner::held_grasp(int i) const {
+  // The thing's base frame seen from the tool (the weld keeps it so), then the same
+  // relation under a top-down tool at the origin with yaw 0: the thing's base lies at
+  // p, turned by yaw, so the tool point is -p in the thing's frame and the tool's yaw
+  // relative to the thing is -yaw.
+  Eigen::Isometry3d thing = sim_.pose(i);
+  thing.translation() = base_point(sim_, i);
+  const Eigen::Isometry3d rel = sim_.tool_pose().inverse() * thing;
+  const Eigen::Isometry3d seen = robot::top_down_pose(Eigen::Vector3d::Zero(), 0) * rel;
+  const double yaw = std::atan2(seen.linear()(1, 0), seen.linear()(0, 0));
+  robot::Grasp g = grasp_for(i);
+  g.offset = Eigen::AngleAxisd(-yaw, Eigen::Vector3d::UnitZ()) * -seen.translation();
+  g.yaw = -yaw;
+  return g;
+}
+
 std::optional<world::Vec3> SkillRunner::place_spot(int i, const std::string& location) const {
   const Thing& t = sim_.thing(i);
   std::vector<int> exclude{i};
@@ -64,7 +80,6 @@ bool SkillRunner::start_pick(const std::string& object) {
     controller_.fail("cannot pick '" + object + "': " + p.why);
     return false;
   }
-  grasp_yaw_ = p.grasp_yaw;
   MotionPlan m;
   m.trajectory = std::move(p.trajectory);
   for (const auto& e : p.events) m.events.push_back({e.time, e.kind == robot::GripperEvent::Kind::Close});
@@ -95,8 +110,7 @@ bool SkillRunner::start_place(const std::string& location) {
   robot::ThingPose target;
   target.position = Eigen::Vector3d((*spot)[0], (*spot)[1], (*spot)[2] + options_.drop_height);
   target.yaw = thing_pose(sim_, i).yaw;
-  robot::Grasp g = grasp_for(i);
-  g.yaw = grasp_yaw_;
+  const robot::Grasp g = held_grasp(i);
   std::vector<int> ignore = carried_;
   SimCollisionChecker checker(sim_, ignore);
   robot::SkillPlan p = robot::plan_place(arm_, sim_.arm_q(), target, g, options_.skill,

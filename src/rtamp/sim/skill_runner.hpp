@@ -73,6 +73,10 @@ class SkillRunner {
   bool start_retreat(double height = 0.10);
   // The spot a place into `location` would use for thing `i` (centre of its base).
   std::optional<world::Vec3> place_spot(int thing, const std::string& location) const;
+  // The grasp the held thing is actually in (its pose relative to the tool, as welded),
+  // not the nominal one: a thing pushed while the fingers closed (after a missed grasp,
+  // say) sits off the tool axis, and a place must put the THING on its spot.
+  robot::Grasp held_grasp(int thing) const;
 
   // Blocking pick + place; `on_step` runs after every physics step (operator, video).
   ActionResult move(const std::string& object, const std::string& location,
@@ -85,7 +89,6 @@ class SkillRunner {
   Controller& controller_;
   SkillRunnerOptions options_;
   robot::Ur5Kinematics arm_;
-  double grasp_yaw_ = 0;       // relative tool yaw chosen by the last pick
   std::vector<int> carried_;   // contents of a picked tray
 };
 
