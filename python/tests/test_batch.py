@@ -59,7 +59,7 @@ def dask_cluster(tmp_path):
     address = f"tcp://127.0.0.1:{port}"
     env = dict(os.environ)
     procs = [subprocess.Popen([sys.executable, "-m", "distributed.cli.dask_scheduler", "--host", "127.0.0.1",
-                               "--port", str(port), "--dashboard-address", ":0", "--no-show"],
+                               "--port", str(port), "--no-dashboard", "--no-show"],
                               env=env, cwd=tmp_path, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)]
     try:
         for _ in range(2):
