@@ -16,6 +16,6 @@ ValueError) with message, file, line and column. See docs/python.md.
 
 from rtamp._rtamp import *  # noqa: F401,F403
 from rtamp._rtamp import Error, __doc__ as _core_doc  # noqa: F401
-from rtamp import bt  # noqa: F401
+from rtamp import batch, bt, toy  # noqa: F401,E402
 
 __all__ = [n for n in dir() if not n.startswith("_")]
