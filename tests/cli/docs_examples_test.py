@@ -22,7 +22,7 @@ placeholders, and trailing blanks are dropped. `console mujoco` blocks run the M
 are skipped unless --mujoco is given (ctest runs them as a test labelled
 slow); every decimal in them is normalised too (world times, costs),
 since planning on a worker thread charges its wall time to the simulated
-clock.
+clock, and so are runs of blanks (table columns follow their figures' widths).
 
 Exit 0 when every example matches, 1 otherwise (with a diff per mismatch).
 """
@@ -60,6 +60,7 @@ def normalise(line, mujoco):
     if mujoco:
         for pattern, repl in WORLD_TIME:
             line = pattern.sub(repl, line)
+        line = re.sub(r"\s+", " ", line)  # table columns are as wide as their figures
     return line
 
 
