@@ -40,19 +40,19 @@ const char* to_string(GraphConstruction g) { return g == GraphConstruction::Full
 void LassoSearch::Space::ensure(std::size_t n) {
   if (stamp.size() >= n) return;
   const std::size_t cap = std::max<std::size_t>(n, stamp.size() * 2);
-  g.resize(cap);
-  m.resize(cap);
-  h.resize(cap);
-  parent.resize(cap);
-  pedge.resize(cap);
-  stamp.resize(cap, 0);
-  closed.resize(cap);
+  g.grow(cap, false);
+  m.grow(cap, false);
+  h.grow(cap, false);
+  parent.grow(cap, false);
+  pedge.grow(cap, false);
+  stamp.grow(cap, true);
+  closed.grow(cap, false);
 }
 
 void LassoSearch::Space::begin(std::size_t n) {
-  ensure(std::max<std::size_t>(n, 1024));
+  ensure(std::max<std::size_t>(n, 256));
   if (++gen == 0) {  // wrapped: clear the stamps once
-    std::fill(stamp.begin(), stamp.end(), 0);
+    std::fill(stamp.p.get(), stamp.p.get() + stamp.size(), 0u);
     gen = 1;
   }
   heap.clear();
@@ -71,8 +71,8 @@ LassoSearch::Item LassoSearch::Space::pop() {
 }
 
 std::size_t LassoSearch::Space::bytes() const {
-  return g.capacity() * 8 + m.capacity() * 4 + h.capacity() * 8 + parent.capacity() * 4 + pedge.capacity() * 4 + stamp.capacity() * 4 +
-         closed.capacity() + heap.capacity() * sizeof(Item);
+  return g.size() * 8 + m.size() * 4 + h.size() * 8 + parent.size() * 4 + pedge.size() * 4 + stamp.size() * 4 +
+         closed.size() + heap.capacity() * sizeof(Item);
 }
 
 // Removes closed walks from a path of edges starting at `from` (a path made of

@@ -81,6 +81,8 @@
 #pragma once
 
 #include <cstdint>
+#include <cstring>
+#include <memory>
 #include <functional>
 #include <vector>
 
@@ -148,12 +150,31 @@ class LassoSearch {
     std::uint32_t m;
   };
   static constexpr Cost kNoCost{kInf, ~std::uint32_t{0}};
+  // A per-node array that grows without initialising its new entries: every
+  // field but `stamp` is written before it is read (an entry counts only once
+  // its stamp is the search's generation), so a search over a graph that grew
+  // pays for copying what it holds, not for clearing what it does not.
+  template <class T>
+  struct Slots {
+    std::unique_ptr<T[]> p;
+    std::size_t n = 0;
+    T& operator[](std::size_t i) { return p[i]; }
+    const T& operator[](std::size_t i) const { return p[i]; }
+    std::size_t size() const { return n; }
+    void grow(std::size_t cap, bool zero) {
+      std::unique_ptr<T[]> q(new T[cap]);
+      if (n) std::memcpy(q.get(), p.get(), n * sizeof(T));
+      if (zero) std::memset(static_cast<void*>(q.get() + n), 0, (cap - n) * sizeof(T));
+      p = std::move(q);
+      n = cap;
+    }
+  };
   struct Space {
-    std::vector<double> g, h;
-    std::vector<std::uint32_t> m;  // moves of the path with cost g
-    std::vector<NodeId> parent;
-    std::vector<std::uint32_t> pedge, stamp;
-    std::vector<std::uint8_t> closed;
+    Slots<double> g, h;
+    Slots<std::uint32_t> m;  // moves of the path with cost g
+    Slots<NodeId> parent;
+    Slots<std::uint32_t> pedge, stamp;
+    Slots<std::uint8_t> closed;
     std::vector<Item> heap;
     std::uint32_t gen = 0;
     void begin(std::size_t n);
