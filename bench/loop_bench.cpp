@@ -15,9 +15,14 @@
 //   BM_SymbolicEpisode/2   no intervention but the scenario's script
 //   BM_SymbolicEpisode/3   random relocations only, 1 per second during the first 20 s
 //                          (every episode can succeed: nothing is added or removed)
+//
+// RTAMP_LOOP_EPISODES=N runs every benchmark for exactly N iterations (episodes,
+// seeds 1..N): a fixed amount of work, for instruction counts under
+// `valgrind --tool=callgrind` that do not depend on the machine's load.
 #include <benchmark/benchmark.h>
 
 #include <algorithm>
+#include <cstdlib>
 #include <vector>
 
 #include "rtamp/exec/reactive_loop.hpp"
@@ -77,8 +82,15 @@ void BM_SymbolicEpisode(benchmark::State& state) {
     state.counters["replan_p90_us"] = replans[replans.size() * 9 / 10] * 1e6;
   }
 }
-BENCHMARK(BM_SymbolicEpisode)->Arg(0)->Arg(1)->Arg(2)->Arg(3)->Unit(benchmark::kMicrosecond);
-
 }  // namespace
 
-BENCHMARK_MAIN();
+int main(int argc, char** argv) {
+  auto* b = benchmark::RegisterBenchmark("BM_SymbolicEpisode", BM_SymbolicEpisode);
+  b->Arg(0)->Arg(1)->Arg(2)->Arg(3)->Unit(benchmark::kMicrosecond);
+  if (const char* n = std::getenv("RTAMP_LOOP_EPISODES")) b->Iterations(std::atoll(n));
+  benchmark::Initialize(&argc, argv);
+  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
+  benchmark::RunSpecifiedBenchmarks();
+  benchmark::Shutdown();
+  return 0;
+}

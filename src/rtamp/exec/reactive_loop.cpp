@@ -110,7 +110,7 @@ automata::Letter ReactiveLoop::letter(const world::Placement& symbolic) const {
 
 void ReactiveLoop::record_run_step(const world::Placement& next, bool things_changed,
                                    const std::vector<std::string>& added, const std::vector<std::string>& removed) {
-  progress_.leave(letter(symbolic_));
+  progress_.leave(run_letters_.back());  // the label of symbolic_, read as it entered the run
   symbolic_ = next;
   if (things_changed) apply_thing_changes(added, removed);
   run_.push_back(symbolic_);
