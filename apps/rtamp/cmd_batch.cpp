@@ -22,6 +22,7 @@
 #include "rtamp/exp/runner.hpp"
 #include "rtamp/exp/summary.hpp"
 #include "rtamp/exp/trials.hpp"
+#include "rtamp/task/validate.hpp"
 #include "rtamp/util/error.hpp"
 #include "rtamp/world/scenario_io.hpp"
 
@@ -123,6 +124,7 @@ int run_merge(const BatchArgs& a) {
 int run_batch(const BatchArgs& a) {
   if (a.scenario.empty()) throw Error("rtamp batch needs a scenario (or --merge CSV files)");
   const world::Scenario scenario = world::load_scenario(a.scenario);
+  task::validate_task(scenario);  // a bad task is refused once, not run as failed trials
   if (!a.output.empty()) rtamp::cli::check_output_file("--output", a.output);
   exp::Grid grid;
   grid.algorithms = parse_all(a.algos, exp::parse_algorithm);

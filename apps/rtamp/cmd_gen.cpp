@@ -5,6 +5,7 @@
 
 #include "command.hpp"
 #include "options.hpp"
+#include "rtamp/task/validate.hpp"
 #include "rtamp/util/error.hpp"
 #include "rtamp/world/generator.hpp"
 #include "rtamp/world/scenario_io.hpp"
@@ -45,14 +46,22 @@ rtamp::cli::Registrar reg{
         o.layout = rtamp::world::parse_layout(args->layout);
         o.seed = args->seed;
         o.task = args->task;
-        for (const std::string& p : args->props) {
+        o.task_where = {"--task", 1, 1};
+        for (std::size_t i = 0; i < args->props.size(); ++i) {
+          const std::string& p = args->props[i];
+          const std::string where = "--prop #" + std::to_string(i + 1);
           const auto eq = p.find('=');
           if (eq == std::string::npos || eq == 0)
-            throw rtamp::Error("--prop '" + p + "' must be NAME=EXPRESSION, e.g. 'o1_in_r3=o1 in r3'");
+            throw rtamp::Error("must be NAME=EXPRESSION, e.g. 'o1_in_r3=o1 in r3'", {where, 1, 1},
+                               rtamp::caret_at(p, eq == 0 ? 0 : p.size()));
           o.propositions.emplace_back(p.substr(0, eq), p.substr(eq + 1));
+          o.proposition_where.push_back({where, 1, static_cast<int>(eq) + 2});
         }
+        // The scenario is checked as a file of it would be (the task too) before anything is written.
+        const rtamp::world::Scenario scenario = rtamp::world::generate_scenario(o);
+        rtamp::task::validate_task(scenario);
         if (!args->output.empty()) rtamp::cli::check_output_file("--output", args->output);
-        const std::string yaml = rtamp::world::to_yaml(rtamp::world::generate_scenario(o));
+        const std::string yaml = rtamp::world::to_yaml(scenario);
         if (args->output.empty()) {
           std::cout << yaml;
           std::cout.flush();

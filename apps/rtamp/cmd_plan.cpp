@@ -12,7 +12,9 @@
 
 #include "command.hpp"
 #include "options.hpp"
+#include "rtamp/plan/change_check.hpp"
 #include "rtamp/plan/planner.hpp"
+#include "rtamp/task/validate.hpp"
 #include "rtamp/util/error.hpp"
 #include "rtamp/world/scenario_io.hpp"
 
@@ -161,8 +163,6 @@ rtamp::cli::Registrar reg{
       sub.add_flag("--no-progress", a->no_progress,
                    "Do not show the progress line that searches longer than 0.5 s print on a terminal's stderr");
       return [a]() -> int {
-        std::vector<plan::Change> changes;
-        for (const auto& c : a->changes) changes.push_back(plan::Change::parse(c));
         plan::PlannerOptions opt;
         opt.algorithm = plan::parse_algorithm(a->algo);
         opt.graph = a->graph == "full" ? plan::GraphConstruction::Full : plan::GraphConstruction::Partial;
@@ -173,6 +173,8 @@ rtamp::cli::Registrar reg{
         if (!a->no_progress && ::isatty(STDERR_FILENO))
           opt.limits.on_progress = [progress](const plan::SearchProgress& p) { (*progress)(p); };
         world::Scenario scenario = world::load_scenario(a->scenario);
+        task::validate_task(scenario);  // every input is checked before anything runs
+        const std::vector<plan::Change> changes = plan::parse_changes(scenario, a->changes);
         plan::Planner planner(std::move(scenario), opt);
 
         nlohmann::json doc;

@@ -10,6 +10,7 @@
 #include "options.hpp"
 #include "rtamp/episode/episode.hpp"
 #include "rtamp/exec/episode_log.hpp"
+#include "rtamp/task/validate.hpp"
 #include "rtamp/util/format.hpp"
 #include "rtamp/world/scenario_io.hpp"
 
@@ -73,6 +74,7 @@ rtamp::cli::Registrar reg{
       return [o]() -> int {
         using namespace rtamp;
         const world::Scenario scenario = world::load_scenario(o->scenario);
+        task::validate_task(scenario);  // before any output file is opened or the episode starts
         if (!o->video.empty()) rtamp::cli::check_output_file("--video", o->video);  // before ffmpeg starts
         episode::EpisodeOptions opt;
         opt.world = o->world == "symbolic" ? episode::WorldKind::Symbolic : episode::WorldKind::MuJoCo;

@@ -9,7 +9,9 @@
 
 #include "command.hpp"
 #include "options.hpp"
+#include "rtamp/sim/action_check.hpp"
 #include "rtamp/sim/session.hpp"
+#include "rtamp/task/validate.hpp"
 #include "rtamp/util/error.hpp"
 #include "rtamp/world/scenario_io.hpp"
 
@@ -59,7 +61,9 @@ rtamp::cli::Registrar reg{
       return [a]() -> int {
         using namespace rtamp;
         const world::Scenario scenario = world::load_scenario(a->scenario);
+        task::validate_task(scenario);
         const std::vector<sim::SimAction> actions = sim::parse_actions(a->actions);
+        sim::check_actions(actions, scenario, a->actions, a->scripted);  // before anything moves
         // Outputs first: a bad path is refused before the simulation starts.
         if (!a->video.empty()) rtamp::cli::check_output_file("--video", a->video);
         if (!a->snapshot.empty()) rtamp::cli::check_output_file("--snapshot", a->snapshot);

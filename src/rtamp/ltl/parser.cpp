@@ -68,6 +68,7 @@ class Parser {
   Parser(std::string_view src, const SourceLocation& origin) : src_(src), origin_(origin) {}
 
   Formula run();
+  std::vector<AtomOccurrence> atoms();
 
  private:
   struct Operand {
@@ -82,6 +83,7 @@ class Parser {
   };
 
   [[noreturn]] void fail(std::size_t at, const std::string& what) const;
+  SourceLocation where_of(std::size_t at) const;
   Token next();
   std::string describe(const Token& t) const;
   void check_depth(const Formula& f, std::size_t at) const {
@@ -105,6 +107,10 @@ class Parser {
 };
 
 void Parser::fail(std::size_t at, const std::string& what) const {
+  throw Error(what, where_of(at), caret_at(src_, at));  // the line around the column, at most ~120 characters
+}
+
+SourceLocation Parser::where_of(std::size_t at) const {
   if (at > src_.size()) at = src_.size();
   std::size_t line_start = 0;
   int line = 1;
@@ -114,33 +120,7 @@ void Parser::fail(std::size_t at, const std::string& what) const {
       line_start = i + 1;
     }
   }
-  std::size_t line_end = src_.find('\n', line_start);
-  if (line_end == std::string_view::npos) line_end = src_.size();
-  if (line_end > line_start && src_[line_end - 1] == '\r') --line_end;
   const int column = static_cast<int>(at - line_start) + 1;
-
-  // Show at most ~120 characters of the line around the column.
-  std::size_t from = line_start, to = line_end;
-  std::string prefix, suffix;
-  constexpr std::size_t kWindow = 60;
-  if (at > line_start + kWindow) {
-    from = at - kWindow;
-    prefix = "...";
-  }
-  if (to > at + kWindow) {
-    to = at + kWindow;
-    suffix = "...";
-  }
-  std::string shown;
-  shown.reserve(prefix.size() + (to - from) + suffix.size());
-  shown.append(prefix);
-  shown.append(src_.data() + from, to - from);
-  shown.append(suffix);
-  for (char& c : shown) {
-    if (static_cast<unsigned char>(c) < 0x20 && c != '\t') c = ' ';
-  }
-  const int shown_column = static_cast<int>(prefix.size() + (at - from)) + 1;
-
   SourceLocation where = origin_;
   if (origin_.line > 0) {
     where.line = origin_.line + line - 1;
@@ -149,7 +129,22 @@ void Parser::fail(std::size_t at, const std::string& what) const {
     where.line = line;
     where.column = column;
   }
-  throw Error(what, where, caret_line(shown, shown_column));
+  return where;
+}
+
+std::vector<AtomOccurrence> Parser::atoms() {
+  std::vector<AtomOccurrence> out;
+  for (Token t = next(); t.kind != Tok::End; t = next()) {
+    if (t.kind != Tok::Atom) continue;
+    AtomOccurrence a;
+    a.name = std::move(t.text);
+    a.quoted = src_[t.pos] == '"';
+    a.offset = t.pos;
+    a.length = t.len;
+    a.where = where_of(t.pos);
+    out.push_back(std::move(a));
+  }
+  return out;
 }
 
 std::string Parser::describe(const Token& t) const {
@@ -370,5 +365,9 @@ Formula Parser::run() {
 Formula parse(std::string_view text) { return Parser(text, SourceLocation{}).run(); }
 
 Formula parse(std::string_view text, const SourceLocation& origin) { return Parser(text, origin).run(); }
+
+std::vector<AtomOccurrence> atom_occurrences(std::string_view text, const SourceLocation& origin) {
+  return Parser(text, origin).atoms();
+}
 
 }  // namespace rtamp::ltl

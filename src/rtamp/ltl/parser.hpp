@@ -21,7 +21,9 @@
 // and column and whose detail is the offending line with a caret under it.
 #pragma once
 
+#include <string>
 #include <string_view>
+#include <vector>
 
 #include "rtamp/ltl/formula.hpp"
 #include "rtamp/util/error.hpp"
@@ -36,5 +38,20 @@ Formula parse(std::string_view text);
 // Same, for text that starts at `origin` inside some file (e.g. a YAML value):
 // reported locations are shifted by origin.line/column and carry origin.file.
 Formula parse(std::string_view text, const SourceLocation& origin);
+
+// An atomic proposition as written in a formula's text (for checks that point
+// at one atom: task/validate.hpp).
+struct AtomOccurrence {
+  std::string name;        // unescaped, without the quotes
+  bool quoted = false;     // written "in double quotes"
+  std::size_t offset = 0;  // byte offset of its first character (the opening quote if quoted)
+  std::size_t length = 0;  // bytes it takes in the text, quotes included
+  SourceLocation where;    // the location of that first character, as parse() reports locations
+};
+
+// The atoms of `text` in order of appearance, found by the same lexer as
+// parse(). Meant for text that parse() accepts; on text whose lexing fails it
+// throws the same rtamp::Error.
+std::vector<AtomOccurrence> atom_occurrences(std::string_view text, const SourceLocation& origin = {});
 
 }  // namespace rtamp::ltl

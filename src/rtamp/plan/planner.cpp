@@ -4,6 +4,8 @@
 #include <sstream>
 
 #include "rtamp/automata/translate.hpp"
+#include "rtamp/plan/change_check.hpp"
+#include "rtamp/task/validate.hpp"
 #include "rtamp/ltl/parser.hpp"
 #include "rtamp/util/error.hpp"
 #include "rtamp/world/geometry.hpp"
@@ -18,14 +20,6 @@ std::optional<world::PropExpr> parse_atom(const std::string& atom) {
   } catch (const Error&) {
     return std::nullopt;
   }
-}
-
-template <class T>
-bool erase_named(std::vector<T>& v, const std::string& name) {
-  auto it = std::find_if(v.begin(), v.end(), [&](const T& x) { return x.name == name; });
-  if (it == v.end()) return false;
-  v.erase(it);
-  return true;
 }
 }  // namespace
 
@@ -75,42 +69,7 @@ Change Change::add_region(world::Region region) {
   return c;
 }
 
-Change Change::parse(const std::string& text) {
-  std::istringstream in(text);
-  std::vector<std::string> w;
-  for (std::string s; in >> s;) w.push_back(s);
-  auto bad = [&](const std::string& why) {
-    return Error("bad change '" + text + "': " + why,
-                 {}, "expected: move OBJ LOC | add OBJ CLASS LOC | remove OBJ | add-container NAME CLASS REGION "
-                     "[CAPACITY] | remove-container NAME | add-region NAME X Y [CAPACITY]");
-  };
-  auto number = [&](const std::string& s) {
-    try {
-      std::size_t used = 0;
-      const double v = std::stod(s, &used);
-      if (used != s.size()) throw bad("'" + s + "' is not a number");
-      return v;
-    } catch (const std::logic_error&) {
-      throw bad("'" + s + "' is not a number");
-    }
-  };
-  if (w.empty()) throw bad("empty");
-  const std::string& k = w[0];
-  if (k == "move" && w.size() == 3) return relocate(w[1], w[2]);
-  if (k == "add" && w.size() == 4) return add_object(w[1], w[2], w[3]);
-  if (k == "remove" && w.size() == 2) return remove_object(w[1]);
-  if (k == "add-container" && (w.size() == 4 || w.size() == 5))
-    return add_container(w[1], w[2], w[3], w.size() == 5 ? static_cast<int>(number(w[4])) : 4);
-  if (k == "remove-container" && w.size() == 2) return remove_container(w[1]);
-  if (k == "add-region" && (w.size() == 4 || w.size() == 5)) {
-    world::Region r;
-    r.name = w[1];
-    r.center = {number(w[2]), number(w[3]), 0};
-    if (w.size() == 5) r.capacity = static_cast<int>(number(w[4]));
-    return add_region(r);
-  }
-  throw bad("unknown kind or wrong number of words");
-}
+Change Change::parse(const std::string& text) { return parse_change(text); }
 
 std::string Change::to_string() const {
   switch (kind) {
@@ -133,6 +92,7 @@ std::string Change::to_string() const {
 Planner::Planner(world::Scenario scenario, PlannerOptions options)
     : scenario_(std::move(scenario)), options_(std::move(options)) {
   if (scenario_.task.empty()) throw Error("the scenario has no task", scenario_.task_where);
+  task::validate_task(scenario_);  // every atom names a proposition or a valid expression
   formula_ = ltl::parse(scenario_.task, scenario_.task_where);
   ba_ = automata::translate(formula_);
   init();
@@ -225,89 +185,13 @@ void Planner::execute(const task::Action& a) {
 }
 
 void Planner::apply(const Change& c) {
-  auto location_exists = [&](const std::string& l) {
-    return scenario_.find_region(l) != nullptr || scenario_.find_container(l) != nullptr;
-  };
-  auto name_taken = [&](const std::string& n) {
-    return scenario_.find_region(n) || scenario_.find_container(n) || scenario_.find_object(n);
-  };
-  auto point_of = [&](const std::string& loc) -> world::Vec3 {
-    if (const auto* r = scenario_.find_region(loc)) return r->center;
-    if (const auto* k = scenario_.find_container(loc)) {
-      const std::string* reg = placement_.location_of(k->name);
-      if (reg)
-        if (const auto* r = scenario_.find_region(*reg)) return r->center;
-      return k->position;
-    }
-    return {0, 0, 0};
-  };
-  switch (c.kind) {
-    case Change::Kind::Relocate: {
-      const bool is_obj = scenario_.find_object(c.name) != nullptr;
-      const bool is_con = scenario_.find_container(c.name) != nullptr;
-      if (!is_obj && !is_con) throw Error("unknown object or container '" + c.name + "'");
-      if (!location_exists(c.location)) throw Error("unknown location '" + c.location + "'");
-      if (is_con && !scenario_.find_region(c.location))
-        throw Error("container '" + c.name + "' can only be placed in a region, not in '" + c.location + "'");
-      if (c.name == c.location) throw Error("'" + c.name + "' cannot be placed in itself");
-      placement_.things[c.name].location = c.location;
-      // The TS is unchanged: the product graph and all experience stay valid.
-      return;
-    }
-    case Change::Kind::AddObject: {
-      if (name_taken(c.name)) throw Error("name '" + c.name + "' is already used");
-      if (!location_exists(c.location)) throw Error("unknown location '" + c.location + "'");
-      world::Object o;
-      o.name = c.name;
-      o.cls = c.cls.empty() ? "block" : c.cls;
-      o.position = point_of(c.location);
-      scenario_.objects.push_back(o);
-      placement_.set(o.name, c.location, o.cls, false);
-      break;
-    }
-    case Change::Kind::RemoveObject: {
-      if (!scenario_.find_object(c.name)) throw Error("unknown object '" + c.name + "'");
-      erase_named(scenario_.objects, c.name);
-      placement_.things.erase(c.name);
-      if (ts_)
-        if (int t = ts_->find_thing(c.name); t >= 0) cache_.forget_thing(ts_->thing_uid(static_cast<unsigned>(t)));
-      break;
-    }
-    case Change::Kind::AddContainer: {
-      if (name_taken(c.name)) throw Error("name '" + c.name + "' is already used");
-      const auto* r = scenario_.find_region(c.location);
-      if (!r) throw Error("unknown region '" + c.location + "' (containers stand in regions)");
-      world::Container k;
-      k.name = c.name;
-      k.cls = c.cls.empty() ? "tray" : c.cls;
-      k.position = r->center;
-      k.capacity = c.capacity;
-      if (k.capacity < 1) throw Error("container capacity must be >= 1");
-      scenario_.containers.push_back(k);
-      placement_.set(k.name, c.location, k.cls, true);
-      break;
-    }
-    case Change::Kind::RemoveContainer: {
-      if (!scenario_.find_container(c.name)) throw Error("unknown container '" + c.name + "'");
-      const std::string region = placement_.things[c.name].location;
-      for (auto& [name, thing] : placement_.things)
-        if (thing.location == c.name) thing.location = region;  // contents fall where it stood
-      if (hand_ == c.name) hand_ = region;
-      erase_named(scenario_.containers, c.name);
-      placement_.things.erase(c.name);
-      if (ts_)
-        if (int t = ts_->find_thing(c.name); t >= 0) cache_.forget_thing(ts_->thing_uid(static_cast<unsigned>(t)));
-      break;
-    }
-    case Change::Kind::AddRegion: {
-      if (c.region.name.empty()) throw Error("a new region needs a name");
-      if (name_taken(c.region.name)) throw Error("name '" + c.region.name + "' is already used");
-      if (c.region.capacity < 1) throw Error("region capacity must be >= 1");
-      scenario_.regions.push_back(c.region);
-      break;
-    }
-  }
-  dirty_ = true;
+  check_change(c, scenario_);
+  if (c.kind == Change::Kind::RemoveObject || c.kind == Change::Kind::RemoveContainer)
+    if (ts_)
+      if (int t = ts_->find_thing(c.name); t >= 0) cache_.forget_thing(ts_->thing_uid(static_cast<unsigned>(t)));
+  apply_change(c, scenario_, placement_, hand_);
+  // A relocation leaves the TS unchanged: the product graph and all experience stay valid.
+  if (c.kind != Change::Kind::Relocate) dirty_ = true;
 }
 
 PlanResult Planner::plan() {

@@ -6,6 +6,7 @@
 
 #include <stdexcept>
 #include <string>
+#include <string_view>
 
 namespace rtamp {
 
@@ -36,5 +37,11 @@ std::string format_location(const SourceLocation& where);
 
 // The input line with a caret under `column` (1-based), for parser errors.
 std::string caret_line(const std::string& text, int column);
+
+// The line of `text` that holds byte `offset`, with a caret under that byte:
+// control bytes other than tab are shown as spaces (so the caret stays
+// aligned) and a long line is cut to 60 bytes on each side of the caret
+// ("..." marks the cuts).
+std::string caret_at(std::string_view text, std::size_t offset);
 
 }  // namespace rtamp

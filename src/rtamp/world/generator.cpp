@@ -135,14 +135,16 @@ Scenario generate_scenario(const GeneratorOptions& o) {
     p.expr = parse_prop_expr(p.text);
     s.propositions.push_back(p);
   }
-  for (const auto& [pname, text] : o.propositions) {
+  for (std::size_t i = 0; i < o.propositions.size(); ++i) {
     Proposition p;
-    p.name = pname;
-    p.text = text;
-    p.expr = parse_prop_expr(text, SourceLocation{"--prop " + pname, 0, 0});
+    p.name = o.propositions[i].first;
+    p.text = o.propositions[i].second;
+    p.where = i < o.proposition_where.size() ? o.proposition_where[i] : SourceLocation{"--prop " + p.name, 0, 0};
+    p.expr = parse_prop_expr(p.text, p.where);
     s.propositions.push_back(p);
   }
   s.task = o.task.empty() ? "F G all_in_r2" : o.task;
+  if (!o.task.empty()) s.task_where = o.task_where;
   validate(s);
   return s;
 }

@@ -39,8 +39,12 @@ struct GeneratorOptions {
   Layout layout = Layout::Line;
   std::uint64_t seed = 1;
   std::string task;  // empty: "F G all_in_r2"
+  SourceLocation task_where;  // optional: where the task's text comes from (e.g. {"--task", 1, 1})
   // Extra propositions (name, expression), added after all_in_r2.
   std::vector<std::pair<std::string, std::string>> propositions;
+  // Optional, one per extra proposition: where its expression's text starts
+  // (e.g. {"--prop #2", 1, 6}), so that errors point into it.
+  std::vector<SourceLocation> proposition_where;
 };
 
 // Throws rtamp::Error for options out of range or a random layout that cannot

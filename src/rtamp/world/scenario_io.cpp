@@ -123,8 +123,7 @@ class Reader {
     {
       const YAML::Node t = required(root, "task", "scenario", {});
       s.task = text_value(t, "task");
-      s.task_where = loc(t);
-      if (is_quoted(t)) ++s.task_where.column;
+      s.task_where = text_start(t);
     }
     if (auto o = optional(root, "operator"))
       for_each_item(*o, "operator", [&](const YAML::Node& n) { s.interventions.push_back(read_intervention(n)); });
@@ -183,6 +182,31 @@ class Reader {
     if (m.is_null() || m.pos < 0 || static_cast<std::size_t>(m.pos) >= text_.size()) return false;
     const char c = text_[static_cast<std::size_t>(m.pos)];
     return n.IsScalar() && (c == '"' || c == '\'');
+  }
+
+  // Where a scalar's text starts: after the opening quote of a quoted scalar;
+  // on its first line of content for a block scalar (| or >).
+  SourceLocation text_start(const YAML::Node& n) const {
+    SourceLocation l = loc(n);
+    const YAML::Mark m = n.Mark();
+    if (!n.IsScalar() || m.is_null() || m.pos < 0 || static_cast<std::size_t>(m.pos) >= text_.size()) return l;
+    const auto pos = static_cast<std::size_t>(m.pos);
+    const char c = text_[pos];
+    if (c == '"' || c == '\'') {
+      ++l.column;
+    } else if (c == '|' || c == '>') {
+      std::size_t nl = text_.find('\n', pos);
+      int line = l.line;
+      while (nl != std::string_view::npos) {
+        const std::size_t start = nl + 1;
+        ++line;
+        nl = text_.find('\n', start);
+        const std::string_view content = text_.substr(start, (nl == std::string_view::npos ? text_.size() : nl) - start);
+        const std::size_t first = content.find_first_not_of(" \r");
+        if (first != std::string_view::npos) return SourceLocation{source_, line, static_cast<int>(first) + 1};
+      }
+    }
+    return l;
   }
 
   void remember(const SourceLocation& element, const std::string& field, const YAML::Node& value) {
@@ -418,8 +442,7 @@ class Reader {
       if (!value.IsScalar())
         fail(value, "proposition " + quoted(p.name) + " must be an expression in quotes, found " + describe(value));
       p.text = text_value(value, "proposition " + quoted(p.name));
-      p.where = loc(value);
-      if (is_quoted(value)) ++p.where.column;
+      p.where = text_start(value);
       remember(p.where, "name", key);
       p.expr = parse_prop_expr(p.text, p.where);
       out.push_back(std::move(p));

@@ -9,20 +9,13 @@
 
 #include "rtamp/world/fit.hpp"
 #include "rtamp/world/geometry.hpp"
+#include "rtamp/world/names.hpp"
 #include "rtamp/world/propositions.hpp"
 #include "rtamp/world/suggest.hpp"
 
 namespace rtamp::world {
 
 namespace {
-
-bool ident_start(char c) { return std::isalpha(static_cast<unsigned char>(c)) || c == '_'; }
-bool ident_char(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; }
-
-bool is_identifier(std::string_view s) {
-  if (s.empty() || s.size() > kMaxNameLength || !ident_start(s[0])) return false;
-  return std::all_of(s.begin(), s.end(), ident_char);
-}
 
 std::string quote(const std::string& s) {
   std::string out;  // (not "'" + s + "'": GCC 12 warns -Wrestrict on that falsely)
@@ -90,22 +83,11 @@ class Validator {
   }
 
   void check_name(const std::string& name, const char* kind, const SourceLocation& where) const {
-    const SourceLocation loc = at(where, "name");
-    if (name.empty()) fail(loc, std::string(kind) + " has no name");
-    if (!is_valid_name(name)) {
-      if (name == kNoLocation || is_prop_keyword(name))
-        fail(loc, std::string(kind) + " name " + quote(name) + " is a reserved word");
-      fail(loc, std::string(kind) + " name " + quote(name) +
-                    " is not an identifier (letters, digits and '_', not starting with a digit, at most 64 characters)");
-    }
+    check_new_name(name, kind, at(where, "name"));
   }
 
   void check_class(const std::string& cls, const std::string& owner, const SourceLocation& where) const {
-    const SourceLocation loc = at(where, "class");
-    if (cls == "object")
-      fail(loc, owner + ": class 'object' is reserved (in propositions it means every object that is not a container)");
-    if (!is_valid_name(cls))
-      fail(loc, owner + ": class " + quote(cls) + " is not an identifier (letters, digits and '_')");
+    check_class_name(cls, owner, at(where, "class"));
   }
 
   void check_vec(const Vec3& v, const std::string& owner, const char* field, const SourceLocation& where) const {
@@ -250,7 +232,8 @@ class Validator {
     }
   }
 
-  // Names that interventions add, so that propositions may mention them.
+  // Names that interventions add (an intervention may only add a name that is
+  // not of the other kind earlier or later).
   void collect_intervention_names() {
     for (const Intervention& iv : s_.interventions) {
       if (iv.kind == Intervention::Kind::Add) {
@@ -263,50 +246,9 @@ class Validator {
     }
   }
 
-  // Where `word` first appears as a whole word in a proposition's text.
-  SourceLocation word_location(const Proposition& p, const std::string& word) const {
-    SourceLocation loc = p.where;
-    if (loc.line <= 0 || loc.column <= 0) return loc;
-    std::size_t pos = 0;
-    while ((pos = p.text.find(word, pos)) != std::string::npos) {
-      const bool left = pos == 0 || !ident_char(p.text[pos - 1]);
-      const bool right = pos + word.size() >= p.text.size() || !ident_char(p.text[pos + word.size()]);
-      if (left && right) {
-        loc.column += static_cast<int>(pos);
-        return loc;
-      }
-      pos += word.size();
-    }
-    return loc;
-  }
-
-  std::string caret(const Proposition& p, const std::string& word) const {
-    const SourceLocation loc = word_location(p, word);
-    if (p.where.column <= 0 || p.text.find('\n') != std::string::npos) return {};
-    return caret_line(p.text, loc.column - p.where.column + 1);
-  }
-
   void check_propositions() const {
     std::set<std::string> seen;
-    std::vector<std::string> things, locations, classes{"object"};
-    for (const Region& r : s_.regions) locations.push_back(r.name);
-    for (const Container& c : s_.containers) {
-      locations.push_back(c.name);
-      things.push_back(c.name);
-    }
-    for (const std::string& c : added_containers_) {
-      locations.push_back(c);
-      things.push_back(c);
-    }
-    for (const Object& o : s_.objects) things.push_back(o.name);
-    for (const std::string& o : added_objects_) things.push_back(o);
-    for (const auto* set : {&object_classes_, &container_classes_, &added_object_classes_, &added_container_classes_})
-      for (const std::string& c : *set) classes.push_back(c);
-    std::sort(classes.begin(), classes.end());
-    classes.erase(std::unique(classes.begin(), classes.end()), classes.end());
-    auto known = [](const std::vector<std::string>& v, const std::string& n) {
-      return std::find(v.begin(), v.end(), n) != v.end();
-    };
+    const Vocabulary vocabulary(s_);
     for (const Proposition& p : s_.propositions) {
       const SourceLocation name_loc = at(p.where, "name");
       if (!is_valid_proposition_name(p.name))
@@ -315,24 +257,7 @@ class Validator {
       if (!seen.insert(p.name).second) fail(name_loc, "duplicate proposition " + quote(p.name));
       if (defined_.count(p.name))
         fail(name_loc, "proposition " + quote(p.name) + " has the name of " + defined_.at(p.name).first);
-      PropNames names;
-      collect_names(p.expr, names);
-      const std::string owner = "proposition " + quote(p.name) + ": ";
-      for (const std::string& t : names.things)
-        if (!known(things, t)) {
-          std::string what = owner + "unknown object " + quote(t);
-          if (known(locations, t)) what = owner + quote(t) + " is a region; 'X in L' needs an object or container X";
-          fail(word_location(p, t), what + (known(locations, t) ? "" : suggestion(t, things)), caret(p, t));
-        }
-      for (const std::string& l : names.locations)
-        if (!known(locations, l)) {
-          const std::string what = known(things, l) ? owner + quote(l) + " is an object, not a location"
-                                                    : owner + "unknown location " + quote(l) + suggestion(l, locations);
-          fail(word_location(p, l), what, caret(p, l));
-        }
-      for (const std::string& c : names.classes)
-        if (!known(classes, c))
-          fail(word_location(p, c), owner + "unknown class " + quote(c) + suggestion(c, classes), caret(p, c));
+      check_expression_names(p.expr, p.text, p.where, vocabulary, "proposition " + quote(p.name) + ": ");
     }
   }
 
@@ -408,8 +333,7 @@ class Validator {
           const bool cont = iv.kind == Intervention::Kind::AddContainer;
           const char* field = cont ? "container" : "object";
           need_object(field);
-          if (!is_valid_name(iv.subject))
-            fail(at(iv.where, field), owner + "name " + quote(iv.subject) + " is not a valid name");
+          check_new_name(iv.subject, owner + field, at(iv.where, field));
           if (s_.find_region(iv.subject) || objects.count(iv.subject) || containers.count(iv.subject))
             fail(at(iv.where, field), owner + quote(iv.subject) + " already exists at this time");
           if (ever.count(iv.subject) && (cont ? !containers_were(iv.subject) : !objects_were(iv.subject)))
@@ -464,15 +388,6 @@ class Validator {
 };
 
 }  // namespace
-
-bool is_valid_name(std::string_view name) {
-  return is_identifier(name) && !is_prop_keyword(name) && name != kNoLocation;
-}
-
-bool is_valid_proposition_name(std::string_view name) {
-  if (!is_identifier(name) || name == "true" || name == "false") return false;
-  return std::islower(static_cast<unsigned char>(name[0])) || name[0] == '_';
-}
 
 void validate(const Scenario& s) {
   const detail::FieldLocator none;

@@ -27,18 +27,15 @@
 #include <functional>
 #include <string_view>
 
+#include "rtamp/world/names.hpp"  // the name rules (is_valid_name, ...)
 #include "rtamp/world/scenario.hpp"
 
 namespace rtamp::world {
 
 void validate(const Scenario& s);
 
-bool is_valid_name(std::string_view name);              // regions, containers, objects, classes
-bool is_valid_proposition_name(std::string_view name);  // atoms of the LTL task
-
 inline constexpr double kMaxCoordinate = 1000.0;  // m
 inline constexpr double kMaxSize = 100.0;         // m
-inline constexpr std::size_t kMaxNameLength = 64;
 
 namespace detail {
 // Maps (an element's `where`, a field name such as "size") to the field's own

@@ -1,0 +1,530 @@
+// A table of bad inputs for every entry point of the rtamp binary (issue 13,
+// "How it is checked"): scenario files (malformed, hostile and wrong YAML;
+// operator scripts), the LTL task and its quoted atoms through plan, run,
+// batch and sim, `plan --change`, `sim --do`, `gen --task` / `--prop`, and
+// hostile LTL for ltl2ba. For every case the binary must exit with status 2
+// (not a signal, not a crash), say `rtamp: error: WHERE: WHAT` on stderr with
+// the expected location (file:line:col, or option #occurrence:1:col) as its
+// first line (further lines only the input and its caret), print nothing on
+// stdout, and create none of the output files it was given (so nothing was
+// written and no episode started: an episode's log would exist).
+//
+// The binary runs through fork/exec with an argument vector (no shell), so
+// arguments carry control bytes and quotes as they are; a child that runs
+// longer than 120 s is killed (a hang fails the case instead of the suite).
+#include <fcntl.h>
+#include <gtest/gtest.h>
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "run_cli.hpp"
+
+namespace rtamp::cli::testing {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct Outcome {
+  bool exited = false;
+  int code = -1;
+  int signal = 0;
+  std::string out, err;
+};
+
+Outcome run_argv(const std::vector<std::string>& args) {
+  const fs::path dir = scratch();
+  const std::string out = (dir / "bad.out").string(), err = (dir / "bad.err").string();
+  const pid_t pid = ::fork();
+  if (pid == 0) {
+    const int in = ::open("/dev/null", O_RDONLY);
+    const int o = ::open(out.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    const int e = ::open(err.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    if (in < 0 || o < 0 || e < 0) ::_exit(127);
+    ::dup2(in, 0);
+    ::dup2(o, 1);
+    ::dup2(e, 2);
+    ::chdir(dir.c_str());
+    ::alarm(120);  // a hang ends in SIGALRM: the case fails, the suite goes on
+    std::vector<char*> argv;
+    argv.push_back(const_cast<char*>(RTAMP_BIN));
+    for (const std::string& a : args) argv.push_back(const_cast<char*>(a.c_str()));
+    argv.push_back(nullptr);
+    ::execv(RTAMP_BIN, argv.data());
+    ::_exit(127);
+  }
+  Outcome r;
+  int status = 0;
+  if (pid < 0 || ::waitpid(pid, &status, 0) != pid) return r;
+  r.exited = WIFEXITED(status);
+  if (r.exited) r.code = WEXITSTATUS(status);
+  if (WIFSIGNALED(status)) r.signal = WTERMSIG(status);
+  r.out = slurp(out);
+  r.err = slurp(err);
+  return r;
+}
+
+struct Case {
+  std::string group;
+  std::vector<std::string> args;
+  std::string where;  // in the first line of stderr, e.g. "c3.yaml:13:12:" or "--change #2:1:14:"
+  std::string what;   // in the first line too (optional)
+  std::vector<std::string> not_created;  // names in the scratch directory that must not exist afterwards
+};
+
+// ---------------------------------------------------------------- inputs
+
+int g_files = 0;
+
+// Writes `text` to a new file in the scratch directory; returns its path.
+std::string file(const std::string& text, const std::string& ext = ".yaml") {
+  const fs::path p = scratch() / ("in" + std::to_string(++g_files) + ext);
+  std::ofstream(p, std::ios::binary) << text;
+  return p.string();
+}
+std::string name_of(const std::string& path) { return fs::path(path).filename().string(); }
+
+// A valid scenario (the 3-block-tray scene, flow style); the task is on line 13
+// and its text starts at column 7; `tail` goes after it (e.g. an operator).
+const char* kHead =
+    "name: t\n"                                                                                          // 1
+    "regions:\n"                                                                                         // 2
+    "  - {name: r1, center: [0.40, 0.32, 0], size: [0.36, 0.36], capacity: 4}\n"                         // 3
+    "  - {name: r2, center: [0.40, -0.32, 0], size: [0.36, 0.36], capacity: 4}\n"                        // 4
+    "containers:\n"                                                                                      // 5
+    "  - {name: r3, class: tray, position: [0.40, 0.25, 0], size: [0.30, 0.16, 0.03], capacity: 3}\n"    // 6
+    "objects:\n"                                                                                         // 7
+    "  - {name: o1, class: block, position: [0.32, 0.40, 0], size: [0.04, 0.04, 0.04]}\n"                // 8
+    "  - {name: o2, class: block, position: [0.40, 0.40, 0], size: [0.04, 0.04, 0.04]}\n"                // 9
+    "  - {name: o3, class: block, position: [0.48, 0.40, 0], size: [0.04, 0.04, 0.04]}\n"                // 10
+    "propositions:\n"                                                                                    // 11
+    "  all_in_r2: \"all block in r2\"\n";                                                                // 12
+constexpr int kTaskLine = 13;
+
+std::string scenario(const std::string& task = "F G all_in_r2", const std::string& tail = "") {
+  return std::string(kHead) + "task: " + task + "\n" + tail;
+}
+
+// The base scenario with line `line` (1-based) replaced by `text`.
+std::string with_line(int line, const std::string& text) {
+  std::string s = scenario();
+  std::size_t start = 0;
+  for (int i = 1; i < line; ++i) start = s.find('\n', start) + 1;
+  const std::size_t end = s.find('\n', start);
+  return s.substr(0, start) + text + s.substr(end);
+}
+
+// "FILE:LINE:COL:" of the first `word` (from `from`) in line `line` of `text` written to `path`.
+std::string at(const std::string& path, const std::string& text, int line, const std::string& word,
+               std::size_t from = 0) {
+  std::size_t start = 0;
+  for (int i = 1; i < line; ++i) start = text.find('\n', start) + 1;
+  const std::string l = text.substr(start, text.find('\n', start) - start);
+  const std::size_t col = l.find(word, from);
+  EXPECT_NE(col, std::string::npos) << word << " not in " << l;
+  return name_of(path) + ":" + std::to_string(line) + ":" + std::to_string(col + 1) + ":";
+}
+
+// ---------------------------------------------------------------- the table
+
+void yaml_cases(std::vector<Case>& t) {
+  auto add = [&](const std::string& text, int line, const std::string& word, const std::string& what) {
+    const std::string p = file(text);
+    t.push_back({"yaml", {"plan", p}, at(p, text, line, word), what});
+  };
+  auto add_file = [&](const std::string& text, const std::string& where, const std::string& what) {
+    const std::string p = file(text);
+    t.push_back({"yaml", {"plan", p}, name_of(p) + where, what});
+  };
+  add_file("", ":1:1:", "empty");
+  add_file("# only a comment\n\n", ":1:1:", "empty");
+  add_file("---\n...\n", ":1:1:", "empty");
+  {
+    std::string garbage;
+    for (int i = 0; i < 512; ++i) garbage += static_cast<char>((i * 131 + 7) % 256);
+    add_file(garbage, ":", "");
+  }
+  add_file(std::string("name: t\0x\n", 10), ":", "");
+  add_file(std::string(100000, '['), ":", "");
+  add_file(std::string(100000, '{'), ":", "");
+  add_file("- a\n- b\n", ":1:1:", "a scenario must be a mapping");
+  add_file(scenario() + "---\nname: u\n", ":14:1:", "more than one YAML document");
+  {  // a billion laughs: aliases that would expand to 10^9 nodes
+    std::string s = "a: &a [x, x, x, x, x, x, x, x, x, x]\n";
+    for (char c = 'b'; c <= 'i'; ++c)
+      s += std::string(1, c) + ": &" + c + " [*" + char(c - 1) + ", *" + char(c - 1) + ", *" + char(c - 1) + ", *" +
+           char(c - 1) + ", *" + char(c - 1) + ", *" + char(c - 1) + ", *" + char(c - 1) + ", *" + char(c - 1) +
+           ", *" + char(c - 1) + ", *" + char(c - 1) + "]\n";
+    add_file(s, ":1:1:", "unknown key 'a' in scenario");
+  }
+  add_file(std::string(17u << 20, ' '), ":", "too large");
+  add(with_line(3, "  - {name: r1, center: [1e400, 0.32, 0], size: [0.36, 0.36], capacity: 4}"), 3, "1e400",
+      "must be a number");
+  add(with_line(3, "  - {name: r1, center: [0.40, 0.32, 0], size: [0.36, 0.36], capacity: \"6\"}"), 3, "\"6\"",
+      "must be an integer");
+  add(with_line(3, "  - {name: r1, center: [0.40, 0.32, 0], size: [0.36, 0.36], capacity: 99999999999}"), 3,
+      "99999999999", "out of range");
+  add(with_line(3, "  - {name: r1, center: [0.40, 0.32, 0], size: [0.36, 0.36], capacity: 0}"), 3, "0}",
+      "at least 1");
+  add(with_line(3, "  - {name: r1, center: [0.40, 0.32, 0], size: [0.36, 0.36], capasity: 4}"), 3, "capasity",
+      "did you mean 'capacity'?");
+  add(with_line(3, "  - {name: r1, name: r5, center: [0.40, 0.32, 0], size: [0.36, 0.36]}"), 3, "name: r5",
+      "duplicate key");
+  add(with_line(3, "  - {name: in, center: [0.40, 0.32, 0], size: [0.36, 0.36], capacity: 4}"), 3, "in,",
+      "reserved word");
+  add(with_line(3, "  - {name: none, center: [0.40, 0.32, 0], size: [0.36, 0.36], capacity: 4}"), 3, "none",
+      "reserved word");
+  add(with_line(8, "  - {name: o1, class: object, position: [0.32, 0.40, 0]}"), 8, "object,", "reserved");
+  add(with_line(8, "  - {name: o1, class: tray, position: [0.32, 0.40, 0]}"), 6, "tray", "is also the class of objects");
+  add(with_line(4, "  - {name: r2, center: [0.40, 0.32, 0], size: [0.36, 0.36], capacity: 4}"), 4, "{",
+      "overlaps region 'r1'");
+  add(with_line(8, "  - {name: o1, class: block, position: [0.9, 0.9, 0]}"), 8, "[0.9", "outside every region");
+  add(with_line(8, "  - {name: " + std::string(10000, 'x') + ", class: block, position: [0.32, 0.40, 0]}"), 8,
+      "xxx", "not an identifier");
+  add(with_line(8, "  - {name: \"o 1\", class: block, position: [0.32, 0.40, 0]}"), 8, "\"o 1\"",
+      "not an identifier");
+  add(with_line(8, "  - {name: o2, class: block, position: [0.32, 0.40, 0]}"), 9, "o2", "duplicate name 'o2'");
+  add(with_line(8, "  - {name: \"o\\x07\", class: block, position: [0.32, 0.40, 0]}"), 8, "\"o", "not an identifier");
+  add(with_line(12, "  all_in_r2: \"all blok in r2\""), 12, "blok", "did you mean 'block'?");
+  add(with_line(12, "  all_in_r2: \"all block in (\""), 12, "(\"", "expected a location name");
+  {  // the text starts at column 15; the 201st '(' is too deep
+    const std::string p = file(with_line(12, "  all_in_r2: \"" + std::string(300, '(') + "o1 in r2" + std::string(300, ')') + "\""));
+    t.push_back({"yaml", {"plan", p}, name_of(p) + ":12:215:", "nested too deeply"});
+  }
+  add(with_line(12, "  All_in_r2: \"all block in r2\""), 12, "All", "not a valid atom");
+  add(with_line(12, "  o1: \"all block in r2\""), 12, "o1", "has the name of an object");
+  add(with_line(12, "  all_in_r2: \"o1 in r9\""), 12, "r9", "unknown location 'r9'");
+  add(with_line(12, "  all_in_r2: \"count block in r2 >= 99999999\""), 12, "99999999", "too large");
+  add(with_line(1, "name: t\nrobot: {model: ur10}"), 2, "ur10", "unknown robot model");
+  add(with_line(3, "  - {name: r1, center: [0.40, 0.32, 0], size: [-0.36, 0.36], capacity: 4}"), 3, "[-0.36",
+      "must be positive");
+  add(with_line(3, "  - {name: r1, center: [1e6, 0.32, 0], size: [0.36, 0.36], capacity: 4}"), 3, "[1e6",
+      "out of range");
+  add(with_line(3, "  - {name: r1, center: \"here\", size: [0.36, 0.36], capacity: 4}"), 3, "\"here\"",
+      "must be a list");
+  add(with_line(8, "  - {name: o1, class: block, position: [0.32, 0.40, 0], size: [0.04, 0.04]}"), 8, "[0.04, 0.04]",
+      "must be a list [x, y, z]");
+  add_file("name: t\nregions: 5\nobjects: []\ntask: F G p\n", ":2:10:", "must be a list");
+  add(with_line(8, "  - {name: o1, class: block, position: [0.32, 0.40, 0], colour: red}"), 8, "colour",
+      "unknown key 'colour'");
+  add(with_line(8, "  - {name: o1, class: block}"), 8, "{", "missing the required key 'position'");
+  add(with_line(8, "  - {[a]: 1, name: o1, class: block, position: [0.32, 0.40, 0]}"), 8, "[a]", "must be words");
+  add_file(with_line(8, "\t- {name: o1, class: block, position: [0.32, 0.40, 0]}"), ":8:", "invalid YAML");
+  add(with_line(1, "name: t\ndescription: \"\xff\xfe bad\""), 2, "\"", "UTF-8");
+  {
+    add_file(scenario("\"\""), ":13:8:", "the task is empty");
+  }
+  {
+    const std::string s = scenario("{a: 1}");
+    add(s, kTaskLine, "{", "must be text");
+  }
+  // Operator scripts.
+  auto op = [&](const std::string& action, const std::string& word, const std::string& what) {
+    const std::string s = scenario("F G all_in_r2", "operator:\n  - " + action + "\n");
+    add(s, kTaskLine + 2, word, what);
+  };
+  op("{time: 5, action: relocat, object: o1, to: r2}", "relocat", "did you mean 'relocate'?");
+  op("{time: -1, action: relocate, object: o1, to: r2}", "-1", "time must be a finite number");
+  op("{time: .nan, action: relocate, object: o1, to: r2}", ".nan", "");
+  op("{time: 5, action: take_from_gripper, object: o1, to: r2}", "object:", "unknown key 'object'");
+  op("{time: 5, action: relocate, object: o1, to: r9}", "r9", "unknown location 'r9'");
+  op("{time: 5, action: relocate, object: o9, to: r2}", "o9", "unknown object or container 'o9'");
+  op("{time: 5, action: add, object: o9, class: object, to: r2}", "object,", "reserved");
+  op("{time: 5, action: add, object: in, to: r2}", "in,", "reserved word");
+  op("{time: 5, action: remove, object: o9}", "o9", "unknown object 'o9'");
+  op("{time: 5, action: remove, object: r3}", "r3", "use remove_container");
+  op("{time: 5, action: add, object: o1, to: r2}", "o1", "already exists");
+  op("{time: 5, action: add_container, container: t2, to: r3}", "r3", "do not nest");
+  op("{time: 5, action: relocate, object: o1, to: r2, position: [0.4, 0.32, 0]}", "[0.4", "not inside region 'r2'");
+  op("{time: 5, action: relocate, object: o1, to: r2, speed: 3}", "speed", "unknown key 'speed'");
+}
+
+struct TaskError {
+  std::string task, word, what;
+};
+
+const std::vector<TaskError>& task_errors() {
+  static const std::vector<TaskError> t = {
+      {"F G \"all blocks in r2\"", "blocks", "unknown class 'blocks' (did you mean 'block'?)"},
+      {"F G \"o1 in r9\"", "r9", "unknown location 'r9'"},
+      {"F G \"o1 in (\"", "(", "expected a location name"},
+      {"F G \"o9 in r2\"", "o9", "unknown object 'o9'"},
+      {"F G all_in_r3", "all_in_r3", "did you mean 'all_in_r2'?"},
+      {"F G o1", "o1", "'o1' is an object"},
+      {"F G (all_in_r2", "(", "missing ')'"},
+      {"F G \"r1 in r2\"", "r1", "'r1' is a region"},
+      {"F G \"o1 in o2\"", "o2", "'o2' is an object, not a location"},
+      {"F G \"count block in r2 >= 99999999\"", "99999999", "too large"},
+      {"F G \"\"", "\"", "empty quoted atomic proposition"},
+      {"F G \"o1 in r2", "\"", "unterminated"},
+      {"F G all_in_r2 & F nothing", "nothing", "not a proposition of the scenario"},
+      {"F G \"all block in r2\" & G !\"o1 in r9\"", "r9", "unknown location 'r9'"},
+      {"F G All", "All", "unexpected 'A'"},
+      {"F G 2", "2", "the only numbers"},
+      {"F G \"all_in_r2 | o1 in r2\"", "|", "expected 'in' after 'all_in_r2'"},
+      {"F G \"any blocks in r2\" | F \"all block in r2\"", "blocks", "unknown class 'blocks'"},
+      {"G (\"o1 in r2\" -> F \"o1 in r7\")", "r7", "unknown location 'r7'"},
+      {"F G \"all tray in r9\"", "r9", "unknown location 'r9'"},
+  };
+  return t;
+}
+
+void task_cases(std::vector<Case>& t) {
+  // Each task error through every command that reads the scenario.
+  for (const TaskError& e : task_errors()) {
+    const std::string s = scenario(e.task);
+    const std::string p = file(s);
+    const std::string where = at(p, s, kTaskLine, e.word, 6);
+    t.push_back({"task/plan", {"plan", p}, where, e.what});
+    t.push_back({"task/plan", {"plan", p, "--json", "--change", "move o1 r2"}, where, e.what});
+    t.push_back({"task/run", {"run", p, "--world", "symbolic", "--log", "ep.jsonl", "--trees", "trees"}, where,
+                 e.what, {"ep.jsonl", "trees"}});
+    t.push_back({"task/batch", {"batch", p, "--trials", "1", "--world", "symbolic", "-o", "b.csv"}, where, e.what,
+                 {"b.csv"}});
+    t.push_back({"task/sim", {"sim", p, "--do", "move o1 r2", "--mjcf", "m.xml"}, where, e.what, {"m.xml"}});
+  }
+  // The MuJoCo world: refused before MuJoCo starts, no video, no log.
+  {
+    const std::string s = scenario("F G \"all blocks in r2\"");
+    const std::string p = file(s);
+    t.push_back({"task/run", {"run", p, "--log", "mj.jsonl"}, at(p, s, kTaskLine, "blocks"), "unknown class",
+                 {"mj.jsonl"}});
+  }
+  // A task over several lines: the line of the atom.
+  {
+    const std::string s = std::string(kHead) + "task: |\n  F G all_in_r2 &\n  G \"o1 in r9\"\n";
+    const std::string p = file(s);
+    t.push_back({"task/plan", {"plan", p}, name_of(p) + ":15:", "unknown location 'r9'"});
+  }
+  // The task in YAML quotes: the column counts from the quote.
+  {
+    const std::string s = scenario("'F G \"all blocks in r2\"'");
+    const std::string p = file(s);
+    t.push_back({"task/plan", {"plan", p}, at(p, s, kTaskLine, "blocks"), "unknown class"});
+  }
+  // Hostile tasks.
+  {
+    const std::string s = scenario(std::string(5000, '(') + "all_in_r2" + std::string(5000, ')'));
+    const std::string p = file(s);
+    t.push_back({"task/plan", {"plan", p}, name_of(p) + ":13:", "too deeply nested"});
+  }
+  {
+    std::string task = "F G all_in_r2";
+    for (int i = 0; i < 20000; ++i) task += " & all_in_r2";
+    task += " & \"o1 in r9\"";
+    const std::string s = scenario(task);
+    const std::string p = file(s);
+    t.push_back({"task/plan", {"plan", p}, at(p, s, kTaskLine, "r9"), "unknown location 'r9'"});
+  }
+  {
+    const std::string s = scenario("\"F G \\x01 all_in_r2\"");
+    const std::string p = file(s);
+    t.push_back({"task/plan", {"plan", p}, name_of(p) + ":13:", "0x01"});
+  }
+}
+
+void change_cases(std::vector<Case>& t) {
+  auto add = [&](std::vector<std::string> changes, const std::string& where, const std::string& what) {
+    std::vector<std::string> args = {"plan", "3-block-tray"};
+    for (const std::string& c : changes) {
+      args.push_back("--change");
+      args.push_back(c);
+    }
+    t.push_back({"change", args, where, what});
+  };
+  add({"add in block r1"}, "--change #1:1:5:", "reserved word");
+  add({"add o9 object r1"}, "--change #1:1:8:", "class 'object' is reserved");
+  add({"add-region r9 0.40 0.32"}, "--change #1:1:15:", "overlaps region 'r1'");
+  add({"add-region r9 0.40 -0.32"}, "--change #1:1:15:", "overlaps region 'r2'");
+  add({"add-container t9 tray r1 99999999999"}, "--change #1:1:26:", "out of range");
+  add({"add-container t9 tray r1 1e10"}, "--change #1:1:26:", "must be an integer");
+  add({"add-container t9 tray r1 0"}, "--change #1:1:26:", "at least 1");
+  add({"add-container t9 tray r1 -3"}, "--change #1:1:26:", "at least 1");
+  add({"add-container t9 tray r1 4.5"}, "--change #1:1:26:", "must be an integer");
+  add({"move o1 r2", "add o9 block r9"}, "--change #2:1:14:", "unknown location 'r9'");
+  add({"mov o1 r2"}, "--change #1:1:1:", "did you mean 'move'?");
+  add({"move o1"}, "--change #1:1:8:", "takes 2 arguments");
+  add({"move o1 r2 r1"}, "--change #1:1:12:", "takes 2 arguments");
+  add({""}, "--change #1:1:1:", "empty");
+  add({"   "}, "--change #1:1:1:", "empty");
+  add({"move o9 r2"}, "--change #1:1:6:", "unknown object or container 'o9'");
+  add({"move o1 r9"}, "--change #1:1:9:", "unknown location 'r9'");
+  add({"move o1 o2"}, "--change #1:1:9:", "'o2' is an object, not a location");
+  add({"move r1 r2"}, "--change #1:1:6:", "'r1' is a region");
+  add({"move r3 r3"}, "--change #1:1:9:", "cannot be placed in itself");
+  add({"move r3 o1"}, "--change #1:1:9:", "is an object");
+  add({"add-container t2 tray r3"}, "--change #1:1:23:", "containers do not nest");
+  add({"add o9 tray r1"}, "--change #1:1:8:", "is the class of containers");
+  add({"add-container t2 block r1"}, "--change #1:1:18:", "is the class of objects");
+  add({"add-container t2 object r1"}, "--change #1:1:18:", "class 'object' is reserved");
+  add({"remove r3"}, "--change #1:1:8:", "use remove-container");
+  add({"remove o9"}, "--change #1:1:8:", "unknown object 'o9'");
+  add({"remove-container o1"}, "--change #1:1:18:", "use remove");
+  add({"remove-container r1"}, "--change #1:1:18:", "unknown container 'r1'");
+  add({"add o1 block r1"}, "--change #1:1:5:", "already used by an object");
+  add({"add r1 block r2"}, "--change #1:1:5:", "already used by a region");
+  add({"add all_in_r2 block r1"}, "--change #1:1:5:", "already used by a proposition");
+  add({"add-region r9 nan 0"}, "--change #1:1:15:", "out of range");
+  add({"add-region r9 inf 0"}, "--change #1:1:15:", "out of range");
+  add({"add-region r9 1e400 0"}, "--change #1:1:15:", "out of range");
+  add({"add-region r9 abc 0"}, "--change #1:1:15:", "must be a number");
+  add({"add-region r9 5000 0"}, "--change #1:1:15:", "out of range");
+  add({"add-region r9 2 0x10"}, "--change #1:1:17:", "must be a number");
+  add({"add-region 9r 3 3"}, "--change #1:1:12:", "not an identifier");
+  add({"add-region none 3 3"}, "--change #1:1:12:", "reserved word");
+  add({"add-region r9 3 3 0"}, "--change #1:1:19:", "at least 1");
+  add({"add-region r9 3 3 4.5"}, "--change #1:1:19:", "must be an integer");
+  add({"add-region r9 3"}, "--change #1:1:16:", "takes 3 or 4 arguments");
+  add({"add-container t9 tray"}, "--change #1:1:22:", "takes 3 or 4 arguments");
+  add({"add o9 block r1 r2"}, "--change #1:1:17:", "takes 3 arguments");
+  add({"add o9 block o1"}, "--change #1:1:14:", "is an object, not a location");
+  add({"add " + std::string(5000, 'x') + " block r1"}, "--change #1:1:5:", "not an identifier");
+  add({"move o1\x01 r2"}, "--change #1:1:6:", "unknown object or container");
+  add({"remove o1", "move o1 r2"}, "--change #2:1:6:", "unknown object or container 'o1'");
+  add({"remove-container r3", "move o1 r3"}, "--change #2:1:9:", "unknown location 'r3'");
+  add({"add-region r9 2 2", "add-region r8 2 2.05"}, "--change #2:1:15:", "overlaps region 'r9'");
+  add({"move o1 r2", "move o2 r2", "move o3 r9"}, "--change #3:1:9:", "unknown location 'r9'");
+  t.push_back({"change",
+               {"plan", "3-block-tray", "--json", "--change", "add-region r9 0.40 0.32"},
+               "--change #1:1:15:",
+               "overlaps"});
+}
+
+void sim_cases(std::vector<Case>& t) {
+  auto add = [&](const std::string& actions, const std::string& where, const std::string& what) {
+    t.push_back({"sim --do", {"sim", "3-block-tray", "--do", actions, "--mjcf", "sim.xml"}, where, what, {"sim.xml"}});
+  };
+  add("move o1 r9", "--do:1:9:", "unknown location 'r9'");
+  add("move o9 r2", "--do:1:6:", "unknown object or container 'o9'");
+  add("pick r1", "--do:1:6:", "'r1' is a region");
+  add("place r9", "--do:1:7:", "unknown location 'r9'");
+  add("place o1", "--do:1:7:", "is an object, not a location");
+  add("move o1 r2; move o2 r8", "--do:1:21:", "unknown location 'r8'");
+  add("move r3 r3", "--do:1:9:", "cannot be placed in itself");
+  add("move r3 o1", "--do:1:9:", "is an object, not a location");
+  add("fly o1", "--do:1:1:", "unknown action 'fly'");
+  add("wait -1", "--do:1:6:", "not a duration");
+  add("wait nan", "--do:1:6:", "not a duration");
+  add("wait 1e9", "--do:1:6:", "not a duration");
+  add("wait x", "--do:1:6:", "not a duration");
+  add("move o1", "--do:1:1:", "takes 2 arguments");
+  add("move o1 r2 r1", "--do:1:1:", "takes 2 arguments");
+  add("move o1\x02 r2", "--do:1:6:", "unknown object or container");
+  add("move " + std::string(5000, 'y') + " r2", "--do:1:6:", "unknown object or container");
+  add("pick o1; place o9", "--do:1:16:", "unknown location 'o9'");
+  add(";;;move o1 r9", "--do:1:12:", "unknown location 'r9'");
+  add("move o1 r2;   pick o7", "--do:1:20:", "unknown object or container 'o7'");
+  add("wait 1; move o1 r2; move r2 r1", "--do:1:26:", "'r2' is a region");
+  // An object the scripted operator adds exists only with --operator.
+  {
+    const std::string s = scenario("F G all_in_r2", "operator:\n  - {time: 1, action: add, object: o4, to: r2}\n");
+    const std::string p = file(s);
+    t.push_back({"sim --do", {"sim", p, "--do", "wait 2; move o4 r1"}, "--do:1:14:", "unknown object or container 'o4'"});
+  }
+}
+
+void gen_cases(std::vector<Case>& t) {
+  auto add = [&](std::vector<std::string> args, const std::string& where, const std::string& what) {
+    args.insert(args.begin(), "gen");
+    args.push_back("-o");
+    args.push_back("gen.yaml");
+    t.push_back({"gen", args, where, what, {"gen.yaml"}});
+  };
+  add({"--task", "F G \"all blocks in r2\""}, "--task:1:10:", "did you mean 'block'?");
+  add({"--task", "F G all_in_r3"}, "--task:1:5:", "did you mean 'all_in_r2'?");
+  add({"--task", "F G ("}, "--task:1:6:", "unexpected end of formula");
+  add({"--task", "F G all_in_r2 & G !(o1 in r3)"}, "--task:1:24:", "before 'in'");
+  add({"--task", "F G \"o1 in r3\""}, "--task:1:12:", "unknown location 'r3'");
+  add({"--task", "F G \"o1 in r3\"", "-m", "2"}, "--task:1:12:", "did you mean");
+  add({"--task", " "}, "--task:1:1:", "the task is empty");
+  add({"--prop", "p=o9 in r1"}, "--prop #1:1:3:", "unknown object 'o9'");
+  add({"--prop", "p=o1 in ("}, "--prop #1:1:9:", "expected a location name");
+  add({"--prop", "=o1 in r1"}, "--prop #1:1:1:", "NAME=EXPRESSION");
+  add({"--prop", "noeq"}, "--prop #1:1:", "NAME=EXPRESSION");
+  add({"--prop", "P=o1 in r1"}, "--prop #1:1:", "not a valid atom");
+  add({"--prop", "all_in_r2=o1 in r1"}, "--prop #1:1:", "duplicate proposition");
+  add({"--prop", "o1=o1 in r1"}, "--prop #1:1:", "has the name of an object");
+  add({"--prop", "q=o1 in r1", "--prop", "p=all blok in r2"}, "--prop #2:1:7:", "did you mean 'block'?");
+  add({"--prop", "p=" + std::string(300, '(') + "o1 in r1" + std::string(300, ')')}, "--prop #1:1:",
+      "nested too deeply");
+  add({"--prop", "p=o1 in r1", "--task", "F G p & F \"o1 in r2\" & F q"}, "--task:1:26:", "not a proposition");
+}
+
+void ltl_cases(std::vector<Case>& t) {
+  auto add = [&](const std::string& formula, const std::string& where, const std::string& what) {
+    t.push_back({"ltl", {"ltl2ba", formula}, where, what});
+  };
+  add("G (a -> ", "<formula>:1:9:", "unexpected end of formula");
+  add(std::string(100000, '('), "<formula>:1:", "too deeply nested");
+  add(std::string(100000, '!') + "a", "<formula>:1:", "too deeply nested");
+  add("a \x01 b", "<formula>:1:3:", "0x01");
+  add("", "<formula>:1:1:", "empty formula");
+  add("F G All", "<formula>:1:5:", "unexpected 'A'");
+  add("\"unterminated", "<formula>:1:1:", "unterminated");
+  add("a U", "<formula>:1:4:", "unexpected end of formula");
+  add("()", "<formula>:1:2:", "expected a formula before ')'");
+  add("a b", "<formula>:1:3:", "expected an operator");
+  add("a \xff b", "<formula>:1:3:", "0xff");
+  {
+    std::string garbage;
+    for (int i = 0; i < 300; ++i) garbage += static_cast<char>(11 + (i * 77) % 245);  // one line: no '\n'
+    garbage[0] = '\x01';
+    const std::string p = file(garbage, ".ltl");
+    t.push_back({"ltl", {"ltl2ba", "-F", p}, name_of(p) + ":1:", ""});
+  }
+}
+
+std::vector<Case> table() {
+  std::vector<Case> t;
+  yaml_cases(t);
+  task_cases(t);
+  change_cases(t);
+  sim_cases(t);
+  gen_cases(t);
+  ltl_cases(t);
+  return t;
+}
+
+std::string shown(const std::vector<std::string>& args) {
+  std::string s = "rtamp";
+  for (const std::string& a : args) s += " '" + (a.size() > 80 ? a.substr(0, 80) + "...'" : a + "'");
+  return s;
+}
+
+TEST(CliBadInput, EveryBadInputIsRefusedWithItsLocationBeforeAnythingRuns) {
+  const std::vector<Case> cases = table();
+  EXPECT_GE(cases.size(), 150u);
+  std::printf("%zu bad inputs\n", cases.size());
+  for (const Case& c : cases) {
+    SCOPED_TRACE(c.group + ": " + shown(c.args));
+    for (const std::string& f : c.not_created) fs::remove_all(scratch() / f);
+    const Outcome r = run_argv(c.args);
+    EXPECT_EQ(r.signal, 0) << "killed by signal " << r.signal;
+    EXPECT_TRUE(r.exited);
+    EXPECT_EQ(r.code, 2) << r.err;
+    const std::string first = r.err.substr(0, r.err.find('\n'));
+    EXPECT_EQ(first.rfind("rtamp: error: ", 0), 0u) << r.err;
+    EXPECT_NE(first.find(c.where), std::string::npos) << "expected '" << c.where << "' in: " << first;
+    if (!c.what.empty()) {
+      EXPECT_NE(first.find(c.what), std::string::npos) << "expected '" << c.what << "' in: " << first;
+    }
+    // Further lines only show the input with a caret (indented).
+    std::size_t from = r.err.find('\n');
+    while (from != std::string::npos && from + 1 < r.err.size()) {
+      EXPECT_EQ(r.err.compare(from + 1, 2, "  "), 0) << r.err;
+      from = r.err.find('\n', from + 1);
+    }
+    EXPECT_EQ(r.out, "") << "something ran";
+    for (const std::string& f : c.not_created) EXPECT_FALSE(fs::exists(scratch() / f)) << f << " was created";
+  }
+}
+
+}  // namespace
+}  // namespace rtamp::cli::testing
