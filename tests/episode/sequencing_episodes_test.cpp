@@ -212,10 +212,8 @@ std::optional<world::Intervention> aim(const Task& task, const std::vector<Windo
   }
   for (const Window* wp : order) {
     const Window& w = *wp;
-    // Known limitation (DISABLED_ test below): a loaded tray removed or taken
-    // from the gripper in the air spills its blocks outside every region, and
-    // the loop ends the episode as `lost` 3 s later while the arm is picking
-    // them up. Aimed at other moves here.
+    // A loaded tray removed or taken from the gripper in the air has a test of
+    // its own (LoadedTrayTakenInTheAir below); aimed at other moves here.
     const bool tray_in_air = s.find_container(w.thing) && phase != Phase::Approach;
     if (tray_in_air && (kind == Kind::RemoveContainer || kind == Kind::TakeFromGripper)) continue;
     world::Intervention iv;
@@ -412,17 +410,16 @@ TEST(SequencingEpisodes, MidMoveInterventionsOfEveryKind) {
   }
 }
 
-// The known limitation above, as episodes that should succeed once the loop
-// can plan with things lying outside every location (or the operator spills a
-// tray's contents into valid locations, as the symbolic world does): the
-// loaded tray of 3-block-tray (plain task) removed, or taken from the gripper
-// to r1, half-way through its carry r1 -> r2. Today both end `lost`: the three
-// blocks fall between r1 and r2, the loop keeps them at their last location
-// for 3 s (outside_grace) and ends the episode while the arm picks up the first.
-// `rtamp run` reproduces it with this operator on 3-block-tray:
+// The loaded tray of 3-block-tray (plain task) removed, or taken from the
+// gripper to r1, half-way through its carry r1 -> r2. The operator sets a
+// removed tray's blocks down in the region under it or the nearest one with
+// room (sim/operator.hpp), and a tray taken to r1 arrives with its blocks; the
+// loop sees where they are and replans. (These used to end `lost`: the blocks
+// fell between r1 and r2, outside every location.) `rtamp run` reproduces
+// them with this operator on 3-block-tray:
 //   operator: [{time: 22.16, action: remove_container, container: r3}]
 //   operator: [{time: 22.16, action: take_from_gripper, to: r1}]
-TEST(SequencingEpisodes, DISABLED_LoadedTrayTakenInTheAir) {
+TEST(SequencingEpisodes, LoadedTrayTakenInTheAir) {
   world::Scenario base = world::load_scenario("3-block-tray");
   base.interventions.clear();
   const std::string log_path = (std::filesystem::temp_directory_path() / "rtamp_seq_tray_in_air.jsonl").string();

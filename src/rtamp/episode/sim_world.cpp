@@ -26,7 +26,8 @@ void SimWorld::advance(double dt) {
         const bool carried = phase_ == Phase::Placing || phase_ == Phase::Recovering;
         if (e.applied && carried &&
             (e.what.kind == K::TakeFromGripper ||
-             ((e.what.kind == K::Relocate || e.what.kind == K::Remove) && e.what.subject == move_.thing)))
+             ((e.what.kind == K::Relocate || e.what.kind == K::Remove || e.what.kind == K::RemoveContainer) &&
+              e.what.subject == move_.thing)))
           taken_ = true;
       }
   }

@@ -18,6 +18,8 @@ Eigen::Isometry3d at(const world::Vec3& p) {
   return t;
 }
 
+double yaw_of(const Eigen::Isometry3d& p) { return std::atan2(p.linear()(1, 0), p.linear()(0, 0)); }
+
 std::string fmt(const world::Vec3& p) {
   char buf[96];
   std::snprintf(buf, sizeof buf, "(%.3f, %.3f, %.3f)", p[0], p[1], p[2]);
@@ -71,6 +73,39 @@ std::optional<world::Vec3> Operator::spot_in(const std::string& location, const 
   const Eigen::Vector3d tool = sim_.tool_pose().translation();
   if (tool.z() < 0.25) keep_clear.push_back(world::footprint_at({tool.x(), tool.y(), 0}, {0.1, 0.12, 0}));
   return sim::free_spot(sim_, location, size, exclude, 0.02, keep_clear);
+}
+
+std::string Operator::set_down(const std::vector<int>& things, const Eigen::Vector3d& where) {
+  if (things.empty()) return "";
+  // Nearest region first (the one under `where`, if any, is at distance 0).
+  std::vector<std::pair<double, std::string>> regions;
+  const world::Geometry g = current_geometry();
+  const std::string under = g.locate_region({where.x(), where.y(), 0});
+  for (const auto& r : sim_.scenario().regions)
+    regions.emplace_back(r.name == under ? 0.0 : std::hypot(r.center[0] - where.x(), r.center[1] - where.y()), r.name);
+  std::stable_sort(regions.begin(), regions.end());
+  std::string out;
+  for (std::size_t n = 0; n < things.size(); ++n) {
+    const int k = things[n];
+    const Thing& t = sim_.thing(k);
+    // Things still to be set down are in the air, not in anyone's way.
+    const std::vector<int> exclude(things.begin() + static_cast<std::ptrdiff_t>(n), things.end());
+    std::optional<world::Vec3> to;
+    std::string loc;
+    for (const auto& [d, name] : regions)
+      if ((to = spot_in(name, t.size, exclude))) {
+        loc = name;
+        break;
+      }
+    if (!to) {
+      sim_.hide(k);
+      out += "; '" + t.name + "' too (no free spot anywhere)";
+      continue;
+    }
+    sim_.set_pose(k, at({(*to)[0], (*to)[1], (*to)[2] + t.size[2] / 2 + 0.001}));
+    out += "; '" + t.name + "' set down in " + loc + " at " + fmt(*to);
+  }
+  return out;
 }
 
 bool Operator::overlaps_anything(const world::Vec3& base, const world::Vec3& size,
@@ -217,26 +252,44 @@ OperatorEvent Operator::apply(const world::Intervention& iv) {
     case Kind::RemoveContainer: {
       const int i = sim_.find(iv.subject);
       if (i < 0 || !sim_.thing(i).present) return refuse("no '" + iv.subject + "' in the scene");
+      // A tray on the table leaves its contents where it stood (they drop onto the
+      // region); one in the gripper leaves them in the air, so the person sets them down.
+      const bool in_air = sim_.held() == i && sim_.thing(i).container;
+      const std::vector<int> in = in_air ? contents_of(i) : std::vector<int>{};
+      const Eigen::Vector3d where = sim_.position(i);
       sim_.hide(i);
-      return done("removed");
+      return done("removed" + set_down(in, where));
     }
     case Kind::TakeFromGripper: {
       const int i = sim_.held();
       if (i < 0) return refuse("the gripper holds nothing");
       ev.what.subject = sim_.thing(i).name;
+      const std::vector<int> in = sim_.thing(i).container ? contents_of(i) : std::vector<int>{};
+      const Eigen::Isometry3d from = sim_.pose(i);
       sim_.detach();
-      if (iv.location.empty() && !iv.position) {
-        sim_.hide(i);
-        return done("took '" + sim_.thing(i).name + "' away");
-      }
       const Thing& t = sim_.thing(i);
-      auto to = target(t.size, {i}, "");
+      std::optional<world::Vec3> to;
+      if (!iv.location.empty() || iv.position) {
+        std::vector<int> moved{i};
+        moved.insert(moved.end(), in.begin(), in.end());
+        to = target(t.size, moved, "");
+      }
       if (!to) {
         sim_.hide(i);
-        return done("took '" + t.name + "' away (no free spot in " + iv.location + ")");
+        const std::string why = iv.location.empty() && !iv.position ? "" : " (no free spot in " + iv.location + ")";
+        return done("took '" + t.name + "' away" + why + set_down(in, from.translation()));
       }
+      // The thing goes down upright, keeping its yaw; a tray's contents ride along.
       const double z = t.container ? (*to)[2] : (*to)[2] + t.size[2] / 2 + 0.001;
-      sim_.set_pose(i, at({(*to)[0], (*to)[1], z}));
+      Eigen::Isometry3d p = at({(*to)[0], (*to)[1], z});
+      p.linear() = Eigen::AngleAxisd(yaw_of(from), Eigen::Vector3d::UnitZ()).toRotationMatrix();
+      sim_.set_pose(i, p);
+      const Eigen::Vector3d delta = p.translation() - from.translation();
+      for (int k : in) {
+        Eigen::Isometry3d pk = sim_.pose(k);
+        pk.translation() += delta + Eigen::Vector3d(0, 0, 0.002);
+        sim_.set_pose(k, pk);
+      }
       return done("took '" + t.name + "' to " + fmt(*to));
     }
   }

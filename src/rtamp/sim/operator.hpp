@@ -9,9 +9,12 @@
 //  - Add / AddContainer: a reserved spare body gets the name and appears at `position`
 //    or a free spot of `location` (a random region when none is given).
 //  - Remove / RemoveContainer: the thing is hidden; a removed tray's contents drop to
-//    the table where it stood.
+//    the table where it stood — or, for a tray in the gripper, are set down in free
+//    spots of the region under it, else of the nearest region with room (removed too
+//    when there is none; the event's detail says where each went).
 //  - TakeFromGripper: the weld is released and the held thing goes to a free spot of
-//    `location`, or is removed when no location is given.
+//    `location` (a tray with its contents, keeping its yaw), or is removed when no
+//    location is given (a tray's contents are then set down as for a remove).
 // Invariant: an intervention never puts two things in the same spot: targets come from
 // world::free_spot over the footprints of every present thing (the subject and its
 // contents excluded), and an explicit `position` that overlaps something is refused
@@ -62,6 +65,9 @@ class Operator {
  private:
   std::optional<world::Vec3> spot_in(const std::string& location, const world::Vec3& size,
                                      const std::vector<int>& exclude);
+  // Sets down things that were in the air (a removed tray's contents) near `where`;
+  // returns the detail to append to the event ("; 'o1' set down in r1 at (...)").
+  std::string set_down(const std::vector<int>& things, const Eigen::Vector3d& where);
   bool overlaps_anything(const world::Vec3& base, const world::Vec3& size, const std::vector<int>& exclude) const;
   std::vector<int> contents_of(int container) const;
   world::Geometry current_geometry() const;

@@ -43,8 +43,13 @@ std::string location_of(const Simulation& sim, const world::Geometry& g, int i) 
 
 std::vector<int> contents_of(const Simulation& sim, int container) {
   std::vector<int> in;
-  const world::Geometry g = current_geometry(sim);
+  world::Geometry g = current_geometry(sim);
   const std::string& cname = sim.thing(container).name;
+  if (sim.held() == container) {  // a tray in the hand holds what rides on it
+    const Thing& c = sim.thing(container);
+    const Eigen::Vector3d p = sim.position(container);
+    g.add_container({cname, c.cls, {p.x(), p.y(), p.z()}, c.size, 8, {}});
+  }
   for (std::size_t i = 0; i < sim.things().size(); ++i) {
     const Thing& t = sim.things()[i];
     if (t.container || !t.present || t.name.empty() || sim.held() == static_cast<int>(i)) continue;

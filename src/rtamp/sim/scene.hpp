@@ -28,7 +28,8 @@ robot::ThingPose thing_pose(const Simulation& sim, int thing);
 // Location of a present thing by the geometric abstraction ("hand" is not considered).
 std::string location_of(const Simulation& sim, const world::Geometry& g, int thing);
 
-// Present objects (not containers, not held) whose base lies in `container`.
+// Present objects (not containers, not held) whose base lies in `container` (also while
+// the container itself is in the gripper: what rides on it).
 std::vector<int> contents_of(const Simulation& sim, int container);
 
 // A free spot (centre of the base) for a thing of `size` in `location`: inside its
