@@ -68,7 +68,7 @@ void print_summary(const BatchArgs& a, const std::vector<exp::EpisodeRecord>& re
   const exp::Summary s = exp::summarize(records, exp::parse_grouping(a.group_by));
   std::string format = a.json ? "json" : a.markdown ? "markdown" : a.format;
   if (format == "json") {
-    std::cout << exp::to_json(s).dump(2) << "\n";
+    std::cout << exp::to_json(s, 2) << "\n";
   } else if (format == "markdown") {
     std::cout << exp::format_markdown(s);
   } else if (format == "tsv") {

@@ -9,6 +9,8 @@
 #include <memory>
 
 #include "command.hpp"
+#include "rtamp/robot/ompl_logging.hpp"
+#include "rtamp/sim/mujoco_logging.hpp"
 #include "rtamp/robot/ik_motion_cost.hpp"
 #include "rtamp/util/error.hpp"
 #include "rtamp/util/format.hpp"
@@ -62,6 +64,10 @@ std::string parser_message(const CLI::ParseError& e) {
 
 int main(int argc, char** argv) {
   using namespace rtamp::cli;
+  // The library changes no process-wide state on its own; the CLI keeps MuJoCo's
+  // warnings in mjData's counters only and OMPL to errors (docs/library.md).
+  rtamp::sim::install_mujoco_log_handler();
+  rtamp::robot::quiet_ompl_logging();
   // A reader that goes away (a pipe to `head`, an ffmpeg that failed) is a write
   // error the code reports, never a signal.
   std::signal(SIGPIPE, SIG_IGN);

@@ -2,22 +2,12 @@
 
 #include <algorithm>
 #include <cstring>
-#include <mutex>
 
 #include "rtamp/util/error.hpp"
 
 namespace rtamp::sim {
 
 namespace {
-
-// MuJoCo's default warning handler appends to MUJOCO_LOG.TXT in the current directory;
-// the counters in mjData are what we report, so warnings are only kept in memory.
-void quiet_warning(const char*) {}
-
-void install_handlers() {
-  static std::once_flag once;
-  std::call_once(once, [] { mju_user_warning = quiet_warning; });
-}
 
 Eigen::Isometry3d to_iso(const mjtNum* pos, const mjtNum* xmat) {
   Eigen::Isometry3d t = Eigen::Isometry3d::Identity();
@@ -52,7 +42,6 @@ const char* Warnings::name(int i) {
 
 Simulation::Simulation(const world::Scenario& scenario, SimOptions options)
     : scenario_(scenario), options_(std::move(options)) {
-  install_handlers();
   mjcf_ = build_mjcf(scenario_, options_.mjcf);
   std::unique_ptr<mjVFS, VfsDeleter> vfs(new mjVFS);
   mj_defaultVFS(vfs.get());
