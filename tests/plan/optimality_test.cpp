@@ -83,7 +83,8 @@ TEST(Optimality, ReplansAfterChangesMatchBruteForce) {
       } else if (kind == 3 && cur.objects.size() > 1) {
         change = "remove " + cur.objects[rng() % cur.objects.size()].name;
       } else if (kind == 4 && cur.regions.size() < 4 && cur.objects.size() <= 3) {
-        change = "add-region x" + std::to_string(k) + " " + std::to_string(0.1 * k) + " -0.5 3";
+        // Far from the scenario's regions: regions must be disjoint (plan/change_check.hpp).
+        change = "add-region x" + std::to_string(k) + " " + std::to_string(2.0 + k) + " -2.0 3";
       } else if (kind == 5 && !cur.containers.empty()) {
         change = "remove-container t1";
       } else if (kind == 5 && cur.objects.size() <= 2 && cur.regions.size() <= 3) {
