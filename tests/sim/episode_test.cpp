@@ -106,6 +106,27 @@ TEST(SimEpisode, TakingTheObjectFailsTheSkillCleanly) {
   EXPECT_EQ(s.execute(parse_actions("move o1 r2").front()).status, Status::Success);
 }
 
+TEST(SimEpisode, TakingToAPlaceWithNoRoomIsRefusedAndTheThingStaysHeld) {
+  Session s(world::load_scenario("3-block"));
+  ASSERT_EQ(s.execute(parse_actions("pick o1").front()).status, Status::Success);
+  const int o1 = s.sim().find("o1");
+  ASSERT_EQ(s.sim().held(), o1);
+  // On top of o2: no room there, so the person does not take it (it used to vanish).
+  const Eigen::Vector3d o2 = s.sim().position(s.sim().find("o2"));
+  world::Intervention take;
+  take.kind = world::Intervention::Kind::TakeFromGripper;
+  take.position = world::Vec3{o2.x(), o2.y(), o2.z()};
+  const OperatorEvent e = s.op().apply(take);
+  EXPECT_FALSE(e.applied);
+  EXPECT_NE(e.detail.find("stays in the gripper"), std::string::npos) << e.detail;
+  EXPECT_EQ(s.sim().held(), o1);
+  EXPECT_TRUE(s.sim().thing(o1).present);
+  // And the robot can still put it down.
+  EXPECT_EQ(s.execute(parse_actions("place r2").front()).status, Status::Success);
+  s.sim().step(300);
+  EXPECT_EQ(perceived(s, "o1"), "r2");
+}
+
 TEST(SimEpisode, SameSeedSameEpisode) {
   auto run = [](std::uint64_t seed) {
     SessionOptions o;

@@ -266,18 +266,24 @@ OperatorEvent Operator::apply(const world::Intervention& iv) {
       ev.what.subject = sim_.thing(i).name;
       const std::vector<int> in = sim_.thing(i).container ? contents_of(i) : std::vector<int>{};
       const Eigen::Isometry3d from = sim_.pose(i);
-      sim_.detach();
       const Thing& t = sim_.thing(i);
+      // A destination with no room is refused before anything happens: the thing
+      // stays in the gripper (as in the symbolic world), never silently deleted.
       std::optional<world::Vec3> to;
-      if (!iv.location.empty() || iv.position) {
+      const bool has_destination = !iv.location.empty() || iv.position.has_value();
+      if (has_destination) {
         std::vector<int> moved{i};
         moved.insert(moved.end(), in.begin(), in.end());
         to = target(t.size, moved, "");
+        if (!to) {
+          const std::string where = iv.location.empty() ? "at " + fmt(*iv.position) : "in '" + iv.location + "'";
+          return refuse("no free spot " + where + "; '" + t.name + "' stays in the gripper");
+        }
       }
+      sim_.detach();
       if (!to) {
         sim_.hide(i);
-        const std::string why = iv.location.empty() && !iv.position ? "" : " (no free spot in " + iv.location + ")";
-        return done("took '" + t.name + "' away" + why + set_down(in, from.translation()));
+        return done("took '" + t.name + "' away" + set_down(in, from.translation()));
       }
       // The thing goes down upright, keeping its yaw; a tray's contents ride along.
       const double z = t.container ? (*to)[2] : (*to)[2] + t.size[2] / 2 + 0.001;
