@@ -126,6 +126,7 @@ int run_batch(const BatchArgs& a) {
   const world::Scenario scenario = world::load_scenario(a.scenario);
   task::validate_task(scenario);  // a bad task is refused once, not run as failed trials
   if (!a.output.empty()) rtamp::cli::check_output_file("--output", a.output);
+  if (!a.log_dir.empty()) rtamp::cli::check_output_dir("--log-dir", a.log_dir);
   exp::Grid grid;
   grid.algorithms = parse_all(a.algos, exp::parse_algorithm);
   grid.changes = parse_all(a.changes, exp::parse_change);

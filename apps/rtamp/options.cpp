@@ -214,4 +214,19 @@ void check_output_file(const std::string& option, const std::string& path) {
   }
 }
 
+void check_output_dir(const std::string& option, const std::string& dir) {
+  namespace fs = std::filesystem;
+  auto fail = [&](const std::string& why) {
+    throw Error(option + ": cannot write into " + shown(dir) + ": " + why);
+  };
+  if (dir.empty()) fail("empty path");
+  std::error_code ec;
+  fs::path p = fs::absolute(fs::path(dir), ec);
+  if (ec) fail(ec.message());
+  // The nearest part of the path that exists must be a directory we may write into.
+  while (!fs::exists(fs::symlink_status(p, ec)) && p.has_parent_path() && p != p.parent_path()) p = p.parent_path();
+  if (!fs::is_directory(p, ec)) fail(shown(p.string()) + " is not a directory");
+  if (::access(p.c_str(), W_OK | X_OK) != 0) fail(std::error_code(errno, std::generic_category()).message());
+}
+
 }  // namespace rtamp::cli

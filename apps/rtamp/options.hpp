@@ -74,4 +74,9 @@ CLI::Option* add_scenario(CLI::App& app, std::string& target);
 // it is not a directory). Nothing is created.
 void check_output_file(const std::string& option, const std::string& path);
 
+// Output directories: throws rtamp::Error "OPTION: cannot write into 'DIR': WHY"
+// unless `dir` is a writable directory or can be created (its nearest existing
+// ancestor is a writable directory). Nothing is created.
+void check_output_dir(const std::string& option, const std::string& dir);
+
 }  // namespace rtamp::cli

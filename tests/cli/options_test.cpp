@@ -148,6 +148,16 @@ TEST(CliOptions, OutputFilesAreCheckedBeforeAnythingRuns) {
   EXPECT_EQ(r.rc, 2) << r.err;
   EXPECT_EQ(r.out.find("first plan"), std::string::npos) << r.out;
   EXPECT_FALSE(fs::exists(dir / "no-such-dir"));
+  // batch --log-dir: a file, or a path below a file, is refused before any trial runs.
+  for (const std::string& logs : {file, file + "/logs"}) {
+    const std::string cmd = "batch 3-block --world symbolic --trials 1 --log-dir '" + logs + "'";
+    expect_refused(run(cmd), "--log-dir", cmd);
+  }
+  // A directory that does not exist yet is fine: the batch creates it.
+  const std::string fresh = (dir / "logs" / "deeper").string();
+  const Result ok = run("batch 3-block --world symbolic --trials 1 --log-dir '" + fresh + "'");
+  EXPECT_EQ(ok.rc, 0) << ok.err;
+  EXPECT_TRUE(fs::is_directory(fresh));
 }
 
 TEST(CliOptions, JsonMeansOnlyJsonOnStdout) {
