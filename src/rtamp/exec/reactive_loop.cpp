@@ -2,10 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 
 #include "rtamp/ltl/lasso.hpp"
 #include "rtamp/util/error.hpp"
+#include "rtamp/util/format.hpp"
 #include "rtamp/world/geometry.hpp"
 #include "rtamp/world/propositions.hpp"
 
@@ -40,11 +40,7 @@ class WorldClock final : public bt::Clock {
   const World& world_;
 };
 
-std::string seconds_text(double s) {
-  char b[32];
-  std::snprintf(b, sizeof b, "%.2f s", s);
-  return b;
-}
+std::string seconds_text(double s) { return format_seconds(s); }
 
 bool is_location(const world::Scenario& s, const world::Placement& p, const std::string& loc) {
   if (s.find_region(loc)) return true;

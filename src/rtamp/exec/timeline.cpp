@@ -3,23 +3,14 @@
 #include <cstdio>
 
 #include "rtamp/bt/text_render.hpp"
+#include "rtamp/util/format.hpp"
 
 namespace rtamp::exec {
 
 namespace {
 
-std::string fixed(double v, int digits) {
-  char b[48];
-  std::snprintf(b, sizeof b, "%.*f", digits, v);
-  return b;
-}
-
-// 37 us, 1.2 ms, 3.40 s
-std::string duration(double s) {
-  if (s < 1e-3) return fixed(s * 1e6, 0) + " us";
-  if (s < 1) return fixed(s * 1e3, 1) + " ms";
-  return fixed(s, 2) + " s";
-}
+// 145 us, 1.2 ms, 3.4 s: the CLI's one formatter (util/format.hpp).
+std::string duration(double s) { return format_seconds(s); }
 
 std::string thing_of(const std::string& action) {  // "move(o1, r2)" -> "o1"
   const auto open = action.find('('), comma = action.find(',');
@@ -91,7 +82,7 @@ void Timeline::on_plan(double t, const PlanEvent& e) {
   const auto& s = e.result.stats;
   std::string head = std::string(e.first ? "first plan in " : "replanned in ") + duration(s.seconds) + ": " +
                      std::to_string(moves) + (moves == 1 ? " move" : " moves") + ", cost " +
-                     fixed(e.result.plan.cost(), 3);
+                     format_number(e.result.plan.cost(), 4);
   if (s.cache_used)
     head += " (cache hits " + std::to_string(s.cache_hits) + ", misses " + std::to_string(s.cache_misses) + ")";
   say(t, head);
