@@ -3,11 +3,6 @@
 
 namespace rtamp::python {
 
-const Choices<plan::Algorithm> kAlgorithms = {
-    {"astar-exp", plan::Algorithm::AStarExperience},
-    {"astar", plan::Algorithm::AStar},
-    {"dijkstra", plan::Algorithm::Dijkstra},
-};
 const Choices<plan::GraphConstruction> kGraphs = {
     {"partial", plan::GraphConstruction::Partial},
     {"full", plan::GraphConstruction::Full},

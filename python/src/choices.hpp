@@ -18,7 +18,6 @@ namespace rtamp::python {
 template <class E>
 using Choices = std::vector<std::pair<const char*, E>>;
 
-extern const Choices<plan::Algorithm> kAlgorithms;
 extern const Choices<plan::GraphConstruction> kGraphs;
 extern const Choices<exec::ConditionMode> kConditions;
 extern const Choices<exec::Reconfiguration> kReconfigurations;

@@ -12,6 +12,7 @@
 #include "loop.hpp"
 #include "plan_view.hpp"
 #include "rtamp/ltl/printer.hpp"
+#include "rtamp/plan/registry.hpp"
 #include "rtamp/robot/ik_motion_cost.hpp"
 
 namespace rtamp::python {
@@ -75,19 +76,18 @@ std::string join(const std::vector<std::string>& v) {
 
 }  // namespace
 
+// A model from the planner's registry (plan/registry.hpp): euclid, region, unit
+// and ik (registered when the module is imported), with the registry's
+// did-you-mean for an unknown name.
 std::shared_ptr<MotionCostModel> builtin_cost_model(const std::string& name, const world::Scenario& scenario) {
-  if (name == "ik") return std::make_shared<robot::IkMotionCost>(robot::IkMotionCost::params_for(scenario));
-  if (name == "euclid") return std::make_shared<plan::EuclidCost>();
-  if (name == "region") return std::make_shared<plan::RegionCost>();
-  if (name == "unit") return std::make_shared<plan::UnitCost>();
-  throw Error("unknown motion-cost model '" + name + "' (expected one of: euclid, region, unit, ik, or a CostModel)");
+  return plan::make_cost_model(name, scenario);
 }
 
 PlannerConfig planner_config(const world::Scenario& scenario, const std::string& algorithm, const py::object& cost,
                              const std::string& graph, bool symmetry, bool diagnose_capacity, double time_limit,
                              std::size_t max_nodes) {
   plan::PlannerOptions o;
-  o.algorithm = parse_choice(kAlgorithms, algorithm, "algorithm");
+  o.algorithm = plan::parse_algorithm(algorithm);
   o.graph = parse_choice(kGraphs, graph, "graph construction");
   o.symmetry = symmetry;
   o.diagnose_capacity = diagnose_capacity;
@@ -199,11 +199,19 @@ void bind_plan(py::module_& m) {
   m.attr("DEPENDS_FROM") = static_cast<unsigned>(plan::kDependsFrom);
   m.attr("DEPENDS_TO") = static_cast<unsigned>(plan::kDependsTo);
   m.attr("DEPENDS_ALL") = static_cast<unsigned>(plan::kDependsAll);
+  robot::register_ik_cost_model();  // rtamp's own registry only: nothing outside rtamp changes
   m.def("algorithms", [] {
-    std::vector<std::string> v;
-    for (const auto& [n, a] : kAlgorithms) v.emplace_back(n);
-    return v;
-  }, "The search algorithms: 'astar-exp' (A* with experience, the default), 'astar', 'dijkstra'.");
+    py::dict d;  // insertion order: the paper's Table I order
+    for (const auto& a : plan::algorithms()) d[py::str(a.name)] = py::str(a.description);
+    return d;
+  }, "The search algorithms from the planner's registry, name -> one-line description:\n"
+     "'astar-exp' (A* with experience, the default), 'astar', 'dijkstra'.");
+  m.def("cost_models", [] {
+    py::dict d;
+    for (const auto& c : plan::cost_models()) d[py::str(c.name)] = py::str(c.description);
+    return d;
+  }, "The motion-cost models from the planner's registry, name -> one-line description\n"
+     "(euclid, region, unit, ik).");
 
   py::class_<plan::SearchStats>(m, "SearchStats", "What one planning query did.")
       .def_readonly("generated", &plan::SearchStats::generated, "Product nodes created during the query.")
@@ -378,7 +386,7 @@ void bind_plan(py::module_& m) {
         p.locked([&](plan::Planner& x) { s = x.system().to_string(x.state()); });
         return s;
       }, "The current TS state as text: 'o1@r1 o2@r1 r3@r1 hand@home'.")
-      .def_property_readonly("algorithm", [](PyPlanner& p) { return choice_name(kAlgorithms, p.raw().options().algorithm); })
+      .def_property_readonly("algorithm", [](PyPlanner& p) { return std::string(plan::algorithm_info(p.raw().options().algorithm).name); })
       .def_property_readonly("cost_model", [](PyPlanner& p) { return p.raw().options().cost; },
                              "The motion-cost model's name.");
 }

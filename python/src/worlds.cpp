@@ -8,6 +8,7 @@
 
 #include "bindings.hpp"
 #include "choices.hpp"
+#include "rtamp/plan/registry.hpp"
 #include "rtamp/episode/episode.hpp"
 #include "rtamp/episode/sim_world.hpp"
 #include "rtamp/exec/symbolic_world.hpp"
@@ -94,7 +95,7 @@ void bind_worlds(py::module_& m) {
            std::optional<std::function<void(const std::string&)>> timeline) {
           episode::EpisodeOptions o;
           o.world = parse_choice(kWorlds, world, "world");
-          o.algorithm = parse_choice(kAlgorithms, algorithm, "algorithm");
+          o.algorithm = plan::parse_algorithm(algorithm);
           o.cost = cost;
           o.conditions = parse_choice(kConditions, conditions, "condition mode");
           o.reconfiguration = parse_choice(kReconfigurations, reconfiguration, "reconfiguration");

@@ -151,3 +151,16 @@ def test_change_text():
     assert str(rtamp.Change.add_container("t2", "tray", "r1", 3)).startswith("add-container t2")
     assert str(rtamp.Change.remove_container("t2")) == "remove-container t2"
     assert str(rtamp.Change.add_region(rtamp.Region("r7", center=[0.5, 0, 0]))).startswith("add-region r7")
+
+
+def test_names_come_from_the_planners_registry(tray):
+    algos = rtamp.algorithms()
+    assert list(algos) == ["astar-exp", "astar", "dijkstra"]
+    assert all(isinstance(d, str) and d for d in algos.values())
+    models = rtamp.cost_models()
+    assert {"euclid", "region", "unit", "ik"} <= set(models)
+    with pytest.raises(rtamp.Error, match="did you mean 'euclid'"):
+        rtamp.Planner(tray, cost="eucild")
+    with pytest.raises(rtamp.Error, match="did you mean 'astar'"):
+        rtamp.Planner(tray, algorithm="astr")
+    assert rtamp.Planner(tray, algorithm="astar").algorithm == "astar"
