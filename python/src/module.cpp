@@ -3,6 +3,8 @@
 // of their own (ltl.cpp, automata.cpp, scenario.cpp, plan.cpp, bt.cpp,
 // loop.cpp, worlds.cpp, batch.cpp); errors.cpp maps rtamp::Error to rtamp.Error.
 #include "bindings.hpp"
+#include "rtamp/robot/ompl_logging.hpp"
+#include "rtamp/sim/mujoco_logging.hpp"
 
 PYBIND11_MODULE(_rtamp, m) {
   m.doc() =
@@ -20,4 +22,11 @@ PYBIND11_MODULE(_rtamp, m) {
   bind_loop(m);
   bind_worlds(m);
   bind_batch(m);
+  // Importing rtamp changes nothing process-wide; these are the CLI's two calls, on request.
+  m.def("install_mujoco_log_handler", &rtamp::sim::install_mujoco_log_handler,
+        "Keep MuJoCo's warnings in mjData's counters only (no MUJOCO_LOG.TXT in the working\n"
+        "directory). Process-wide; what the rtamp command line does at start-up (docs/library.md).");
+  m.def("quiet_ompl_logging", &rtamp::robot::quiet_ompl_logging,
+        "Set OMPL's log level to errors only (no 'Info:' lines from the arm's motion planner).\n"
+        "Process-wide; what the rtamp command line does at start-up (docs/library.md).");
 }

@@ -51,3 +51,10 @@ def test_bad_task_in_scenario():
     with pytest.raises(rtamp.Error) as e:
         rtamp.Planner(s)
     assert e.value.column is not None
+
+
+def test_logging_hooks_are_explicit_calls():
+    # Nothing happens on import; the two calls exist and are idempotent.
+    for _ in range(2):
+        rtamp.install_mujoco_log_handler()
+        rtamp.quiet_ompl_logging()
