@@ -172,6 +172,10 @@ VideoWriter::~VideoWriter() {
 
 void VideoWriter::add(const std::vector<std::uint8_t>& rgb) {
   if (!pipe_) return;
+  const std::size_t expected = static_cast<std::size_t>(width_) * static_cast<std::size_t>(height_) * 3;
+  if (rgb.size() != expected)
+    throw Error("a frame of " + std::to_string(rgb.size()) + " bytes for the " + std::to_string(width_) + "x" +
+                std::to_string(height_) + " video '" + path_ + "' (expected " + std::to_string(expected) + ")");
   // ffmpeg gone (bad path, not installed): a short write, an error, not SIGPIPE
   // (the rtamp CLI ignores SIGPIPE; a program that does not gets the signal).
   if (std::fwrite(rgb.data(), 1, rgb.size(), pipe_) != rgb.size()) {
