@@ -45,7 +45,8 @@ void held_off_axis_lands_on_spot(double along, double turn) {
   const Eigen::Vector3d b = base_point(rig.sim, i);
   EXPECT_NEAR(b.x(), (*spot)[0], 0.004);
   EXPECT_NEAR(b.y(), (*spot)[1], 0.004);
-  const Observation* o = rig.perception.observe().find("o1");
+  const Percept seen = rig.perception.observe();  // kept: find() points into it
+  const Observation* o = seen.find("o1");
   ASSERT_NE(o, nullptr);
   EXPECT_EQ(o->location, "r2");
 }
