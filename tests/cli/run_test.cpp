@@ -74,6 +74,30 @@ TEST(CliRun, SymbolicWorldRunsTheTrayTask) {
   EXPECT_NE(r.err.find("first plan in"), std::string::npos);
 }
 
+TEST(CliRun, PlanRecordsCarryEachMovesCost) {
+  // The page's plan panel shows each move's cost: the plan record's `costs` (one per
+  // action) add up to the plan's `cost`, and `in_cycle` has one flag per action.
+  const auto dir = scratch();
+  const std::string log = (dir / "tray.jsonl").string();
+  const Result r = run("run 3-block-tray --world symbolic --quiet --log '" + log + "'");
+  ASSERT_EQ(r.rc, 0) << r.err;
+  std::istringstream in(slurp(log));
+  std::string line;
+  int plans = 0;
+  while (std::getline(in, line)) {
+    const auto j = nlohmann::json::parse(line);
+    if (j.at("ev") != "plan") continue;
+    ++plans;
+    const auto& actions = j.at("actions");
+    ASSERT_EQ(j.at("costs").size(), actions.size());
+    ASSERT_EQ(j.at("in_cycle").size(), actions.size());
+    double sum = 0;
+    for (const auto& c : j.at("costs")) sum += c.get<double>();
+    EXPECT_NEAR(sum, j.at("cost").get<double>(), 1e-9 * (1 + sum)) << line;
+  }
+  EXPECT_GE(plans, 1);
+}
+
 TEST(CliRun, FailedEpisodeHasNoCompletionTime) {
   const Result r = run("run 3-block --world symbolic --max-time 3 --quiet --json");
   EXPECT_EQ(r.rc, 1);

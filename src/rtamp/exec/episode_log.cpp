@@ -104,13 +104,19 @@ void EpisodeLog::on_replan_request(double t, const std::string& why) {
 }
 
 void EpisodeLog::on_plan(double t, const PlanEvent& e) {
-  json actions = json::array();
-  for (const auto& tu : e.tuples) actions.push_back(tu.action);
+  json actions = json::array(), costs = json::array(), in_cycle = json::array();
+  for (const auto& tu : e.tuples) {
+    actions.push_back(tu.action);
+    costs.push_back(tu.cost);
+    in_cycle.push_back(tu.in_cycle);
+  }
   const auto& s = e.result.stats;
   write(t, json{{"ev", "plan"},
                 {"first", e.first},
                 {"cost", e.result.plan.cost()},
                 {"actions", actions},
+                {"costs", costs},
+                {"in_cycle", in_cycle},
                 {"automaton_states", e.automaton_states},
                 {"seconds", s.seconds},
                 {"expanded", s.expanded},

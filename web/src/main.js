@@ -1,0 +1,173 @@
+// The page's entry point: connects to the server (ws://<this host>/ws), builds the scene
+// and the panels from `hello`, and routes every server message to them; the person's
+// actions (drag, add, delete, take, controls) become requests. The render loop draws
+// the scene every animation frame. Invariant: after every `hello` (connect, seek) the
+// page's state is rebuilt from it alone (scene, tree, history).
+import { Connection } from './connection.js';
+import { Scene } from './scene.js';
+import { Robot } from './robot.js';
+import { PlanArrows } from './arrows.js';
+import { Episode } from './episode.js';
+import { DragInteraction } from './interaction.js';
+import { Notice } from './notice.js';
+import { TreePanel } from './panels/tree.js';
+import { PlanPanel } from './panels/plan.js';
+import { AutomatonPanel } from './panels/automaton.js';
+import { TimelinePanel } from './panels/timeline.js';
+import { ControlsPanel } from './panels/controls.js';
+import { PersonPanel } from './panels/person.js';
+import { installTestHook } from './testhook.js';
+
+const $ = (s) => document.querySelector(s);
+
+const app = {
+  ready: false,
+  hello: null,
+  t: 0,
+  state: null,
+  held: null,
+  framesRendered: 0,
+  framesReceived: 0,
+  latencies: [],
+  drops: [], // {subject, at}: drops waiting for their intervention record
+  episode: new Episode(),
+};
+
+app.scene = new Scene($('#scene'));
+app.notice = new Notice($('#notice'));
+app.tree = new TreePanel($('#tree'));
+app.plan = new PlanPanel($('#plan'));
+app.automaton = new AutomatonPanel($('#automaton'));
+app.timeline = new TimelinePanel($('#timeline'), $('#scrub'), (t) => control('seek', t));
+app.controls = new ControlsPanel($('#controls'), (a, v) => control(a, v));
+app.arrows = new PlanArrows(app.scene);
+
+function control(action, value) {
+  return app.conn.control(action, value).then((r) => (r.ok ? r : app.notice.reply(action, r)));
+}
+
+function intervene(what, body) {
+  return app.conn.intervene(body).then((r) => app.notice.reply(what, r));
+}
+
+app.person = new PersonPanel($('#person'), {
+  add: (cls, loc) =>
+    intervene(`add ${cls.name} to ${loc}`, { kind: cls.kind === 'container' ? 'add-container' : 'add', class: cls.name, location: loc }),
+  remove: (name) => {
+    const kind = app.scene.things.get(name)?.info?.kind === 'container' ? 'remove-container' : 'remove';
+    return intervene(`remove ${name}`, { kind, subject: name });
+  },
+  take: (loc) => intervene(`take ${app.held ?? 'the held thing'} from the gripper`, loc ? { kind: 'take-from-gripper', location: loc } : { kind: 'take-from-gripper' }),
+});
+
+new DragInteraction(app.scene, {
+  onSelect: (name) => app.person.select(name),
+  onDrop: ({ subject, location, position }) => {
+    app.drops.push({ subject, at: performance.now() });
+    const body = { kind: 'relocate', subject, position };
+    if (location) body.location = location;
+    intervene(`move ${subject}${location ? ' to ' + location : ''}`, body).then((r) => {
+      // Refused: the thing goes back to where the server last put it.
+      const e = app.scene.things.get(subject);
+      if (!r.ok && e && app.scene.dragging !== subject) e.mesh.position.set(...e.pos);
+    });
+  },
+});
+
+function onHello(h) {
+  app.hello = h;
+  app.t = h.t ?? 0;
+  app.scene.build(h.scene);
+  if (app.robot) app.robot.group.removeFromParent();
+  app.robot = new Robot(app.scene.world, h.scene.robot);
+  app.person.setScene(h.scene);
+  $('#task').textContent = h.task;
+  $('#mode').textContent = `${h.mode} · ${h.world}`;
+  app.automaton.setAutomaton(h.automaton);
+  app.timeline.setMode(h.mode, h.replay?.duration);
+  app.timeline.reset();
+  app.episode.reset();
+  for (const r of h.history || []) app.episode.add(r);
+  app.tree.setTree(h.tree);
+  refreshLog();
+  app.controls.setState(h);
+  $('#controls').dataset.mode = h.mode;
+  if (h.frame) onFrame(h.frame);
+  app.ready = true;
+}
+
+function refreshLog() {
+  const ep = app.episode;
+  app.plan.update(ep.plan);
+  app.arrows.setMoves(ep.end ? [] : ep.remaining());
+  app.automaton.highlight(ep.tracked);
+  app.timeline.update(ep.timeline);
+  $('#result').textContent = ep.end ? `${ep.end.success ? 'succeeded' : 'failed'}: ${ep.end.end}` : '';
+}
+
+function onFrame(f) {
+  app.framesReceived++;
+  app.t = f.t;
+  app.held = f.held ?? null;
+  app.scene.applyThings(f.things);
+  app.robot?.update(f);
+  app.person.setHeld(app.held);
+  app.controls.setTime(f.t);
+  app.timeline.setTime(f.t);
+}
+
+function onLog(r) {
+  app.episode.add(r);
+  if (r.ev === 'intervention' && r.kind === 'relocate') {
+    const i = app.drops.findIndex((d) => d.subject === r.subject);
+    if (i >= 0) {
+      app.latencies.push({ subject: r.subject, ms: performance.now() - app.drops[i].at, applied: r.applied });
+      app.drops.splice(i, 1);
+    }
+  }
+  refreshLog();
+}
+
+function onMessage(m) {
+  switch (m.type) {
+    case 'hello':
+      onHello(m);
+      break;
+    case 'frame':
+      onFrame(m);
+      break;
+    case 'log':
+      onLog(m.record);
+      break;
+    case 'tree':
+      app.tree.setTree(m);
+      break;
+    case 'status':
+      app.tree.setStatus(m.s);
+      break;
+    case 'state':
+      app.state = m;
+      app.controls.setState(m);
+      break;
+    case 'reply':
+      if (!m.ok && m.id == null) app.notice.show(`the server refused a message: ${m.error}`, 'error');
+      break;
+    default:
+      break;
+  }
+}
+
+const wsUrl = `${location.protocol === 'https:' ? 'wss' : 'ws'}://${location.host}/ws`;
+app.conn = new Connection(wsUrl, onMessage, (s) => {
+  $('#connection').textContent = s;
+  $('#connection').dataset.state = s;
+});
+
+function loop() {
+  app.framesRendered++;
+  app.arrows.update();
+  app.scene.render();
+  requestAnimationFrame(loop);
+}
+requestAnimationFrame(loop);
+installTestHook(app);

@@ -1,0 +1,80 @@
+// The UR5 drawn from its kinematics (kinematics.js): a sphere at every joint frame's
+// origin, a cylinder between consecutive origins, and a two-finger gripper along the
+// tool axis. With streamed joint angles the arm shows them; in the symbolic world
+// (q = null) it reaches the streamed tool point (reachTool), or rests at home.
+// Invariant: the drawn tool point is linkFrames(robot, q)[7]'s origin for the q shown.
+import * as THREE from 'three';
+import { linkFrames, origin, reachTool } from './kinematics.js';
+
+const up = new THREE.Vector3(0, 1, 0);
+
+export class Robot {
+  constructor(parent, robot) {
+    this.robot = robot;
+    this.group = new THREE.Group();
+    parent.add(this.group);
+    const metal = new THREE.MeshStandardMaterial({ color: '#9aa3ad', metalness: 0.3, roughness: 0.5 });
+    const joint = new THREE.MeshStandardMaterial({ color: '#2b4f81', roughness: 0.5 });
+    this.joints = [];
+    this.links = [];
+    for (let i = 0; i < 8; i++) {
+      const s = new THREE.Mesh(new THREE.SphereGeometry(i === 7 ? 0.012 : 0.045, 20, 12), i === 7 ? metal : joint);
+      this.group.add(s);
+      this.joints.push(s);
+    }
+    for (let i = 0; i < 7; i++) {
+      const c = new THREE.Mesh(new THREE.CylinderGeometry(0.035, 0.035, 1, 16), metal);
+      this.group.add(c);
+      this.links.push(c);
+    }
+    const base = new THREE.Mesh(new THREE.CylinderGeometry(0.075, 0.09, 0.02, 24), joint);
+    base.quaternion.setFromUnitVectors(up, new THREE.Vector3(0, 0, 1));
+    base.position.set(...robot.base);
+    this.group.add(base);
+    this.fingers = [0, 1].map(() => {
+      const f = new THREE.Mesh(new THREE.BoxGeometry(0.012, 0.012, 0.05), metal);
+      this.group.add(f);
+      return f;
+    });
+    this.q = [...robot.home];
+    this.show(this.q);
+  }
+
+  // One cylinder from a to b.
+  static stretch(mesh, a, b) {
+    const va = new THREE.Vector3(...a), vb = new THREE.Vector3(...b);
+    const d = vb.clone().sub(va);
+    const len = d.length();
+    mesh.visible = len > 1e-4;
+    if (!mesh.visible) return;
+    mesh.position.copy(va).add(vb).multiplyScalar(0.5);
+    mesh.scale.set(1, len, 1);
+    mesh.quaternion.setFromUnitVectors(up, d.normalize());
+  }
+
+  show(q) {
+    this.q = q;
+    const F = linkFrames(this.robot, q);
+    const pts = F.map(origin);
+    pts.forEach((p, i) => this.joints[i].position.set(...p));
+    for (let i = 0; i < 7; i++) Robot.stretch(this.links[i], pts[i], pts[i + 1]);
+    // Fingers: either side of the tool point along the tool's y axis, hanging along its z.
+    const T = F[7];
+    const y = [T[1], T[5], T[9]], z = [T[2], T[6], T[10]];
+    const open = this.held ? 0.024 : 0.04;
+    this.fingers.forEach((f, k) => {
+      const s = k ? open : -open;
+      f.position.set(pts[7][0] + s * y[0] - 0.01 * z[0], pts[7][1] + s * y[1] - 0.01 * z[1], pts[7][2] + s * y[2] - 0.01 * z[2]);
+      f.quaternion.setFromRotationMatrix(new THREE.Matrix4().set(T[0], T[1], T[2], 0, T[4], T[5], T[6], 0, T[8], T[9], T[10], 0, 0, 0, 0, 1));
+    });
+    this.toolPoint = pts[7];
+  }
+
+  // A frame: its joint angles, or (symbolic world) its tool point.
+  update(frame) {
+    this.held = frame.held;
+    if (Array.isArray(frame.q)) this.show(frame.q);
+    else if (Array.isArray(frame.tool)) this.show(reachTool(this.robot, frame.tool, this.q));
+    else this.show(this.robot.home);
+  }
+}

@@ -1,0 +1,62 @@
+// The page's read-only test hook, window.rtamp: what the scene shows (things with their
+// class, kind, position, location), where a world point or a thing is on the screen
+// (page pixels, for real mouse drags), the messages and replies seen, the frame counter
+// and the drop → intervention latencies. Nothing here changes the page.
+
+export function installTestHook(app) {
+  const { scene } = app;
+  window.rtamp = {
+    get ready() {
+      return app.ready;
+    },
+    get hello() {
+      return app.hello;
+    },
+    get t() {
+      return app.t;
+    },
+    get state() {
+      return app.state;
+    },
+    get held() {
+      return app.held;
+    },
+    get records() {
+      return app.episode.records;
+    },
+    get tracked() {
+      return app.episode.tracked;
+    },
+    get frames() {
+      return app.framesRendered;
+    },
+    get framesReceived() {
+      return app.framesReceived;
+    },
+    get notices() {
+      return app.notice.history.map((n) => ({ text: n.text, kind: n.kind }));
+    },
+    get latencies() {
+      return app.latencies;
+    },
+    things() {
+      return [...scene.things.entries()]
+        .filter(([, e]) => e.mesh.visible)
+        .map(([name, e]) => ({ name, class: e.info.class, kind: e.info.kind, pos: e.pos, at: e.at }));
+    },
+    regions() {
+      return scene.regions.map((r) => ({ name: r.name, center: r.center, size: r.size }));
+    },
+    projectPoint(p) {
+      return scene.project(p);
+    },
+    project(name) {
+      const e = scene.things.get(name);
+      if (!e) {
+        const r = scene.regions.find((x) => x.name === name);
+        return r ? scene.project([r.center[0], r.center[1], scene.tableTop]) : null;
+      }
+      return scene.project(e.mesh.position.toArray());
+    },
+  };
+}

@@ -1,0 +1,299 @@
+// The page's browser tests (issue 14, "How it is checked"), one case per ctest entry:
+//   node tests/browser.mjs CASE      (env RTAMP_BIN, RTAMP_SOURCE_DIR; label `browser`)
+// Every case runs the real `rtamp serve` and Debian's Chromium (harness.mjs). The
+// oracles are the server's own messages as the browser received them (the raw WebSocket
+// frames), the scenario files and the episode log — not the page's code.
+//   loads       the page loads: hello, panels filled from it, no page errors
+//   scene       the scene shows the scenario's things where the server says they are
+//   drag        a real mouse drag of a block onto another region → `relocate` in the log,
+//               then `handled_by_tree` or `replan` within a bounded number of ticks
+//   add         the palette adds a block → `add` in the log, the thing appears, a reaction
+//   remove      click a block, delete → `remove` in the log, the thing disappears
+//   take        take the held block out of the gripper → `take-from-gripper`, a reaction
+//   refused     an intervention the validator refuses → its reason shown on the page
+//   replay      a logged episode replayed and scrubbed to its end → the end placement
+//   screenshot  the scene's layout at t = 0 (paused) against a committed reference PNG
+//   mujoco      drag in the MuJoCo world (label slow)
+import assert from 'node:assert/strict';
+import { spawnSync } from 'node:child_process';
+import { existsSync, readFileSync, writeFileSync } from 'node:fs';
+import { dirname, join } from 'node:path';
+import { fileURLToPath } from 'node:url';
+import { PNG } from 'pngjs';
+import pixelmatch from 'pixelmatch';
+import { BIN, SOURCE, cleanup, drag, launch, logRecords, openPage, rmSync, scratchDir, skipUnlessReady, startServer, waitFor } from './harness.mjs';
+
+const here = dirname(fileURLToPath(import.meta.url));
+const scenario = (name) => join(SOURCE, 'scenarios', `${name}.yaml`);
+const REACTIONS = new Set(['handled_by_tree', 'replan']);
+// "Within a bounded number of ticks": the loop reacts before the robot has started more
+// than one further move (the running one may finish or be halted first).
+const MAX_MOVES_BEFORE_REACTION = 1;
+
+function hello(ws) {
+  return ws.received.find((m) => m.type === 'hello');
+}
+
+function lastFrame(ws) {
+  for (let i = ws.received.length - 1; i >= 0; i--) if (ws.received[i].type === 'frame') return ws.received[i];
+  return null;
+}
+
+// Index of the first log record matching `pred`.
+function findRecord(ws, pred) {
+  const recs = logRecords(ws);
+  const i = recs.findIndex(pred);
+  return i < 0 ? null : { i, recs };
+}
+
+// The loop's reaction to the intervention at records[i]: the first handled_by_tree /
+// replan after it, and how many moves started in between.
+async function reaction(ws, pred, what) {
+  const found = await waitFor(() => {
+    const f = findRecord(ws, pred);
+    if (!f) return null;
+    const rest = f.recs.slice(f.i + 1);
+    const k = rest.findIndex((r) => REACTIONS.has(r.ev));
+    return k < 0 ? null : { intervention: f.recs[f.i], reaction: rest[k], between: rest.slice(0, k) };
+  }, what);
+  const starts = found.between.filter((r) => r.ev === 'action' && r.what === 'start').length;
+  assert.ok(starts <= MAX_MOVES_BEFORE_REACTION, `${starts} moves started before the loop reacted to ${JSON.stringify(found.intervention)}`);
+  return found;
+}
+
+async function withPage(serveArgs, body) {
+  skipUnlessReady();
+  const dir = scratchDir('web');
+  const log = join(dir, 'episode.jsonl');
+  const server = await startServer([...serveArgs, '--log', log]);
+  const { context } = await launch();
+  try {
+    const { page, ws, errors } = await openPage(context, server.url);
+    await body({ page, ws, log, server, dir });
+    assert.deepEqual(errors, [], 'the page logged errors');
+  } catch (e) {
+    console.error('server stderr:\n' + server.stderr());
+    throw e;
+  } finally {
+    await context.close().catch(() => {});
+    server.proc.kill('SIGTERM');
+    cleanup([() => rmSync(dir, { recursive: true, force: true })]);
+  }
+}
+
+// Where the page draws a thing / a region (page pixels), through its read-only test hook.
+const at = (page, name) => page.evaluate((n) => window.rtamp.project(n), name);
+
+// Drags `subject` onto `region` with the real mouse, aiming at a free spot of the region.
+async function dragTo(page, subject, region, dx = 0.1, dy = 0.1) {
+  const from = await at(page, subject);
+  const to = await page.evaluate(
+    ([r, ox, oy]) => {
+      const g = window.rtamp.regions().find((x) => x.name === r);
+      return window.rtamp.projectPoint([g.center[0] + ox, g.center[1] + oy, 0]);
+    },
+    [region, dx, dy],
+  );
+  await drag(page, from, to);
+}
+
+const cases = {
+  async loads() {
+    await withPage([scenario('3-block-tray'), '--world', 'symbolic'], async ({ page, ws }) => {
+      const h = hello(ws);
+      assert.equal(h.protocol, 1);
+      assert.equal(await page.textContent('#task'), h.task);
+      assert.equal(await page.locator('.ba-state').count(), h.automaton.states.length);
+      assert.equal(await page.locator('#palette .class-button').count(), h.scene.classes.length);
+      await waitFor(() => page.locator('.bt-node').count(), 'the behavior tree panel');
+      const tree = [...ws.received].reverse().find((m) => m.type === 'tree') || h.tree;
+      assert.equal(await page.locator('.bt-node').count(), tree.nodes.length);
+      await waitFor(() => page.locator('.plan-step').count(), 'the plan panel');
+      const plan = logRecords(ws).filter((r) => r.ev === 'plan').at(-1);
+      assert.equal(await page.locator('.plan-step').count(), plan.actions.length);
+      const css = await (await fetch(new URL('assets/style.css', page.url()))).text();
+      assert.match(css, /\.bt-node/);
+    });
+  },
+
+  async scene() {
+    await withPage([scenario('3-block-tray'), '--world', 'symbolic', '--no-operator', '--paused'], async ({ page, ws }) => {
+      const h = hello(ws);
+      const frame = lastFrame(ws);
+      const shown = await page.evaluate(() => window.rtamp.things());
+      assert.deepEqual(shown.map((t) => t.name).sort(), frame.things.map((t) => t.name).sort());
+      assert.deepEqual(shown.map((t) => t.name).sort(), h.scene.things.map((t) => t.name).sort());
+      // The scenario file's things (o1..o3 and the tray r3), in the regions it puts them.
+      const yaml = readFileSync(scenario('3-block-tray'), 'utf8');
+      for (const name of ['o1', 'o2', 'o3', 'r3']) assert.match(yaml, new RegExp(`name: ${name}\\b`));
+      const byName = Object.fromEntries(shown.map((t) => [t.name, t]));
+      for (const t of frame.things) {
+        assert.deepEqual(byName[t.name].pos, t.pos);
+        assert.equal(byName[t.name].at, t.at);
+        assert.equal(byName[t.name].class, h.scene.things.find((x) => x.name === t.name).class);
+      }
+      for (const o of ['o1', 'o2', 'o3', 'r3']) assert.equal(byName[o].at, 'r1', `${o} starts in r1`);
+      // Every thing is drawn inside the scene's canvas, and the blocks of r1 lie left of
+      // those of r2 on the screen as on the table seen from the front (+y to the right).
+      const box = await page.locator('#scene canvas').boundingBox();
+      for (const t of shown) {
+        const p = await at(page, t.name);
+        assert.ok(p.x > box.x && p.x < box.x + box.width && p.y > box.y && p.y < box.y + box.height, `${t.name} is on screen`);
+      }
+      const r1 = await at(page, 'r1'), r2 = await at(page, 'r2');
+      assert.ok(r1.x > r2.x, 'r1 (y = +0.32) is drawn right of r2 (y = -0.32) from the front');
+    });
+  },
+
+  async drag() {
+    await withPage([scenario('3-block-tray'), '--world', 'symbolic', '--no-operator', '--paused'], async ({ page, ws, log }) => {
+      await dragTo(page, 'o3', 'r2');
+      await page.click('#pause'); // resume
+      const { intervention, reaction: r } = await reaction(ws, (x) => x.ev === 'intervention' && x.kind === 'relocate', 'the relocation and the reaction');
+      assert.equal(intervention.subject, 'o3');
+      assert.equal(intervention.location, 'r2');
+      assert.equal(intervention.applied, true);
+      assert.ok(REACTIONS.has(r.ev));
+      await waitFor(async () => (await page.evaluate(() => window.rtamp.things())).find((t) => t.name === 'o3' && t.at === 'r2'), 'o3 drawn in r2');
+      // The same record is in the episode's JSON Lines log file.
+      const lines = readFileSync(log, 'utf8').trim().split('\n').map((l) => JSON.parse(l));
+      assert.ok(lines.some((l) => l.ev === 'intervention' && l.kind === 'relocate' && l.subject === 'o3' && l.location === 'r2' && l.applied));
+    });
+  },
+
+  async add() {
+    await withPage([scenario('3-block-tray'), '--world', 'symbolic', '--no-operator', '--paused'], async ({ page, ws }) => {
+      const before = (await page.evaluate(() => window.rtamp.things())).map((t) => t.name);
+      await page.selectOption('#add-at', 'r2');
+      await page.click('#palette .class-button[data-class="block"]');
+      await page.click('#pause');
+      const { intervention } = await reaction(ws, (x) => x.ev === 'intervention' && x.kind === 'add', 'the addition and the reaction');
+      assert.equal(intervention.applied, true);
+      assert.equal(intervention.location, 'r2');
+      assert.ok(!before.includes(intervention.subject));
+      await waitFor(async () => (await page.evaluate(() => window.rtamp.things())).find((t) => t.name === intervention.subject), 'the new block drawn');
+      const drawn = (await page.evaluate(() => window.rtamp.things())).find((t) => t.name === intervention.subject);
+      assert.equal(drawn.class, 'block');
+    });
+  },
+
+  async remove() {
+    await withPage([scenario('3-block-tray'), '--world', 'symbolic', '--no-operator', '--paused'], async ({ page, ws }) => {
+      const p = await at(page, 'o3');
+      await page.mouse.click(p.x, p.y);
+      assert.match(await page.textContent('#selected'), /o3/);
+      await page.click('#delete');
+      await page.click('#pause');
+      const { intervention } = await reaction(ws, (x) => x.ev === 'intervention' && x.kind === 'remove', 'the removal and the reaction');
+      assert.equal(intervention.subject, 'o3');
+      assert.equal(intervention.applied, true);
+      await waitFor(async () => !(await page.evaluate(() => window.rtamp.things())).some((t) => t.name === 'o3'), 'o3 gone from the scene');
+    });
+  },
+
+  async take() {
+    await withPage([scenario('3-block-tray'), '--world', 'symbolic', '--speed', '4'], async ({ page, ws }) => {
+      await waitFor(() => page.evaluate(() => window.rtamp.held), 'the robot holding a thing');
+      const held = await page.evaluate(() => window.rtamp.held);
+      await page.selectOption('#take-to', 'r1');
+      await page.click('#take');
+      const { intervention } = await reaction(ws, (x) => x.ev === 'intervention' && x.kind === 'take-from-gripper', 'the take and the reaction');
+      assert.equal(intervention.applied, true, JSON.stringify(intervention));
+      assert.equal(intervention.subject, held);
+      await waitFor(async () => (await page.evaluate(() => window.rtamp.things())).find((t) => t.name === held && t.at === 'r1'), `${held} drawn in r1`);
+    });
+  },
+
+  async refused() {
+    await withPage([scenario('3-block-tray'), '--world', 'symbolic', '--no-operator', '--paused'], async ({ page, ws }) => {
+      // r1 holds four things and has capacity 4: a fifth is refused by the validator.
+      await page.selectOption('#add-at', 'r1');
+      await page.click('#palette .class-button[data-class="block"]');
+      const reply = await waitFor(() => ws.received.find((m) => m.type === 'reply' && m.ok === false), 'the refusal');
+      assert.ok(reply.error && reply.error.length > 0);
+      await waitFor(async () => (await page.textContent('#notice')).includes(reply.error), `the reason '${reply.error}' on the page`);
+      assert.equal(await page.getAttribute('#notice', 'data-kind'), 'error');
+      // The scene is unchanged: four things, none added.
+      assert.equal((await page.evaluate(() => window.rtamp.things())).length, 4);
+    });
+  },
+
+  async replay() {
+    skipUnlessReady();
+    const dir = scratchDir('replay');
+    const log = join(dir, 'run.jsonl');
+    const run = spawnSync(BIN, ['run', scenario('3-block-tray'), '--world', 'symbolic', '--quiet', '--log', log], { encoding: 'utf8' });
+    assert.equal(run.status, 0, run.stderr);
+    const records = readFileSync(log, 'utf8').trim().split('\n').map((l) => JSON.parse(l));
+    const end = records.at(-1);
+    assert.equal(end.ev, 'end');
+    const server = await startServer([scenario('3-block-tray'), '--replay', log]);
+    const { context } = await launch();
+    try {
+      const { page, ws, errors } = await openPage(context, server.url);
+      assert.equal(hello(ws).mode, 'replay');
+      // Scrub with the keyboard: focus the slider, End jumps to the episode's end.
+      await page.focus('#scrub');
+      await page.keyboard.press('End');
+      await waitFor(() => page.evaluate(() => window.rtamp.records.some((r) => r.ev === 'end')), 'the end record after seeking');
+      await waitFor(async () => {
+        const shown = await page.evaluate(() => window.rtamp.things());
+        return Object.entries(end.placement).every(([name, loc]) => shown.find((t) => t.name === name)?.at === loc);
+      }, 'the logged end placement drawn');
+      assert.match(await page.textContent('#result'), end.success ? /succeeded/ : /failed/);
+      assert.deepEqual(errors, []);
+    } finally {
+      await context.close().catch(() => {});
+      server.proc.kill('SIGTERM');
+      rmSync(dir, { recursive: true, force: true });
+    }
+  },
+
+  async screenshot() {
+    await withPage([scenario('3-block-tray'), '--world', 'symbolic', '--no-operator', '--paused'], async ({ page }) => {
+      await page.waitForTimeout(300); // a few animation frames after the first server frame
+      const shot = PNG.sync.read(await page.locator('#scene').screenshot());
+      const refPath = join(here, 'reference', 'scene-3-block-tray.png');
+      if (process.env.RTAMP_UPDATE_REFERENCE === '1' || !existsSync(refPath)) {
+        writeFileSync(refPath, PNG.sync.write(shot));
+        assert.ok(process.env.RTAMP_UPDATE_REFERENCE === '1', `no reference image: wrote ${refPath}; check it and commit it`);
+        return;
+      }
+      const ref = PNG.sync.read(readFileSync(refPath));
+      assert.equal(shot.width, ref.width);
+      assert.equal(shot.height, ref.height);
+      const diff = new PNG({ width: ref.width, height: ref.height });
+      const n = pixelmatch(ref.data, shot.data, diff.data, ref.width, ref.height, { threshold: 0.15 });
+      const share = n / (ref.width * ref.height);
+      if (share > 0.01) writeFileSync(join(scratchDir('screenshot'), 'diff.png'), PNG.sync.write(diff));
+      assert.ok(share <= 0.01, `${(share * 100).toFixed(2)} % of the scene's pixels differ from the reference (tolerance 1 %)`);
+    });
+  },
+
+  async mujoco() {
+    await withPage([scenario('3-block-tray'), '--world', 'mujoco', '--no-operator', '--paused'], async ({ page, ws }) => {
+      const frame = lastFrame(ws);
+      assert.equal(frame.q.length, 6);
+      await dragTo(page, 'o3', 'r2');
+      await page.click('#pause');
+      const { intervention, reaction: r } = await reaction(ws, (x) => x.ev === 'intervention' && x.kind === 'relocate', 'the relocation and the reaction');
+      assert.equal(intervention.subject, 'o3');
+      assert.equal(intervention.applied, true, JSON.stringify(intervention));
+      assert.ok(REACTIONS.has(r.ev));
+    });
+  },
+};
+
+const name = process.argv[2];
+if (!cases[name]) {
+  console.error(`browser.mjs: error: unknown case '${name}' (one of: ${Object.keys(cases).join(', ')})`);
+  process.exit(2);
+}
+try {
+  await cases[name]();
+  console.log(`ok: ${name}`);
+  process.exit(0);
+} catch (e) {
+  console.error(`FAILED: ${name}: ${e.stack || e}`);
+  process.exit(1);
+}
