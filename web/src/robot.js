@@ -13,8 +13,8 @@ export class Robot {
     this.robot = robot;
     this.group = new THREE.Group();
     parent.add(this.group);
-    const metal = new THREE.MeshStandardMaterial({ color: '#9aa3ad', metalness: 0.3, roughness: 0.5 });
-    const joint = new THREE.MeshStandardMaterial({ color: '#2b4f81', roughness: 0.5 });
+    const metal = new THREE.MeshLambertMaterial({ color: '#9aa3ad' });
+    const joint = new THREE.MeshLambertMaterial({ color: '#2b4f81' });
     this.joints = [];
     this.links = [];
     for (let i = 0; i < 8; i++) {

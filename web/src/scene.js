@@ -67,7 +67,7 @@ export class Scene {
     this.tableTop = t.center[2] + t.size[2] / 2;
     const table = new THREE.Mesh(
       new THREE.BoxGeometry(...t.size),
-      new THREE.MeshStandardMaterial({ color: '#c8b79a', roughness: 0.9 }),
+      new THREE.MeshLambertMaterial({ color: '#c8b79a' }),
     );
     table.position.set(...t.center);
     table.name = 'table';
@@ -111,7 +111,7 @@ export class Scene {
   // A mesh for a thing: a block is a box, a tray a floor with four rims.
   makeMesh(name, info) {
     const color = info.color || this.classes?.get(info.class)?.color || '#888888';
-    const mat = new THREE.MeshStandardMaterial({ color, roughness: 0.6 });
+    const mat = new THREE.MeshLambertMaterial({ color });
     const [sx, sy, sz] = info.size || [0.04, 0.04, 0.04];
     let mesh;
     if (info.kind === 'container') {
