@@ -48,7 +48,7 @@ install(DIRECTORY ${PROJECT_SOURCE_DIR}/scenarios/ DESTINATION ${CMAKE_INSTALL_D
         FILES_MATCHING PATTERN "*.yaml")
 
 # pkg-config: static libraries in link order (users before what they use).
-set(core_order exp_core exec bt robot plan task automata ltl world util)
+set(core_order batch_core exec bt robot plan task automata ltl world util)
 set(RTAMP_PC_CORE_LIBS "")
 foreach(l IN LISTS core_order)
   if(TARGET rtamp_${l})
@@ -56,7 +56,7 @@ foreach(l IN LISTS core_order)
   endif()
 endforeach()
 set(RTAMP_PC_MUJOCO_LIBS "")
-foreach(l IN ITEMS exp episode sim)
+foreach(l IN ITEMS batch episode sim)
   if(TARGET rtamp_${l})
     string(APPEND RTAMP_PC_MUJOCO_LIBS " -lrtamp_${l}")
   endif()

@@ -1,6 +1,6 @@
-// rtamp batch — seeded batches of episodes (exp/runner.hpp) and the summary
-// table of the paper's Table I (exp/summary.hpp); `--shard K/N` runs one
-// slice of the trial list, `--merge CSV...` joins slices (exp/merge.hpp).
+// rtamp batch — seeded batches of episodes (batch/runner.hpp) and the summary
+// table of the paper's Table I (batch/summary.hpp); `--shard K/N` runs one
+// slice of the trial list, `--merge CSV...` joins slices (batch/merge.hpp).
 // Options and output: docs/cli.md and docs/experiments.md.
 #include <unistd.h>
 
@@ -16,12 +16,12 @@
 
 #include "command.hpp"
 #include "options.hpp"
-#include "rtamp/exp/csv.hpp"
-#include "rtamp/exp/merge.hpp"
-#include "rtamp/exp/progress.hpp"
-#include "rtamp/exp/runner.hpp"
-#include "rtamp/exp/summary.hpp"
-#include "rtamp/exp/trials.hpp"
+#include "rtamp/batch/csv.hpp"
+#include "rtamp/batch/merge.hpp"
+#include "rtamp/batch/progress.hpp"
+#include "rtamp/batch/runner.hpp"
+#include "rtamp/batch/summary.hpp"
+#include "rtamp/batch/trials.hpp"
 #include "rtamp/task/validate.hpp"
 #include "rtamp/util/error.hpp"
 #include "rtamp/world/scenario_io.hpp"
@@ -64,26 +64,26 @@ std::string seconds_text(double s) {
   return buf;
 }
 
-void print_summary(const BatchArgs& a, const std::vector<exp::EpisodeRecord>& records) {
-  const exp::Summary s = exp::summarize(records, exp::parse_grouping(a.group_by));
+void print_summary(const BatchArgs& a, const std::vector<batch::EpisodeRecord>& records) {
+  const batch::Summary s = batch::summarize(records, batch::parse_grouping(a.group_by));
   std::string format = a.json ? "json" : a.markdown ? "markdown" : a.format;
   if (format == "json") {
-    std::cout << exp::to_json(s, 2) << "\n";
+    std::cout << batch::to_json(s, 2) << "\n";
   } else if (format == "markdown") {
-    std::cout << exp::format_markdown(s);
+    std::cout << batch::format_markdown(s);
   } else if (format == "tsv") {
-    std::cout << exp::format_tsv(s);
+    std::cout << batch::format_tsv(s);
   } else {
-    std::cout << exp::format_text(s);
+    std::cout << batch::format_text(s);
   }
   std::cout.flush();
 }
 
 // Replaces `path` atomically with the records in canonical order.
-void write_sorted(const std::string& path, std::vector<exp::EpisodeRecord> records) {
-  exp::sort_canonical(records);
+void write_sorted(const std::string& path, std::vector<batch::EpisodeRecord> records) {
+  batch::sort_canonical(records);
   const std::string tmp = path + ".tmp";
-  exp::write_csv_file(tmp, records);
+  batch::write_csv_file(tmp, records);
   std::error_code ec;
   std::filesystem::rename(tmp, path, ec);
   if (ec) throw Error("cannot replace '" + path + "': " + ec.message());
@@ -99,9 +99,9 @@ std::vector<E> parse_all(const std::vector<std::string>& names, E (*parse)(std::
 int run_merge(const BatchArgs& a) {
   if (!a.scenario.empty())
     throw Error("give either a scenario to run or --merge CSV files, not both (scenario '" + a.scenario + "')");
-  auto records = exp::merge_files(a.merge);
+  auto records = batch::merge_files(a.merge);
   // Explicit --algo / --bt / --change select rows.
-  auto keep = [&](const exp::EpisodeRecord& r) {
+  auto keep = [&](const batch::EpisodeRecord& r) {
     auto has = [](const std::vector<std::string>& v, const std::string& x) {
       return std::find(v.begin(), v.end(), x) != v.end();
     };
@@ -127,17 +127,17 @@ int run_batch(const BatchArgs& a) {
   task::validate_task(scenario);  // a bad task is refused once, not run as failed trials
   if (!a.output.empty()) rtamp::cli::check_output_file("--output", a.output);
   if (!a.log_dir.empty()) rtamp::cli::check_output_dir("--log-dir", a.log_dir);
-  exp::Grid grid;
-  grid.algorithms = parse_all(a.algos, exp::parse_algorithm);
-  grid.changes = parse_all(a.changes, exp::parse_change);
-  grid.bt_variants = parse_all(a.bts, exp::parse_bt_variant);
+  batch::Grid grid;
+  grid.algorithms = parse_all(a.algos, batch::parse_algorithm);
+  grid.changes = parse_all(a.changes, batch::parse_change);
+  grid.bt_variants = parse_all(a.bts, batch::parse_bt_variant);
   grid.trials = a.trials;
   grid.base_seed = a.seed;
-  auto trials = exp::make_trials(grid);
+  auto trials = batch::make_trials(grid);
   const std::size_t grid_size = trials.size();
-  if (!a.shard.empty()) trials = exp::select_shard(trials, exp::parse_shard(a.shard));
+  if (!a.shard.empty()) trials = batch::select_shard(trials, batch::parse_shard(a.shard));
 
-  exp::BatchOptions opt;
+  batch::BatchOptions opt;
   opt.jobs = a.jobs;
   opt.max_time = a.max_time;
   opt.cost = a.cost;
@@ -152,7 +152,7 @@ int run_batch(const BatchArgs& a) {
   if (!a.output.empty()) {
     csv.open(a.output, std::ios::binary | std::ios::trunc);
     if (!csv) throw Error("--output: cannot write '" + a.output + "'");
-    exp::write_header(csv);
+    batch::write_header(csv);
     csv.flush();
   }
 
@@ -163,12 +163,12 @@ int run_batch(const BatchArgs& a) {
 
   const auto t0 = Clock::now();
   std::mutex mutex;  // guards progress and stderr
-  exp::Progress progress;
+  batch::Progress progress;
   progress.total = trials.size();
   auto elapsed = [&] { return std::chrono::duration<double>(Clock::now() - t0).count(); };
   auto redraw = [&] {  // caller holds the mutex
     progress.elapsed_s = elapsed();
-    std::cerr << "\r" << exp::progress_bar(progress) << "\x1b[K" << std::flush;
+    std::cerr << "\r" << batch::progress_bar(progress) << "\x1b[K" << std::flush;
   };
   bool finished = false;
   std::condition_variable cv;
@@ -183,11 +183,11 @@ int run_batch(const BatchArgs& a) {
     });
   }
 
-  std::vector<exp::EpisodeRecord> records;
+  std::vector<batch::EpisodeRecord> records;
   try {
-    records = exp::run_batch(scenario, trials, opt, [&](const exp::Trial& t, const exp::EpisodeRecord& r) {
+    records = batch::run_batch(scenario, trials, opt, [&](const batch::Trial& t, const batch::EpisodeRecord& r) {
       if (csv.is_open()) {
-        exp::write_record(csv, r);
+        batch::write_record(csv, r);
         csv.flush();
       }
       std::lock_guard lock(mutex);
@@ -195,19 +195,19 @@ int run_batch(const BatchArgs& a) {
       if (!r.success) ++progress.failures;
       if (tty) {
         if (!r.success) {
-          std::cerr << "\r\x1b[K" << "failed: " << exp::describe_key(r) << " (seed " << t.seed << "): " << r.reason
+          std::cerr << "\r\x1b[K" << "failed: " << batch::describe_key(r) << " (seed " << t.seed << "): " << r.reason
                     << "\n";
         }
         redraw();
       } else if (!a.quiet) {
         progress.elapsed_s = elapsed();
-        const double eta = exp::eta_seconds(progress);
+        const double eta = batch::eta_seconds(progress);
         std::cerr << "[" << progress.done << "/" << progress.total << "] " << r.change << " " << r.algorithm << " "
                   << r.bt << " trial " << r.trial << ": " << (r.success ? "ok" : "FAILED") << " (" << r.reason
                   << "), completion " << seconds_text(r.completion_s) << " s, " << r.replans << " replan(s), "
                   << r.tree_changes << " tree change(s), " << seconds_text(r.wall_s) << " s wall; elapsed "
-                  << exp::format_duration(progress.elapsed_s) << ", ETA "
-                  << (eta < 0 ? std::string("?") : exp::format_duration(eta)) << ", failures " << progress.failures
+                  << batch::format_duration(progress.elapsed_s) << ", ETA "
+                  << (eta < 0 ? std::string("?") : batch::format_duration(eta)) << ", failures " << progress.failures
                   << "\n";
       }
     });
@@ -235,7 +235,7 @@ int run_batch(const BatchArgs& a) {
     csv.close();
     write_sorted(a.output, records);
   }
-  std::cerr << "rtamp batch: " << records.size() << " episode(s) in " << exp::format_duration(elapsed())
+  std::cerr << "rtamp batch: " << records.size() << " episode(s) in " << batch::format_duration(elapsed())
             << ", " << progress.failures << " failed";
   if (!a.output.empty()) std::cerr << "; wrote " << a.output;
   std::cerr << "\n";
@@ -289,7 +289,7 @@ rtamp::cli::Registrar reg{
       sub.add_flag("--no-randomize", a->no_randomize, "Keep the scenario's initial object positions");
       sub.add_flag("--quiet,-q", a->quiet, "No progress on standard error");
       return [a]() -> int {
-        exp::parse_grouping(a->group_by);  // reject a bad --group-by before running anything
+        batch::parse_grouping(a->group_by);  // reject a bad --group-by before running anything
         if (!a->merge.empty()) return run_merge(*a);
         if (!a->output_opt->count()) a->output = "results.csv";
         return run_batch(*a);

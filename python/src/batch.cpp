@@ -1,18 +1,18 @@
 // The C++ half of rtamp.batch (python/rtamp/batch.py, issue 12 item 4): the
-// trial grid of `rtamp batch` (exp/trials.hpp: algorithms x changes x BT
+// trial grid of `rtamp batch` (batch/trials.hpp: algorithms x changes x BT
 // variants x trials, seeds by trial index), running a list of trials (each an
-// independent episode, exp::run_batch, without the GIL) to CSV rows, and
+// independent episode, batch::run_batch, without the GIL) to CSV rows, and
 // merging CSV slices into the canonical CSV `rtamp batch` writes
-// (exp/csv.hpp). Trials cross process boundaries as plain tuples
+// (batch/csv.hpp). Trials cross process boundaries as plain tuples
 // (algorithm, change, bt, index, seed), so Dask can ship them anywhere.
 #include <sstream>
 
 #include "bindings.hpp"
 #include "choices.hpp"
-#include "rtamp/exp/csv.hpp"
-#include "rtamp/exp/record.hpp"
-#include "rtamp/exp/runner.hpp"
-#include "rtamp/exp/trials.hpp"
+#include "rtamp/batch/csv.hpp"
+#include "rtamp/batch/record.hpp"
+#include "rtamp/batch/runner.hpp"
+#include "rtamp/batch/trials.hpp"
 
 namespace rtamp::python {
 
@@ -20,15 +20,15 @@ namespace {
 
 using TrialTuple = std::tuple<std::string, std::string, std::string, int, std::uint64_t>;
 
-TrialTuple to_tuple(const exp::Trial& t) {
-  return {exp::to_string(t.algorithm), exp::to_string(t.change), exp::to_string(t.bt), t.index, t.seed};
+TrialTuple to_tuple(const batch::Trial& t) {
+  return {batch::to_string(t.algorithm), batch::to_string(t.change), batch::to_string(t.bt), t.index, t.seed};
 }
 
-exp::Trial from_tuple(const TrialTuple& t) {
-  exp::Trial x;
-  x.algorithm = exp::parse_algorithm(std::get<0>(t));
-  x.change = exp::parse_change(std::get<1>(t));
-  x.bt = exp::parse_bt_variant(std::get<2>(t));
+batch::Trial from_tuple(const TrialTuple& t) {
+  batch::Trial x;
+  x.algorithm = batch::parse_algorithm(std::get<0>(t));
+  x.change = batch::parse_change(std::get<1>(t));
+  x.bt = batch::parse_bt_variant(std::get<2>(t));
   x.index = std::get<3>(t);
   x.seed = std::get<4>(t);
   return x;
@@ -47,14 +47,14 @@ void bind_batch(py::module_& m) {
   m.def("make_trials",
         [](const std::vector<std::string>& algorithms, const std::vector<std::string>& changes,
            const std::vector<std::string>& bts, int trials, std::uint64_t seed, const std::string& shard) {
-          exp::Grid g;
-          g.algorithms = parse_all<exp::Algorithm>(algorithms, exp::parse_algorithm);
-          g.changes = parse_all<exp::Change>(changes, exp::parse_change);
-          g.bt_variants = parse_all<exp::BtVariant>(bts, exp::parse_bt_variant);
+          batch::Grid g;
+          g.algorithms = parse_all<batch::Algorithm>(algorithms, batch::parse_algorithm);
+          g.changes = parse_all<batch::Change>(changes, batch::parse_change);
+          g.bt_variants = parse_all<batch::BtVariant>(bts, batch::parse_bt_variant);
           g.trials = trials;
           g.base_seed = seed;
-          auto list = exp::make_trials(g);
-          if (!shard.empty()) list = exp::select_shard(list, exp::parse_shard(shard));
+          auto list = batch::make_trials(g);
+          if (!shard.empty()) list = batch::select_shard(list, batch::parse_shard(shard));
           std::vector<TrialTuple> out;
           for (const auto& t : list) out.push_back(to_tuple(t));
           return out;
@@ -66,22 +66,22 @@ void bind_batch(py::module_& m) {
   m.def("run_trials",
         [](const world::Scenario& s, const std::vector<TrialTuple>& trials, const std::string& world, int jobs,
            double max_time, const std::string& cost, bool randomize_initial, bool scripted_operator) {
-          std::vector<exp::Trial> list;
+          std::vector<batch::Trial> list;
           for (const auto& t : trials) list.push_back(from_tuple(t));
-          exp::BatchOptions o;
+          batch::BatchOptions o;
           o.jobs = jobs;
           o.max_time = max_time;
           o.cost = cost;
           o.randomize_initial = randomize_initial;
           o.scripted_operator = scripted_operator;
           o.world = parse_choice(kWorlds, world, "world");
-          std::vector<exp::EpisodeRecord> records;
+          std::vector<batch::EpisodeRecord> records;
           {
             py::gil_scoped_release release;
-            records = exp::run_batch(s, list, o);
+            records = batch::run_batch(s, list, o);
           }
           std::ostringstream out;
-          for (const auto& r : records) exp::write_record(out, r);
+          for (const auto& r : records) batch::write_record(out, r);
           return out.str();
         },
         py::arg("scenario"), py::arg("trials"), py::kw_only(), py::arg("world") = "symbolic", py::arg("jobs") = 1,
@@ -89,21 +89,21 @@ void bind_batch(py::module_& m) {
         py::arg("scripted_operator") = false,
         "Runs trials (tuples from make_trials) as `rtamp batch` does and returns their CSV rows (no\n"
         "header), in the order given. The GIL is released while they run.");
-  m.def("csv_columns", &exp::csv_columns, "The columns of the batch CSV, in order.");
+  m.def("csv_columns", &batch::csv_columns, "The columns of the batch CSV, in order.");
   m.def("merge_csv",
         [](const std::vector<std::string>& slices) {
           std::ostringstream header;
-          exp::write_header(header);
-          std::vector<exp::EpisodeRecord> all;
+          batch::write_header(header);
+          std::vector<batch::EpisodeRecord> all;
           for (std::size_t i = 0; i < slices.size(); ++i) {
-            auto rows = exp::read_csv(header.str() + slices[i], "slice " + std::to_string(i + 1));
+            auto rows = batch::read_csv(header.str() + slices[i], "slice " + std::to_string(i + 1));
             all.insert(all.end(), rows.begin(), rows.end());
           }
-          exp::sort_canonical(all);
+          batch::sort_canonical(all);
           for (std::size_t i = 1; i < all.size(); ++i)
-            if (all[i - 1].key() == all[i].key()) throw Error("two rows for " + exp::describe_key(all[i]));
+            if (all[i - 1].key() == all[i].key()) throw Error("two rows for " + batch::describe_key(all[i]));
           std::ostringstream out;
-          exp::write_csv(out, all);
+          batch::write_csv(out, all);
           return out.str();
         },
         py::arg("slices"),

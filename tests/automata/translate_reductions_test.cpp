@@ -7,7 +7,7 @@
 #include "rtamp/automata/degeneralize.hpp"
 #include "rtamp/automata/emptiness.hpp"
 #include "rtamp/automata/reduce.hpp"
-#include "rtamp/automata/simulation.hpp"
+#include "rtamp/automata/simulation_reduction.hpp"
 
 namespace rtamp::automata {
 namespace {

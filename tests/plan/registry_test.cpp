@@ -11,7 +11,7 @@
 #include <limits>
 #include <set>
 
-#include "rtamp/exp/trials.hpp"
+#include "rtamp/batch/trials.hpp"
 #include "rtamp/plan/planner.hpp"
 #include "rtamp/plan/registry.hpp"
 #include "rtamp/robot/ik_motion_cost.hpp"
@@ -40,11 +40,11 @@ TEST(Registry, AlgorithmNamesRoundTrip) {
     EXPECT_TRUE(names.insert(a.name).second) << a.name;
   }
   EXPECT_EQ(algorithm_names(), (std::vector<std::string>{"astar-exp", "astar", "dijkstra"}));
-  // The batch grid's vocabulary (exp/trials.hpp, which links no planner) is the same, in the same order.
+  // The batch grid's vocabulary (batch/trials.hpp, which links no planner) is the same, in the same order.
   for (std::size_t i = 0; i < algorithms().size(); ++i) {
     const std::string n = algorithms()[i].name;
-    EXPECT_EQ(exp::to_string(exp::parse_algorithm(n)), n);
-    EXPECT_EQ(exp::algorithm_rank(n), static_cast<int>(i));
+    EXPECT_EQ(batch::to_string(batch::parse_algorithm(n)), n);
+    EXPECT_EQ(batch::algorithm_rank(n), static_cast<int>(i));
   }
   EXPECT_TRUE(algorithm_info(Algorithm::AStarExperience).keeps_experience);
   EXPECT_FALSE(algorithm_info(Algorithm::AStar).keeps_experience);

@@ -5,7 +5,7 @@
 #include "rtamp/automata/gba.hpp"
 #include "rtamp/automata/reduce.hpp"
 #include "rtamp/automata/shortcuts.hpp"
-#include "rtamp/automata/simulation.hpp"
+#include "rtamp/automata/simulation_reduction.hpp"
 #include "rtamp/automata/vwaa.hpp"
 #include "rtamp/ltl/printer.hpp"
 #include "rtamp/ltl/simplify.hpp"

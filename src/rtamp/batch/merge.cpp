@@ -1,14 +1,14 @@
-#include "rtamp/exp/merge.hpp"
+#include "rtamp/batch/merge.hpp"
 
 #include <fstream>
 #include <iterator>
 #include <map>
 #include <tuple>
 
-#include "rtamp/exp/csv.hpp"
+#include "rtamp/batch/csv.hpp"
 #include "rtamp/util/error.hpp"
 
-namespace rtamp::exp {
+namespace rtamp::batch {
 
 std::vector<EpisodeRecord> merge_slices(const std::vector<CsvSource>& sources) {
   if (sources.empty()) throw Error("--merge needs at least one CSV file");
@@ -60,4 +60,4 @@ std::vector<EpisodeRecord> merge_files(const std::vector<std::string>& paths) {
   return merge_slices(sources);
 }
 
-}  // namespace rtamp::exp
+}  // namespace rtamp::batch

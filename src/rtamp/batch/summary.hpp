@@ -20,10 +20,10 @@
 #include <string_view>
 #include <vector>
 
-#include "rtamp/exp/record.hpp"
-#include "rtamp/exp/statistics.hpp"
+#include "rtamp/batch/record.hpp"
+#include "rtamp/batch/statistics.hpp"
 
-namespace rtamp::exp {
+namespace rtamp::batch {
 
 // Which keys define a cell; keys not grouped by are pooled (shown as "*").
 struct Grouping {
@@ -60,4 +60,4 @@ std::string format_markdown(const Summary& s);
 std::string to_json(const Summary& s, int indent = -1);
 std::string format_tsv(const Summary& s);
 
-}  // namespace rtamp::exp
+}  // namespace rtamp::batch

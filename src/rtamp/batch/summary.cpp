@@ -1,4 +1,4 @@
-#include "rtamp/exp/summary.hpp"
+#include "rtamp/batch/summary.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -11,7 +11,7 @@
 
 #include "rtamp/util/error.hpp"
 
-namespace rtamp::exp {
+namespace rtamp::batch {
 
 namespace {
 
@@ -322,4 +322,4 @@ std::string format_tsv(const Summary& s) {
   return o.str();
 }
 
-}  // namespace rtamp::exp
+}  // namespace rtamp::batch

@@ -1,11 +1,11 @@
-#include "rtamp/exp/trials.hpp"
+#include "rtamp/batch/trials.hpp"
 
 #include <algorithm>
 #include <charconv>
 
 #include "rtamp/util/error.hpp"
 
-namespace rtamp::exp {
+namespace rtamp::batch {
 
 namespace {
 
@@ -118,4 +118,4 @@ std::vector<Trial> select_shard(const std::vector<Trial>& trials, Shard shard) {
   return out;
 }
 
-}  // namespace rtamp::exp
+}  // namespace rtamp::batch

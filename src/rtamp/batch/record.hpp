@@ -14,7 +14,7 @@
 #include <tuple>
 #include <vector>
 
-namespace rtamp::exp {
+namespace rtamp::batch {
 
 struct EpisodeRecord {
   std::string scenario;
@@ -47,4 +47,4 @@ std::string describe_key(const EpisodeRecord& r);
 bool canonical_less(const EpisodeRecord& a, const EpisodeRecord& b);
 void sort_canonical(std::vector<EpisodeRecord>& records);
 
-}  // namespace rtamp::exp
+}  // namespace rtamp::batch

@@ -1,6 +1,6 @@
 // Statistics of a batch: hand-computed means, medians and t intervals, and the
 // t table checked against a numerical integration of Student's t density.
-#include "rtamp/exp/statistics.hpp"
+#include "rtamp/batch/statistics.hpp"
 
 #include <gtest/gtest.h>
 
@@ -10,9 +10,9 @@
 
 namespace {
 
-using rtamp::exp::describe;
-using rtamp::exp::Stats;
-using rtamp::exp::t_critical_95;
+using rtamp::batch::describe;
+using rtamp::batch::Stats;
+using rtamp::batch::t_critical_95;
 
 // P(T <= t) for Student's t with df degrees of freedom, by Simpson's rule on
 // the density from 0 to t (the density is symmetric, so CDF = 0.5 + ∫0^t).

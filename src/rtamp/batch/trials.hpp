@@ -23,7 +23,7 @@
 #include <string_view>
 #include <vector>
 
-namespace rtamp::exp {
+namespace rtamp::batch {
 
 // The names used on the command line and in the CSV.
 enum class Algorithm { AStarExperience, AStar, Dijkstra };          // astar-exp | astar | dijkstra
@@ -79,4 +79,4 @@ Shard parse_shard(std::string_view text);
 // The K-th of N interleaved slices of `trials` (order kept).
 std::vector<Trial> select_shard(const std::vector<Trial>& trials, Shard shard);
 
-}  // namespace rtamp::exp
+}  // namespace rtamp::batch

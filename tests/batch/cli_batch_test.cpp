@@ -8,12 +8,12 @@
 #include <sstream>
 
 #include "../cli/run_cli.hpp"
-#include "rtamp/exp/csv.hpp"
-#include "rtamp/exp/trials.hpp"
+#include "rtamp/batch/csv.hpp"
+#include "rtamp/batch/trials.hpp"
 
 namespace {
 
-using namespace rtamp::exp;
+using namespace rtamp::batch;
 namespace ct = rtamp::cli::testing;
 
 EpisodeRecord rec(const std::string& algo, const std::string& change, int trial, double completion) {

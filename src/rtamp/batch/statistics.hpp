@@ -15,7 +15,7 @@
 #include <cstddef>
 #include <span>
 
-namespace rtamp::exp {
+namespace rtamp::batch {
 
 struct Stats {
   std::size_t n = 0;
@@ -31,4 +31,4 @@ double t_critical_95(std::size_t df);
 
 Stats describe(std::span<const double> samples);
 
-}  // namespace rtamp::exp
+}  // namespace rtamp::batch

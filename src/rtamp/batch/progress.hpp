@@ -10,7 +10,7 @@
 #include <cstddef>
 #include <string>
 
-namespace rtamp::exp {
+namespace rtamp::batch {
 
 struct Progress {
   std::size_t done = 0, total = 0, failures = 0;
@@ -24,4 +24,4 @@ std::string progress_bar(const Progress& p, int width = 30);
 // Estimated seconds left; negative if unknown (nothing done yet).
 double eta_seconds(const Progress& p);
 
-}  // namespace rtamp::exp
+}  // namespace rtamp::batch

@@ -1,4 +1,4 @@
-#include "rtamp/automata/simulation.hpp"
+#include "rtamp/automata/simulation_reduction.hpp"
 
 #include <algorithm>
 

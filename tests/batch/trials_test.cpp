@@ -1,6 +1,6 @@
 // The trial grid: pairing of seeds, grid size and order, and the shard
 // partition property (every trial in exactly one shard, balanced sizes).
-#include "rtamp/exp/trials.hpp"
+#include "rtamp/batch/trials.hpp"
 
 #include <gtest/gtest.h>
 
@@ -12,7 +12,7 @@
 
 namespace {
 
-using namespace rtamp::exp;
+using namespace rtamp::batch;
 
 Grid full_grid(int trials) {
   Grid g;

@@ -1,11 +1,11 @@
-#include "rtamp/exp/statistics.hpp"
+#include "rtamp/batch/statistics.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <vector>
 
-namespace rtamp::exp {
+namespace rtamp::batch {
 
 namespace {
 
@@ -65,4 +65,4 @@ Stats describe(std::span<const double> samples) {
   return s;
 }
 
-}  // namespace rtamp::exp
+}  // namespace rtamp::batch

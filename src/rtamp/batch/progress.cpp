@@ -1,9 +1,9 @@
-#include "rtamp/exp/progress.hpp"
+#include "rtamp/batch/progress.hpp"
 
 #include <cmath>
 #include <cstdio>
 
-namespace rtamp::exp {
+namespace rtamp::batch {
 
 std::string format_duration(double s) {
   char buf[48];
@@ -40,4 +40,4 @@ std::string progress_bar(const Progress& p, int width) {
   return bar;
 }
 
-}  // namespace rtamp::exp
+}  // namespace rtamp::batch

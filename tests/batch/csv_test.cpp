@@ -1,6 +1,6 @@
 // The batch CSV: quoting, write → read round trips (including awkward
 // reasons and exact doubles), and the reader's refusals.
-#include "rtamp/exp/csv.hpp"
+#include "rtamp/batch/csv.hpp"
 
 #include <gtest/gtest.h>
 
@@ -11,7 +11,7 @@
 
 namespace {
 
-using namespace rtamp::exp;
+using namespace rtamp::batch;
 
 EpisodeRecord sample(int trial, std::string reason = "task done") {
   EpisodeRecord r;

@@ -6,12 +6,12 @@
 #include <string>
 
 #include "../cli/run_cli.hpp"
-#include "rtamp/exp/csv.hpp"
-#include "rtamp/exp/trials.hpp"
+#include "rtamp/batch/csv.hpp"
+#include "rtamp/batch/trials.hpp"
 
 namespace {
 
-using namespace rtamp::exp;
+using namespace rtamp::batch;
 namespace ct = rtamp::cli::testing;
 
 TEST(CliBatchSlow, TwoEpisodesEndToEnd) {

@@ -18,9 +18,9 @@
 #include <string>
 #include <vector>
 
-#include "rtamp/exp/record.hpp"
+#include "rtamp/batch/record.hpp"
 
-namespace rtamp::exp {
+namespace rtamp::batch {
 
 const std::vector<std::string>& csv_columns();
 
@@ -49,4 +49,4 @@ void write_csv_file(const std::string& path, const std::vector<EpisodeRecord>& r
 std::vector<EpisodeRecord> read_csv(const std::string& text, const std::string& file = {});
 std::vector<EpisodeRecord> read_csv_file(const std::string& path);
 
-}  // namespace rtamp::exp
+}  // namespace rtamp::batch

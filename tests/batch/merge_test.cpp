@@ -1,20 +1,20 @@
 // Merging CSV slices of a sharded batch: slices of a grid merge back to the
 // whole, in canonical order; duplicates, header mismatches and slices run with
 // different seeds are refused.
-#include "rtamp/exp/merge.hpp"
+#include "rtamp/batch/merge.hpp"
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <sstream>
 
-#include "rtamp/exp/csv.hpp"
-#include "rtamp/exp/trials.hpp"
+#include "rtamp/batch/csv.hpp"
+#include "rtamp/batch/trials.hpp"
 #include "rtamp/util/error.hpp"
 
 namespace {
 
-using namespace rtamp::exp;
+using namespace rtamp::batch;
 
 EpisodeRecord record_of(const Trial& t) {
   EpisodeRecord r;

@@ -1,7 +1,7 @@
 // The Table I summary on synthetic records: grouping, the statistics in each
 // cell (completion over successes only), number formatting, and the text,
 // Markdown, JSON and TSV renderings; plus the progress line.
-#include "rtamp/exp/summary.hpp"
+#include "rtamp/batch/summary.hpp"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -9,12 +9,12 @@
 #include <cmath>
 #include <sstream>
 
-#include "rtamp/exp/progress.hpp"
+#include "rtamp/batch/progress.hpp"
 #include "rtamp/util/error.hpp"
 
 namespace {
 
-using namespace rtamp::exp;
+using namespace rtamp::batch;
 
 EpisodeRecord rec(const std::string& change, const std::string& algo, const std::string& bt, int trial,
                   double completion, bool success = true) {

@@ -16,9 +16,9 @@
 #include <string>
 #include <vector>
 
-#include "rtamp/exp/record.hpp"
+#include "rtamp/batch/record.hpp"
 
-namespace rtamp::exp {
+namespace rtamp::batch {
 
 struct CsvSource {
   std::string file;  // name used in messages
@@ -29,4 +29,4 @@ std::vector<EpisodeRecord> merge_slices(const std::vector<CsvSource>& sources);
 // Reads the files, then merge_slices().
 std::vector<EpisodeRecord> merge_files(const std::vector<std::string>& paths);
 
-}  // namespace rtamp::exp
+}  // namespace rtamp::batch

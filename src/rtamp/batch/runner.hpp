@@ -22,11 +22,11 @@
 #include <vector>
 
 #include "rtamp/episode/episode.hpp"
-#include "rtamp/exp/record.hpp"
-#include "rtamp/exp/trials.hpp"
+#include "rtamp/batch/record.hpp"
+#include "rtamp/batch/trials.hpp"
 #include "rtamp/world/scenario.hpp"
 
-namespace rtamp::exp {
+namespace rtamp::batch {
 
 struct BatchOptions {
   int jobs = 2;                   // worker threads (>= 1)
@@ -53,4 +53,4 @@ using EpisodeDone = std::function<void(const Trial&, const EpisodeRecord&)>;
 std::vector<EpisodeRecord> run_batch(const world::Scenario& scenario, const std::vector<Trial>& trials,
                                      const BatchOptions& options, const EpisodeDone& on_done = {});
 
-}  // namespace rtamp::exp
+}  // namespace rtamp::batch

@@ -1,4 +1,4 @@
-#include "rtamp/exp/csv.hpp"
+#include "rtamp/batch/csv.hpp"
 
 #include <charconv>
 #include <cmath>
@@ -7,10 +7,10 @@
 #include <ostream>
 #include <sstream>
 
-#include "rtamp/exp/trials.hpp"
+#include "rtamp/batch/trials.hpp"
 #include "rtamp/util/error.hpp"
 
-namespace rtamp::exp {
+namespace rtamp::batch {
 
 namespace {
 
@@ -290,4 +290,4 @@ std::vector<EpisodeRecord> read_csv_file(const std::string& path) {
   return read_csv(text, path);
 }
 
-}  // namespace rtamp::exp
+}  // namespace rtamp::batch

@@ -1,11 +1,11 @@
-#include "rtamp/exp/record.hpp"
+#include "rtamp/batch/record.hpp"
 
 #include <algorithm>
 #include <tuple>
 
-#include "rtamp/exp/trials.hpp"
+#include "rtamp/batch/trials.hpp"
 
-namespace rtamp::exp {
+namespace rtamp::batch {
 
 std::string describe_key(const EpisodeRecord& r) {
   return "scenario " + r.scenario + ", " + r.algorithm + ", " + r.bt + ", " + r.change + ", trial " +
@@ -26,4 +26,4 @@ void sort_canonical(std::vector<EpisodeRecord>& records) {
   std::stable_sort(records.begin(), records.end(), canonical_less);
 }
 
-}  // namespace rtamp::exp
+}  // namespace rtamp::batch

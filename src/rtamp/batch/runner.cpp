@@ -1,4 +1,4 @@
-#include "rtamp/exp/runner.hpp"
+#include "rtamp/batch/runner.hpp"
 
 #include <algorithm>
 #include <atomic>
@@ -9,7 +9,7 @@
 
 #include "rtamp/util/error.hpp"
 
-namespace rtamp::exp {
+namespace rtamp::batch {
 
 episode::EpisodeOptions episode_options(const Trial& t, const BatchOptions& o) {
   episode::EpisodeOptions e;
@@ -126,4 +126,4 @@ std::vector<EpisodeRecord> run_batch(const world::Scenario& scenario, const std:
   return out;
 }
 
-}  // namespace rtamp::exp
+}  // namespace rtamp::batch
