@@ -36,6 +36,10 @@ export function installTestHook(app) {
     get notices() {
       return app.notice.history.map((n) => ({ text: n.text, kind: n.kind }));
     },
+    // The tool point of the arm as drawn (forward kinematics of the angles shown).
+    get tool() {
+      return app.robot?.toolPoint ?? null;
+    },
     get latencies() {
       return app.latencies;
     },

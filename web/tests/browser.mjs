@@ -140,6 +140,9 @@ const cases = {
         const p = await at(page, t.name);
         assert.ok(p.x > box.x && p.x < box.x + box.width && p.y > box.y && p.y < box.y + box.height, `${t.name} is on screen`);
       }
+      // The arm is drawn reaching the server's tool point (the page's kinematics, no q here).
+      const tool = await page.evaluate(() => window.rtamp.tool);
+      assert.ok(Math.hypot(...tool.map((v, i) => v - frame.tool[i])) < 1e-3, `drawn tool ${tool} vs streamed ${frame.tool}`);
       const r1 = await at(page, 'r1'), r2 = await at(page, 'r2');
       assert.ok(r1.x > r2.x, 'r1 (y = +0.32) is drawn right of r2 (y = -0.32) from the front');
     });
@@ -274,6 +277,10 @@ const cases = {
     await withPage([scenario('3-block-tray'), '--world', 'mujoco', '--no-operator', '--paused'], async ({ page, ws }) => {
       const frame = lastFrame(ws);
       assert.equal(frame.q.length, 6);
+      // The page's forward kinematics of the streamed joint angles puts the tool where
+      // MuJoCo does (the server's tool point).
+      const tool = await page.evaluate(() => window.rtamp.tool);
+      assert.ok(Math.hypot(...tool.map((v, i) => v - frame.tool[i])) < 0.01, `drawn tool ${tool} vs streamed ${frame.tool}`);
       await dragTo(page, 'o3', 'r2');
       await page.click('#pause');
       const { intervention, reaction: r } = await reaction(ws, (x) => x.ev === 'intervention' && x.kind === 'relocate', 'the relocation and the reaction');
