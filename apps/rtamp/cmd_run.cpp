@@ -75,7 +75,10 @@ rtamp::cli::Registrar reg{
         using namespace rtamp;
         const world::Scenario scenario = world::load_scenario(o->scenario);
         task::validate_task(scenario);  // before any output file is opened or the episode starts
-        if (!o->video.empty()) rtamp::cli::check_output_file("--video", o->video);  // before ffmpeg starts
+        // Outputs, before ffmpeg or the episode starts, named by their option.
+        if (!o->video.empty()) rtamp::cli::check_output_file("--video", o->video);
+        if (!o->log.empty()) rtamp::cli::check_output_file("--log", o->log);
+        if (!o->trees.empty()) rtamp::cli::check_output_dir("--trees", o->trees);
         episode::EpisodeOptions opt;
         opt.world = o->world == "symbolic" ? episode::WorldKind::Symbolic : episode::WorldKind::MuJoCo;
         opt.algorithm = plan::parse_algorithm(o->algo);

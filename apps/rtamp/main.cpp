@@ -3,10 +3,13 @@
 // is one line `rtamp: error: WHERE: WHAT` on stderr (control bytes escaped,
 // util/format.hpp), exit code 2 for bad input, 3 for an internal error.
 #include <algorithm>
+#include <cctype>
 #include <csignal>
 #include <cstring>
 #include <iostream>
 #include <memory>
+#include <sstream>
+#include <vector>
 
 #include "command.hpp"
 #include "rtamp/robot/ompl_logging.hpp"
@@ -44,12 +47,25 @@ namespace {
 // CLI11's own wording, in the form of the rest of rtamp's messages.
 std::string parser_message(const CLI::ParseError& e) {
   std::string m = e.what();
-  for (const char* prefix : {"The following argument was not expected: ", "The following arguments were not expected: "}) {
-    if (m.rfind(prefix, 0) == 0) {
-      const std::string rest = m.substr(std::strlen(prefix));
-      const bool option = !rest.empty() && rest[0] == '-';
-      return std::string(option ? "unknown option " : "unexpected argument ") + rtamp::world::quoted(rest);
-    }
+  const char* one = "The following argument was not expected: ";
+  if (m.rfind(one, 0) == 0) {
+    const std::string rest = m.substr(std::strlen(one));
+    const bool option = !rest.empty() && rest[0] == '-';
+    return std::string(option ? "unknown option " : "unexpected argument ") + rtamp::world::quoted(rest);
+  }
+  // Several, listed by CLI11 last first ("1e3 --seed" for `--seed 1e3`): the
+  // first unknown option of the command line, else the first argument.
+  const char* several = "The following arguments were not expected: ";
+  if (m.rfind(several, 0) == 0) {
+    std::vector<std::string> words;
+    std::istringstream in(m.substr(std::strlen(several)));
+    for (std::string w; in >> w;) words.insert(words.begin(), w);
+    for (const std::string& w : words)
+      if (w.size() > 1 && w[0] == '-' && !std::isdigit(static_cast<unsigned char>(w[1])) && w[1] != '.')
+        return "unknown option " + rtamp::world::quoted(w);
+    if (!words.empty())
+      return "unexpected argument " + rtamp::world::quoted(words.front()) +
+             (words.size() > 1 ? " (and " + std::to_string(words.size() - 1) + " more)" : "");
   }
   // "--seed: 1 required SEED missing"
   const auto colon = m.find(": 1 required ");

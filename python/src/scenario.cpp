@@ -136,7 +136,15 @@ void bind_scenario(py::module_& m) {
       .def_readwrite("objects", &Scenario::objects)
       .def_readwrite("robot", &Scenario::robot)
       .def_readonly("propositions", &Scenario::propositions)
-      .def_readwrite("task", &Scenario::task, "The LTL task over proposition names, e.g. 'F G all_in_r2'.")
+      .def_property(
+          "task", [](const Scenario& s) { return s.task; },
+          [](Scenario& s, const std::string& task) {
+            // A new text: errors in it are located in the text itself, not in the file it replaced.
+            s.task = task;
+            s.task_where = {};
+            s.task_layout = {};
+          },
+          "The LTL task over proposition names, e.g. 'F G all_in_r2'.")
       .def_readwrite("interventions", &Scenario::interventions, "The scripted operator, sorted by time.")
       .def_readonly("source", &Scenario::source, "The file it was loaded from ('' if generated).")
       .def("to_yaml", &to_yaml, "The scenario as YAML (parse_scenario() reads it back).")

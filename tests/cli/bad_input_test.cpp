@@ -303,6 +303,55 @@ void task_cases(std::vector<Case>& t) {
     const std::string p = file(s);
     t.push_back({"task/plan", {"plan", p}, name_of(p) + ":15:", "unknown location 'r9'"});
   }
+  // Block scalars (| and >, indented 2 or 4, explicit indentation, blank
+  // lines, chomping): the column in the file counts the indentation, the line
+  // is the file's line even where > folds the line breaks into spaces.
+  {
+    struct Block {
+      std::string task;  // after "task: "
+      int line;          // of the error, in the file
+      std::string word;  // the error's word on that line (its first occurrence from `from`)
+      std::string what;
+      std::size_t from = 0;
+    };
+    const std::vector<Block> blocks = {
+        {"|\n  F G all_in_r2 &\n  G \"o1 in r9\"\n", 15, "r9", "unknown location 'r9'"},
+        {"|\n    F G all_in_r2 &\n    G \"o1 in r9\"\n", 15, "r9", "unknown location 'r9'"},
+        {">\n  F G all_in_r2 &\n  G \"o1 in r9\"\n", 15, "r9", "unknown location 'r9'"},
+        {">\n    F G all_in_r2 &\n    G \"o1 in r9\"\n", 15, "r9", "unknown location 'r9'"},
+        {">-\n    F G all_in_r2\n\n    & G \"all blocks in r2\"\n", 16, "blocks", "unknown class 'blocks'"},
+        {"|4\n    F G all_in_r2 &\n      G \"o9 in r2\"\n", 15, "o9", "unknown object 'o9'"},
+        {"|\n  F G all_in_r2 &\n  G all_in_r9\n", 15, "all_in_r9", "not a proposition"},
+        {">\n    F G all_in_r2 &\n    G all_in_r9\n", 15, "all_in_r9", "not a proposition"},
+        {"|\n  F G all_in_r2\n  & & all_in_r2\n", 15, "& all", ""},
+        {">\n    F G all_in_r2\n    & & all_in_r2\n", 15, "& all", ""},
+        {"|+\n    F G all_in_r2 &\n    G \"o1 in\"\n\n", 15, "\"", "expected a location name", 7},
+    };
+    for (const Block& b : blocks) {
+      const std::string s = std::string(kHead) + "task: " + b.task;
+      const std::string p = file(s);
+      t.push_back({"task/block", {"plan", p}, at(p, s, b.line, b.word, b.from), b.what});
+    }
+    // Through run, which refuses it before the episode starts.
+    const std::string s = std::string(kHead) + "task: >\n    F G all_in_r2 &\n    G \"o1 in r9\"\n";
+    const std::string p = file(s);
+    t.push_back({"task/block", {"run", p, "--world", "symbolic", "--log", "blk.jsonl"}, at(p, s, 15, "r9"),
+                 "unknown location 'r9'", {"blk.jsonl"}});
+    // A proposition written as a block scalar: its names and its syntax.
+    const std::string head = std::string(kHead).substr(0, std::string(kHead).rfind("  all_in_r2:"));
+    for (const std::string& indent : {std::string("  "), std::string("    ")}) {
+      for (const char* style : {"|", ">"}) {
+        const std::string names = head + "  all_in_r2: " + style + "\n  " + indent + "all block in r2 &\n  " + indent +
+                                  "o1 in r9\ntask: F G all_in_r2\n";
+        const std::string pn = file(names);
+        t.push_back({"prop/block", {"plan", pn}, at(pn, names, 14, "r9"), "unknown location 'r9'"});
+        const std::string syntax = head + "  all_in_r2: " + style + "\n  " + indent + "all block in r2 &\n  " + indent +
+                                   "o1 r2\ntask: F G all_in_r2\n";
+        const std::string ps = file(syntax);
+        t.push_back({"prop/block", {"plan", ps}, at(ps, syntax, 14, "r2"), "expected"});
+      }
+    }
+  }
   // The task in YAML quotes: the column counts from the quote.
   {
     const std::string s = scenario("'F G \"all blocks in r2\"'");
@@ -448,9 +497,11 @@ void gen_cases(std::vector<Case>& t) {
   add({"--prop", "p=o1 in ("}, "--prop #1:1:9:", "expected a location name");
   add({"--prop", "=o1 in r1"}, "--prop #1:1:1:", "NAME=EXPRESSION");
   add({"--prop", "noeq"}, "--prop #1:1:", "NAME=EXPRESSION");
-  add({"--prop", "P=o1 in r1"}, "--prop #1:1:", "not a valid atom");
-  add({"--prop", "all_in_r2=o1 in r1"}, "--prop #1:1:", "duplicate proposition");
-  add({"--prop", "o1=o1 in r1"}, "--prop #1:1:", "has the name of an object");
+  // A proposition's name is at column 1 of its --prop.
+  add({"--prop", "P=o1 in r1"}, "--prop #1:1:1:", "not a valid atom");
+  add({"--prop", "all_in_r2=o1 in r1"}, "--prop #1:1:1:", "duplicate proposition");
+  add({"--prop", "o1=o1 in r1"}, "--prop #1:1:1:", "has the name of an object");
+  add({"--prop", "q=o1 in r1", "--prop", "Q2=o1 in r2"}, "--prop #2:1:1:", "not a valid atom");
   add({"--prop", "q=o1 in r1", "--prop", "p=all blok in r2"}, "--prop #2:1:7:", "did you mean 'block'?");
   add({"--prop", "p=" + std::string(300, '(') + "o1 in r1" + std::string(300, ')')}, "--prop #1:1:",
       "nested too deeply");
@@ -481,6 +532,30 @@ void ltl_cases(std::vector<Case>& t) {
   }
 }
 
+// Output paths, named by their option, and the argument parser's errors.
+void option_cases(std::vector<Case>& t) {
+  const fs::path dir = scratch();
+  const std::string a_file = file("not a directory\n", ".txt");
+  fs::create_directories(dir / "a_dir");
+  const std::vector<std::string> run = {"run", "3-block", "--world", "symbolic"};
+  auto with = [&](std::vector<std::string> args, const std::vector<std::string>& more) {
+    args.insert(args.end(), more.begin(), more.end());
+    return args;
+  };
+  t.push_back({"options", with(run, {"--log", "no_dir/ep.jsonl", "--trees", "tr"}), "--log: cannot write",
+               "no directory", {"no_dir", "tr"}});
+  t.push_back({"options", with(run, {"--log", (dir / "a_dir").string(), "--trees", "tr"}), "--log: cannot write",
+               "it is a directory", {"tr"}});
+  t.push_back({"options", with(run, {"--log", "ep2.jsonl", "--trees", a_file}), "--trees: cannot write into",
+               "is not a directory", {"ep2.jsonl"}});
+  t.push_back({"options", with(run, {"--log", "ep3.jsonl", "--trees", a_file + "/below"}),
+               "--trees: cannot write into", "is not a directory", {"ep3.jsonl"}});
+  // Several unexpected arguments: the first unknown option of the command line.
+  t.push_back({"options", {"plan", "3-block", "--seed", "1e3"}, "unknown option '--seed'", ""});
+  t.push_back({"options", {"plan", "3-block", "--bogus", "x", "--worse"}, "unknown option '--bogus'", ""});
+  t.push_back({"options", {"plan", "3-block", "extra", "more"}, "unexpected argument 'extra' (and 1 more)", ""});
+}
+
 std::vector<Case> table() {
   std::vector<Case> t;
   yaml_cases(t);
@@ -489,6 +564,7 @@ std::vector<Case> table() {
   sim_cases(t);
   gen_cases(t);
   ltl_cases(t);
+  option_cases(t);
   return t;
 }
 

@@ -33,13 +33,30 @@ class TaskChecker {
       : s_(s), origin_(s.task_where.line > 0 ? s.task_where : SourceLocation{"<task>", 1, 1}), v_(s) {}
 
   void run() const {
-    (void)ltl::parse(s_.task, origin_);  // syntax errors, located
+    // Syntax errors, located: the parser's line and column in the text, then
+    // where that byte lies in the file (a block scalar's indentation counts).
+    try {
+      (void)ltl::parse(s_.task, SourceLocation{});
+    } catch (const Error& err) {
+      fail(offset_of(err.where()), err.message());
+    }
     for (const ltl::AtomOccurrence& a : ltl::atom_occurrences(s_.task, origin_)) check(a);
   }
 
  private:
   [[noreturn]] void fail(std::size_t offset, const std::string& what) const {
-    throw Error(what, world::location_in(s_.task, origin_, offset), caret_at(s_.task, offset));
+    throw Error(what, world::location_in(s_.task, origin_, offset, s_.task_layout), caret_at(s_.task, offset));
+  }
+
+  // The byte of the task at a 1-based line and column of its text.
+  std::size_t offset_of(const SourceLocation& at) const {
+    std::size_t start = 0;
+    for (int l = 1; l < at.line; ++l) {
+      const std::size_t nl = s_.task.find('\n', start);
+      if (nl == std::string::npos) break;
+      start = nl + 1;
+    }
+    return std::min(s_.task.size(), start + static_cast<std::size_t>(std::max(at.column, 1) - 1));
   }
 
   void check(const ltl::AtomOccurrence& a) const {

@@ -145,7 +145,13 @@ Scenario generate_scenario(const GeneratorOptions& o) {
   }
   s.task = o.task.empty() ? "F G all_in_r2" : o.task;
   if (!o.task.empty()) s.task_where = o.task_where;
-  validate(s);
+  // A --prop's name starts its text (NAME=EXPR), at column 1; other fields are where their element is.
+  detail::validate(s, [&](const SourceLocation& element, std::string_view field) {
+    for (const SourceLocation& w : o.proposition_where)
+      if (field == "name" && element.file == w.file && element.line == w.line && element.column == w.column)
+        return SourceLocation{w.file, w.line, 1};
+    return element;
+  });
   return s;
 }
 

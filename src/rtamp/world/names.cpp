@@ -160,10 +160,12 @@ bool Vocabulary::is_class(std::string_view n) const {
 }
 bool Vocabulary::is_proposition(std::string_view n) const { return contains(propositions, n); }
 
-SourceLocation location_in(std::string_view text, const SourceLocation& start, std::size_t offset) {
+SourceLocation location_in(std::string_view text, const SourceLocation& start, std::size_t offset,
+                           const TextLayout& layout) {
   SourceLocation loc = start;
   if (loc.line <= 0 || loc.column <= 0) return loc;
   offset = std::min(offset, text.size());
+  if (auto at = layout.locate(start.file, offset)) return *at;
   const std::size_t nl = text.substr(0, offset).rfind('\n');
   if (nl == std::string_view::npos) {
     loc.column += static_cast<int>(offset);
@@ -175,14 +177,14 @@ SourceLocation location_in(std::string_view text, const SourceLocation& start, s
 }
 
 void check_expression_names(const PropExpr& e, std::string_view text, const SourceLocation& start,
-                            const Vocabulary& v, const std::string& owner) {
+                            const Vocabulary& v, const std::string& owner, const TextLayout& layout) {
   PropNames names;
   collect_names(e, names);
   auto fail = [&](std::string_view name, Role role, const std::string& what) {
     const std::size_t off = offset_of(text, name, role);
     const std::string detail =
         text.find('\n') == std::string_view::npos ? caret_line(std::string(text), static_cast<int>(off) + 1) : "";
-    throw Error(owner + what, location_in(text, start, off), detail);
+    throw Error(owner + what, location_in(text, start, off, layout), detail);
   };
   // In the order of the text, so that the first wrong word is reported.
   for (const Word& w : words_of(text)) {

@@ -66,7 +66,10 @@ struct Vocabulary {
 
 // The location of byte `offset` of `text`, which starts at `start` (a
 // location with line and column, or empty: then the result is empty too).
-SourceLocation location_in(std::string_view text, const SourceLocation& start, std::size_t offset);
+// With a `layout` (the text is a YAML block scalar: util/text_layout.hpp),
+// the layout's file line and column.
+SourceLocation location_in(std::string_view text, const SourceLocation& start, std::size_t offset,
+                           const TextLayout& layout = {});
 
 // Checks that every name expression `e` (parsed from `text`, which starts at
 // `start`) uses exists in `v`: things for `X in L`, locations for every L,
@@ -74,6 +77,6 @@ SourceLocation location_in(std::string_view text, const SourceLocation& start, s
 // you mean 'block'?)" and the like, located at the name's word in `text`, with
 // `text` and a caret under it as detail when `text` is one line.
 void check_expression_names(const PropExpr& e, std::string_view text, const SourceLocation& start,
-                            const Vocabulary& v, const std::string& owner);
+                            const Vocabulary& v, const std::string& owner, const TextLayout& layout = {});
 
 }  // namespace rtamp::world

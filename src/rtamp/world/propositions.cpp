@@ -26,7 +26,10 @@ struct Token {
 
 class Parser {
  public:
-  Parser(std::string_view text, const SourceLocation& where) : text_(text), where_(where) { advance(); }
+  Parser(std::string_view text, const SourceLocation& where, const TextLayout& layout)
+      : text_(text), where_(where), layout_(layout) {
+    advance();
+  }
 
   PropExpr parse() {
     PropExpr e = parse_or(0);
@@ -41,7 +44,12 @@ class Parser {
   [[noreturn]] void fail(std::size_t offset, const std::string& what) const {
     SourceLocation at = where_;
     int column = static_cast<int>(offset) + 1;
-    if (at.line > 0 && at.column > 0) at.column += static_cast<int>(offset);
+    if (at.line > 0 && at.column > 0) {
+      if (auto l = layout_.locate(at.file, offset))
+        at = *l;
+      else
+        at.column += static_cast<int>(offset);
+    }
     std::string line(text_);
     for (char& c : line)
       if (c == '\n' || c == '\r') c = ' ';
@@ -226,6 +234,7 @@ class Parser {
 
   std::string_view text_;
   SourceLocation where_;
+  const TextLayout& layout_;
   std::size_t pos_ = 0;
   Token tok_;
 };
@@ -306,8 +315,8 @@ bool is_prop_keyword(std::string_view w) {
   return w == "in" || w == "all" || w == "any" || w == "count" || w == "true" || w == "false";
 }
 
-PropExpr parse_prop_expr(std::string_view text, const SourceLocation& where) {
-  return Parser(text, where).parse();
+PropExpr parse_prop_expr(std::string_view text, const SourceLocation& where, const TextLayout& layout) {
+  return Parser(text, where, layout).parse();
 }
 
 const char* to_string(PropExpr::Cmp cmp) {

@@ -35,7 +35,8 @@ namespace rtamp::world {
 // Parses `text`. `where` is the location of the text's first character (may be
 // empty); errors are rtamp::Error at where.line, where.column + offset, with the
 // text and a caret under the offending column as detail.
-PropExpr parse_prop_expr(std::string_view text, const SourceLocation& where = {});
+// `layout`: where the text's bytes lie in its file when it is a YAML block scalar.
+PropExpr parse_prop_expr(std::string_view text, const SourceLocation& where = {}, const TextLayout& layout = {});
 
 // Canonical text with the fewest parentheses, e.g. "all block in r2 & !(o1 in r3 | false)".
 std::string to_string(const PropExpr& e);

@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "rtamp/util/error.hpp"
+#include "rtamp/util/text_layout.hpp"
 
 namespace rtamp::world {
 
@@ -86,7 +87,8 @@ struct Proposition {
   std::string name;  // the atom used in the LTL task, e.g. "all_in_r2"
   std::string text;  // the expression as written, e.g. "all block in r2"
   PropExpr expr;
-  SourceLocation where;
+  SourceLocation where;  // of the text's first byte
+  TextLayout layout;     // of a block scalar's text (| or >) in its file; empty otherwise
 };
 
 // A scripted operator action (the paper's "human intervention").
@@ -117,7 +119,8 @@ struct Scenario {
   Robot robot;
   std::vector<Proposition> propositions;
   std::string task;  // LTL formula over proposition names, e.g. "F G all_in_r2"
-  SourceLocation task_where;
+  SourceLocation task_where;  // of the task's first byte
+  TextLayout task_layout;     // of a block scalar task (| or >) in its file; empty otherwise
   std::vector<Intervention> interventions;  // sorted by time
   std::string source;                       // file it was loaded from ("" if generated)
 

@@ -124,6 +124,7 @@ class Reader {
       const YAML::Node t = required(root, "task", "scenario", {});
       s.task = text_value(t, "task");
       s.task_where = text_start(t);
+      s.task_layout = text_layout(t);
     }
     if (auto o = optional(root, "operator"))
       for_each_item(*o, "operator", [&](const YAML::Node& n) { s.interventions.push_back(read_intervention(n)); });
@@ -207,6 +208,16 @@ class Reader {
       }
     }
     return l;
+  }
+
+  // Where a block scalar's bytes lie in the file (util/text_layout.hpp); empty
+  // for other scalars, whose text lies as written from text_start().
+  TextLayout text_layout(const YAML::Node& n) const {
+    const YAML::Mark m = n.Mark();
+    if (!n.IsScalar() || m.is_null() || m.pos < 0 || static_cast<std::size_t>(m.pos) >= text_.size()) return {};
+    const auto pos = static_cast<std::size_t>(m.pos);
+    if (text_[pos] != '|' && text_[pos] != '>') return {};
+    return block_scalar_layout(text_, pos, m.line + 1, n.Scalar());
   }
 
   void remember(const SourceLocation& element, const std::string& field, const YAML::Node& value) {
@@ -443,8 +454,9 @@ class Reader {
         fail(value, "proposition " + quoted(p.name) + " must be an expression in quotes, found " + describe(value));
       p.text = text_value(value, "proposition " + quoted(p.name));
       p.where = text_start(value);
+      p.layout = text_layout(value);
       remember(p.where, "name", key);
-      p.expr = parse_prop_expr(p.text, p.where);
+      p.expr = parse_prop_expr(p.text, p.where, p.layout);
       out.push_back(std::move(p));
     }
   }

@@ -257,7 +257,7 @@ class Validator {
       if (!seen.insert(p.name).second) fail(name_loc, "duplicate proposition " + quote(p.name));
       if (defined_.count(p.name))
         fail(name_loc, "proposition " + quote(p.name) + " has the name of " + defined_.at(p.name).first);
-      check_expression_names(p.expr, p.text, p.where, vocabulary, "proposition " + quote(p.name) + ": ");
+      check_expression_names(p.expr, p.text, p.where, vocabulary, "proposition " + quote(p.name) + ": ", p.layout);
     }
   }
 
