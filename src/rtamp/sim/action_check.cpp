@@ -1,8 +1,11 @@
 #include "rtamp/sim/action_check.hpp"
 
+#include <algorithm>
 #include <cctype>
+#include <cmath>
 
 #include "rtamp/util/error.hpp"
+#include "rtamp/util/format.hpp"
 #include "rtamp/world/names.hpp"
 #include "rtamp/world/suggest.hpp"
 
@@ -31,11 +34,15 @@ std::string shown(std::string_view w) {
 
 void check_actions(const std::vector<SimAction>& actions, const world::Scenario& scenario, std::string_view text,
                    bool with_script) {
-  const world::Vocabulary v(scenario, with_script);
+  check_actions(actions, world::Vocabulary(scenario, with_script), text);
+}
+
+void check_actions(const std::vector<SimAction>& actions, const world::Vocabulary& v, std::string_view text,
+                   const std::string& source) {
   for (const SimAction& a : actions) {
     auto fail = [&](std::size_t k, const std::string& what) {
-      const std::size_t at = static_cast<std::size_t>(a.column - 1) + word_offset(a.text, k);
-      throw Error(what, SourceLocation{"--do", 1, static_cast<int>(at) + 1}, caret_at(text, at));
+      const std::size_t at = static_cast<std::size_t>(std::max(a.column, 1) - 1) + word_offset(a.text, k);
+      throw Error(what, SourceLocation{source, 1, static_cast<int>(at) + 1}, caret_at(text, at));
     };
     auto thing = [&](const std::string& n, std::size_t k) {
       if (v.is_thing(n)) return;
@@ -62,7 +69,9 @@ void check_actions(const std::vector<SimAction>& actions, const world::Scenario&
       case SimAction::Kind::Place:
         location(a.location, 1);
         break;
-      case SimAction::Kind::Wait:
+      case SimAction::Kind::Wait:  // parse_actions' rule, for lists built in code
+        if (!std::isfinite(a.seconds) || a.seconds < 0 || a.seconds > 3600)
+          fail(1, "'" + format_number(a.seconds) + "' is not a duration in seconds (0 to 3600)");
         break;
     }
   }

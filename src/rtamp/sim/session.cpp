@@ -1,9 +1,13 @@
 #include "rtamp/sim/session.hpp"
 
+#include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <cstdlib>
 #include <sstream>
+
+#include "rtamp/sim/action_check.hpp"
+#include "rtamp/util/format.hpp"
 
 namespace rtamp::sim {
 
@@ -15,6 +19,27 @@ SessionOptions seeded(SessionOptions o, const world::Scenario& s) {
   if (o.scripted_operator)
     o.op.script.insert(o.op.script.end(), s.interventions.begin(), s.interventions.end());
   return o;
+}
+
+// An action as the list syntax writes it: its text, or (built in code, no
+// text) its words, so that a check's columns point into it.
+SimAction written(SimAction a) {
+  if (!a.text.empty()) return a;
+  switch (a.kind) {
+    case SimAction::Kind::Move:
+      a.text = "move " + a.thing + " " + a.location;
+      break;
+    case SimAction::Kind::Pick:
+      a.text = "pick " + a.thing;
+      break;
+    case SimAction::Kind::Place:
+      a.text = "place " + a.location;
+      break;
+    case SimAction::Kind::Wait:
+      a.text = "wait " + format_number(a.seconds);
+      break;
+  }
+  return a;
 }
 
 }  // namespace
@@ -104,7 +129,25 @@ void Session::after_step() {
   }
 }
 
+world::Vocabulary Session::vocabulary() const {
+  world::Vocabulary v(sim_.scenario(), options_.scripted_operator);
+  for (const Thing& t : sim_.things()) {
+    if (t.name.empty() || v.is_thing(t.name)) continue;
+    (t.container ? v.containers : v.objects).push_back(t.name);
+    auto& classes = t.container ? v.container_classes : v.object_classes;
+    if (std::find(classes.begin(), classes.end(), t.cls) == classes.end()) classes.push_back(t.cls);
+  }
+  return v;
+}
+
 ActionResult Session::execute(const SimAction& a) {
+  SimAction one = written(a);
+  one.column = 1;
+  check_actions({one}, vocabulary(), one.text, "action");
+  return run_action(a);
+}
+
+ActionResult Session::run_action(const SimAction& a) {
   ActionResult r;
   r.action = a.text;
   r.start = sim_.time();
@@ -148,11 +191,24 @@ ActionResult Session::execute(const SimAction& a) {
 
 SessionReport Session::run(const std::vector<SimAction>& actions,
                            const std::function<void(const ActionResult&)>& on_action) {
+  // Every action checked before the first one moves, at its column in the
+  // list written out again.
+  {
+    std::vector<SimAction> listed;
+    std::string text;
+    for (const SimAction& given : actions) {
+      SimAction& a = listed.emplace_back(written(given));
+      if (!text.empty()) text += "; ";
+      a.column = static_cast<int>(text.size()) + 1;
+      text += a.text;
+    }
+    check_actions(listed, vocabulary(), text, "actions");
+  }
   SessionReport rep;
   const double t0 = sim_.time();
   const auto w0 = std::chrono::steady_clock::now();
   for (const auto& a : actions) {
-    rep.actions.push_back(execute(a));
+    rep.actions.push_back(run_action(a));
     if (on_action) on_action(rep.actions.back());
   }
   rep.wall_time = std::chrono::duration<double>(std::chrono::steady_clock::now() - w0).count();

@@ -7,7 +7,10 @@
 //   pick THING            place LOCATION (the held thing)
 //   wait SECONDS          let the simulation run (the operator acts meanwhile)
 // Errors in the list are rtamp::Error with the 1-based column in the list text.
-// Each action runs to SUCCESS or FAILURE; a failed action does not stop the list (the
+// Names are checked before anything moves (sim/action_check.hpp, the rules of
+// every entry point): run() checks the whole list and execute() its action
+// against the running simulation's names (the scenario's, and those an
+// operator added since), so a bad list moves nothing. Each action runs to SUCCESS or FAILURE; a failed action does not stop the list (the
 // next one starts from whatever state the world is in), so outcomes are reported per
 // action. Operator interventions (scripted and random) are applied between physics
 // steps whenever they are due. Rendering happens only when a video is being recorded.
@@ -25,6 +28,7 @@
 #include "rtamp/sim/perception.hpp"
 #include "rtamp/sim/renderer.hpp"
 #include "rtamp/sim/skill_runner.hpp"
+#include "rtamp/world/names.hpp"
 
 namespace rtamp::sim {
 
@@ -76,16 +80,25 @@ class Session {
   Perception& perception() { return perception_; }
   Operator& op() { return operator_; }
 
-  // Runs one action to completion.
+  // Runs one action to completion. Throws rtamp::Error ("action:1:COL: ...",
+  // column in a.text) before anything moves if it names an unknown thing or
+  // location, or waits for no duration in 0..3600 s.
   ActionResult execute(const SimAction& a);
-  // Runs a list and reports; `on_action` (optional) sees each result as it finishes.
+  // Runs a list and reports; `on_action` (optional) sees each result as it
+  // finishes. Checks every action first: on a bad one throws rtamp::Error
+  // ("actions:1:COL: ...", column in the actions' texts joined by "; ") and
+  // nothing has moved.
   SessionReport run(const std::vector<SimAction>& actions,
                     const std::function<void(const ActionResult&)>& on_action = {});
+  // The names actions may use now: the scenario's (with its script's when the
+  // scripted operator runs) and every thing added to the simulation since.
+  world::Vocabulary vocabulary() const;
   // Renders the current scene to a PNG (makes a renderer if none is open).
   void snapshot(const std::string& png_path);
 
  private:
   void after_step();
+  ActionResult run_action(const SimAction& a);
 
   SessionOptions options_;
   Simulation sim_;
