@@ -33,11 +33,12 @@ inline std::filesystem::path scratch() {
   return dir;
 }
 
-// Runs `RTAMP_BIN <args>` (args is shell text, quote it yourself), optionally
-// with `stdin_text` on standard input.
-inline Result run(const std::string& args, const std::string* stdin_text = nullptr) {
+// Runs `ENV RTAMP_BIN <args>` (args is shell text, quote it yourself; env:
+// shell variable assignments for the command, e.g. "PATH=/x:\"$PATH\" "),
+// optionally with `stdin_text` on standard input.
+inline Result run_env(const std::string& env, const std::string& args, const std::string* stdin_text = nullptr) {
   const auto dir = scratch();
-  std::string cmd = std::string("'") + RTAMP_BIN + "' " + args + " >'" + (dir / "out").string() + "' 2>'" +
+  std::string cmd = env + "'" + RTAMP_BIN + "' " + args + " >'" + (dir / "out").string() + "' 2>'" +
                     (dir / "err").string() + "'";
   if (stdin_text) {
     std::ofstream(dir / "in", std::ios::binary) << *stdin_text;
@@ -51,6 +52,10 @@ inline Result run(const std::string& args, const std::string* stdin_text = nullp
   r.out = slurp(dir / "out");
   r.err = slurp(dir / "err");
   return r;
+}
+
+inline Result run(const std::string& args, const std::string* stdin_text = nullptr) {
+  return run_env("", args, stdin_text);
 }
 
 inline std::string write_file(const std::string& name, const std::string& text) {

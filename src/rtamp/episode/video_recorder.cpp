@@ -8,12 +8,22 @@ VideoRecorder::VideoRecorder(const sim::Simulation& sim, const std::string& path
       period_(1.0 / fps) {}
 
 void VideoRecorder::on_tick(double t, bt::Status, const std::string&) {
-  if (t < next_) return;
+  if (t < next_ || failed_) return;
   renderer_->render(frame_);
-  while (t >= next_) {  // a tick longer than a frame repeats the frame
-    writer_->add(frame_);
-    next_ += period_;
+  try {
+    while (t >= next_) {  // a tick longer than a frame repeats the frame
+      writer_->add(frame_);
+      next_ += period_;
+    }
+  } catch (const Error& e) {
+    failed_ = e;
+    throw;
   }
+}
+
+void VideoRecorder::close() {
+  if (failed_) throw *failed_;
+  writer_->close();
 }
 
 }  // namespace rtamp::episode

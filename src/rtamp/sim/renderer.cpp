@@ -3,6 +3,7 @@
 #include <EGL/egl.h>
 #include <EGL/eglext.h>
 #include <png.h>
+#include <sys/wait.h>
 
 #include <cstring>
 
@@ -153,6 +154,18 @@ void write_png(const std::string& path, const std::vector<std::uint8_t>& rgb, in
   if (std::fclose(f) != 0) throw Error("cannot write '" + path + "'");
 }
 
+namespace {
+
+// How an ffmpeg child ended, from pclose's status: "; ffmpeg exited with status 1".
+std::string how_it_ended(int status) {
+  if (status == -1) return "";
+  if (WIFEXITED(status)) return "; ffmpeg exited with status " + std::to_string(WEXITSTATUS(status));
+  if (WIFSIGNALED(status)) return "; ffmpeg was killed by signal " + std::to_string(WTERMSIG(status));
+  return "";
+}
+
+}  // namespace
+
 VideoWriter::VideoWriter(const std::string& path, int width, int height, int fps)
     : path_(path), width_(width), height_(height) {
   // The path is passed single-quoted; a quote inside it is escaped for the shell.
@@ -179,9 +192,10 @@ void VideoWriter::add(const std::vector<std::uint8_t>& rgb) {
   // ffmpeg gone (bad path, not installed): a short write, an error, not SIGPIPE
   // (the rtamp CLI ignores SIGPIPE; a program that does not gets the signal).
   if (std::fwrite(rgb.data(), 1, rgb.size(), pipe_) != rgb.size()) {
-    pclose(pipe_);
+    const int status = pclose(pipe_);
     pipe_ = nullptr;
-    throw Error("ffmpeg stopped reading the frames of '" + path_ + "' (is the path writable? is ffmpeg installed?)");
+    throw Error("ffmpeg stopped reading the frames of '" + path_ + "' after " + std::to_string(frames_) + " frames" +
+                how_it_ended(status) + " (is the path writable? is ffmpeg installed?)");
   }
   ++frames_;
 }
@@ -190,7 +204,8 @@ void VideoWriter::close() {
   if (!pipe_) return;
   const int status = pclose(pipe_);
   pipe_ = nullptr;
-  if (status != 0) throw Error("ffmpeg failed writing '" + path_ + "' (is ffmpeg installed?)");
+  if (status != 0)
+    throw Error("ffmpeg failed writing '" + path_ + "'" + how_it_ended(status) + " (is ffmpeg installed?)");
 }
 
 }  // namespace rtamp::sim
