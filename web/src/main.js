@@ -63,10 +63,13 @@ app.person = new PersonPanel($('#person'), {
 new DragInteraction(app.scene, {
   onSelect: (name) => app.person.select(name),
   onDrop: ({ subject, location, position }) => {
-    app.drops.push({ subject, at: performance.now() });
+    const drop = { subject, at: performance.now(), replyMs: null };
+    app.drops.push(drop);
     const body = { kind: 'relocate', subject, position };
     if (location) body.location = location;
     intervene(`move ${subject}${location ? ' to ' + location : ''}`, body).then((r) => {
+      drop.replyMs = performance.now() - drop.at;
+      if (!r.ok) app.drops.splice(app.drops.indexOf(drop), 1);
       // Refused: the thing goes back to where the server last put it.
       const e = app.scene.things.get(subject);
       if (!r.ok && e && app.scene.dragging !== subject) e.mesh.position.set(...e.pos);
@@ -109,6 +112,7 @@ function onFrame(f) {
   app.framesReceived++;
   app.t = f.t;
   app.held = f.held ?? null;
+  app.tool = f.tool;
   app.scene.applyThings(f.things);
   app.robot?.update(f);
   app.person.setHeld(app.held);
@@ -121,7 +125,9 @@ function onLog(r) {
   if (r.ev === 'intervention' && r.kind === 'relocate') {
     const i = app.drops.findIndex((d) => d.subject === r.subject);
     if (i >= 0) {
-      app.latencies.push({ subject: r.subject, ms: performance.now() - app.drops[i].at, applied: r.applied });
+      // ms: drop -> the intervention record (applied in the episode); replyMs: drop -> the
+      // server's reply (accepted).
+      app.latencies.push({ subject: r.subject, ms: performance.now() - app.drops[i].at, replyMs: app.drops[i].replyMs, applied: r.applied, t: r.t });
       app.drops.splice(i, 1);
     }
   }

@@ -1,7 +1,8 @@
 // The UR5 drawn from its kinematics (kinematics.js): a sphere at every joint frame's
 // origin, a cylinder between consecutive origins, and a two-finger gripper along the
 // tool axis. With streamed joint angles the arm shows them; in the symbolic world
-// (q = null) it reaches the streamed tool point (reachTool), or rests at home.
+// (q = null) it reaches the streamed tool point (reachTool) pointing down, or rests at
+// home when that point is out of such reach (the symbolic world's parked hand).
 // Invariant: the drawn tool point is linkFrames(robot, q)[7]'s origin for the q shown.
 import * as THREE from 'three';
 import { linkFrames, origin, reachTool } from './kinematics.js';
@@ -74,7 +75,13 @@ export class Robot {
   update(frame) {
     this.held = frame.held;
     if (Array.isArray(frame.q)) this.show(frame.q);
-    else if (Array.isArray(frame.tool)) this.show(reachTool(this.robot, frame.tool, this.q));
-    else this.show(this.robot.home);
+    else if (Array.isArray(frame.tool)) {
+      // A tool point the arm cannot reach pointing down (the server parks the symbolic
+      // hand above the base) leaves the arm at home.
+      const q = reachTool(this.robot, frame.tool, this.reached ? this.q : this.robot.home);
+      const p = origin(linkFrames(this.robot, q)[7]);
+      this.reached = Math.hypot(p[0] - frame.tool[0], p[1] - frame.tool[1], p[2] - frame.tool[2]) < 0.005;
+      this.show(this.reached ? q : this.robot.home);
+    } else this.show(this.robot.home);
   }
 }

@@ -40,6 +40,9 @@ export function installTestHook(app) {
     get tool() {
       return app.robot?.toolPoint ?? null;
     },
+    get streamedTool() {
+      return app.tool;
+    },
     get latencies() {
       return app.latencies;
     },

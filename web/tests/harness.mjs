@@ -33,7 +33,7 @@ export function scratchDir(name) {
 
 // Starts `rtamp serve ARGS --port 0`; resolves {url, proc, stderr()} after its first stdout line.
 export function startServer(args) {
-  const proc = spawn(BIN, ['serve', ...args, '--port', '0'], { stdio: ['ignore', 'pipe', 'pipe'] });
+  const proc = spawn(process.env.RTAMP_BIN, ['serve', ...args, '--port', '0'], { stdio: ['ignore', 'pipe', 'pipe'] });
   let err = '';
   proc.stderr.on('data', (d) => (err += d));
   const lines = createInterface({ input: proc.stdout });
@@ -65,7 +65,7 @@ export async function launch() {
       '--disable-background-networking',
       '--disable-component-update',
       '--disable-sync',
-      `--user-data-dir=${profile}`,
+      // --user-data-dir: the fresh `profile` above (Playwright passes it itself).
     ],
   });
   return { context, profile };
