@@ -8,6 +8,7 @@
 #   bin/rtamp                              the command line (needs no data files at run time:
 #                                          the built-in scenarios are compiled in)
 #   share/rtamp/scenarios/*.yaml           the built-in scenarios as files, to copy and edit
+#   share/rtamp/models/ur5.xml             the UR5's MuJoCo model (also compiled in)
 # Included by the top-level CMakeLists.txt after every layer and the CLI exist. Defines the
 # umbrella targets rtamp::rtamp (every layer without MuJoCo) and rtamp::rtamp_mujoco.
 include(CMakePackageConfigHelpers)
@@ -46,6 +47,7 @@ if(TARGET rtamp)
 endif()
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/scenarios/ DESTINATION ${CMAKE_INSTALL_DATADIR}/rtamp/scenarios
         FILES_MATCHING PATTERN "*.yaml")
+install(FILES ${PROJECT_SOURCE_DIR}/models/ur5.xml DESTINATION ${CMAKE_INSTALL_DATADIR}/rtamp/models)
 
 # pkg-config: static libraries in link order (users before what they use).
 set(core_order batch_core exec bt robot plan task automata ltl world util)

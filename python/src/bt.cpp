@@ -3,7 +3,9 @@
 // Action(name, on_start, ...), ...: python/rtamp/bt.py) that C++ turns into
 // bt::Node objects owned by the tree; the tree then is ticked, halted, changed
 // (insert / append / remove / replace by node id, as Algorithm 2 does) and
-// exported (text, BehaviorTree.CPP XML, DOT). Leaves are Python callables
+// exported (text, BehaviorTree.CPP XML, DOT) or imported from BehaviorTree.CPP v4
+// XML (Tree.from_xml / Tree.load_xml: bt/xml_import.hpp; the file's custom node IDs
+// come from Python: per-ID callables or factories). Leaves are Python callables
 // (no arguments): actions return a Status (or 'SUCCESS' / 'RUNNING' /
 // 'FAILURE'), conditions a bool. Python exceptions in leaves propagate out of
 // tick(). Node ids are the handles Python holds: stable, never reused.
@@ -11,6 +13,7 @@
 
 #include "bindings.hpp"
 #include "rtamp/bt/bt.hpp"
+#include "rtamp/bt/xml_import.hpp"
 
 namespace rtamp::python {
 
@@ -133,6 +136,56 @@ py::dict node_info(const Node& n) {
 
 bt::Cut cut_of(bool force) { return force ? bt::Cut::Force : bt::Cut::IfInterruptible; }
 
+std::unique_ptr<PyTree> make_tree(const std::string& clock) {
+  auto t = std::make_unique<PyTree>();
+  if (clock == "manual") {
+    t->manual = std::make_shared<bt::ManualClock>();
+    t->tree = std::make_unique<bt::Tree>(std::make_shared<bt::Blackboard>(), t->manual);
+  } else if (clock == "steady") {
+    t->tree = std::make_unique<bt::Tree>();
+  } else {
+    throw Error("unknown clock '" + clock + "' (expected steady or manual)");
+  }
+  return t;
+}
+
+// The importer's registry from Python: `nodes` maps a type ID to factory(name, ports)
+// returning a node spec; `actions` a type ID to the on_start callable of every action of
+// that ID; `conditions` a type ID to the predicate of every condition of that ID.
+bt::NodeRegistry registry_of(const py::dict& nodes, const py::dict& actions, const py::dict& conditions) {
+  bt::NodeRegistry r;
+  for (auto [k, v] : nodes) {
+    auto ref = std::make_shared<PyRef>(py::reinterpret_borrow<py::object>(v));
+    r.add(k.cast<std::string>(), [ref](const bt::NodeSpec& spec) {
+      py::gil_scoped_acquire gil;
+      py::dict ports;
+      for (const auto& p : spec.ports) ports[py::str(p.name)] = p.value;
+      const py::object made = ref->get()(spec.name, ports);
+      if (py::hasattr(made, "children") && py::len(made.attr("children")) != 0)
+        throw Error("the factory of '" + spec.type_id + "' returned a node with children (they come from the file)",
+                    spec.where);
+      return build(made);
+    });
+  }
+  for (auto [k, v] : actions) r.add_action(k.cast<std::string>(), {tick_of(py::reinterpret_borrow<py::object>(v)), {}, {}});
+  for (auto [k, v] : conditions) {
+    auto ref = std::make_shared<PyRef>(py::reinterpret_borrow<py::object>(v));
+    r.add_condition(k.cast<std::string>(), [ref](Node&) {
+      py::gil_scoped_acquire gil;
+      return py::bool_(ref->get()()).cast<bool>();
+    });
+  }
+  return r;
+}
+
+constexpr const char* kImportDoc =
+    "Builds a tree from BehaviorTree.CPP v4 XML (a file drawn in Groot2, or one written by\n"
+    "to_xml()): the engine's own node kinds are built directly; every other node ID must be\n"
+    "given: nodes={ID: factory(name, ports) -> node spec without children}, actions={ID:\n"
+    "on_start callable}, conditions={ID: predicate}. tree_id picks a <BehaviorTree ID>\n"
+    "(default: main_tree_to_execute, or the only tree); file labels error locations. Errors\n"
+    "(malformed XML, unknown IDs, bad parameters) raise rtamp.Error with file, line and column.";
+
 }  // namespace
 
 void bind_bt(py::module_& m) {
@@ -147,19 +200,35 @@ void bind_bt(py::module_& m) {
                      "export. Nodes are named by id (stable, never reused). clock='manual' gives a clock\n"
                      "that only advance_clock() moves (for Timeout); default 'steady' (wall time).")
       .def(py::init([](const py::object& root, const std::string& clock) {
-             auto t = std::make_unique<PyTree>();
-             if (clock == "manual") {
-               t->manual = std::make_shared<bt::ManualClock>();
-               t->tree = std::make_unique<bt::Tree>(std::make_shared<bt::Blackboard>(), t->manual);
-             } else if (clock == "steady") {
-               t->tree = std::make_unique<bt::Tree>();
-             } else {
-               throw Error("unknown clock '" + clock + "' (expected steady or manual)");
-             }
+             auto t = make_tree(clock);
              if (!root.is_none()) t->tree->set_root(build(root));
              return t;
            }),
            py::arg("root") = py::none(), py::kw_only(), py::arg("clock") = "steady")
+      .def_static("from_xml", [](const std::string& xml, const py::dict& nodes, const py::dict& actions,
+                                 const py::dict& conditions, const std::string& tree_id, const std::string& file,
+                                 const std::string& clock) {
+        auto t = make_tree(clock);
+        bt::XmlImportOptions o;
+        o.tree_id = tree_id;
+        o.file = file;
+        auto root = bt::from_btcpp_xml(xml, registry_of(nodes, actions, conditions), o);
+        if (root) t->tree->set_root(std::move(root));
+        return t;
+      }, py::arg("xml"), py::kw_only(), py::arg("nodes") = py::dict(), py::arg("actions") = py::dict(),
+         py::arg("conditions") = py::dict(), py::arg("tree_id") = "", py::arg("file") = "",
+         py::arg("clock") = "steady", kImportDoc)
+      .def_static("load_xml", [](const std::string& path, const py::dict& nodes, const py::dict& actions,
+                                 const py::dict& conditions, const std::string& tree_id, const std::string& clock) {
+        auto t = make_tree(clock);
+        bt::XmlImportOptions o;
+        o.tree_id = tree_id;
+        auto root = bt::load_btcpp_xml(path, registry_of(nodes, actions, conditions), o);
+        if (root) t->tree->set_root(std::move(root));
+        return t;
+      }, py::arg("path"), py::kw_only(), py::arg("nodes") = py::dict(), py::arg("actions") = py::dict(),
+         py::arg("conditions") = py::dict(), py::arg("tree_id") = "", py::arg("clock") = "steady",
+         "Tree.from_xml on the file at `path` (errors name that file).")
       .def("set_root", [](PyTree& t, const py::object& spec) { return t.tree->set_root(build(spec)); },
            py::arg("spec"), "Installs a new root (the old tree is halted and dropped); returns its id.")
       .def_property_readonly("root", [](PyTree& t) -> py::object {

@@ -205,9 +205,9 @@ void bind_loop(py::module_& m) {
            }),
            py::arg("thing"), py::arg("from_"), py::arg("to"))
       .def_readonly("action", &exec::Move::action, "'move(o1, r2)'")
-      .def_readonly("thing", &exec::Move::thing)
-      .def_readonly("from_", &exec::Move::from)
-      .def_readonly("to", &exec::Move::to)
+      .def_readonly("thing", &exec::Move::thing, "The thing moved (object or container).")
+      .def_readonly("from_", &exec::Move::from, "Where the thing is taken from.")
+      .def_readonly("to", &exec::Move::to, "Where the thing goes.")
       .def("__repr__", [](const exec::Move& mv) { return "<rtamp.Move " + mv.action + ">"; });
 
   py::class_<exec::WorldEvent>(m, "WorldEvent", "An intervention of a person as the world applied (or refused) it.")
@@ -215,9 +215,9 @@ void bind_loop(py::module_& m) {
              return exec::WorldEvent{time, std::move(what), applied, std::move(detail)};
            }),
            py::arg("time"), py::arg("what"), py::arg("applied") = true, py::arg("detail") = "")
-      .def_readonly("time", &exec::WorldEvent::time)
+      .def_readonly("time", &exec::WorldEvent::time, "World time (s) of the event.")
       .def_readonly("what", &exec::WorldEvent::what, "The Intervention.")
-      .def_readonly("applied", &exec::WorldEvent::applied)
+      .def_readonly("applied", &exec::WorldEvent::applied, "True if the world applied it; False if it refused it (detail says why).")
       .def_readonly("detail", &exec::WorldEvent::detail, "Where it went, or why it was refused.");
 
   py::class_<exec::World, PyWorld>(
@@ -260,41 +260,41 @@ void bind_loop(py::module_& m) {
       .def("take_events", &exec::World::take_events);
 
   py::class_<exec::EpisodeMetrics>(m, "EpisodeMetrics", "What one episode measured (the quantities of the paper's Table I).")
-      .def_readonly("success", &exec::EpisodeMetrics::success)
+      .def_readonly("success", &exec::EpisodeMetrics::success, "The task was done (end == 'success').")
       .def_property_readonly("end", [](const exec::EpisodeMetrics& x) { return exec::to_string(x.end); },
                              "Why it ended: 'task-done', 'cycles', 'unsatisfiable', 'no-plan', 'gave-up', 'lost',\n"
                              "'time-limit', 'interrupted', 'error' (or 'running').")
-      .def_readonly("reason", &exec::EpisodeMetrics::reason)
-      .def_readonly("first_plan_seconds", &exec::EpisodeMetrics::first_plan_seconds)
-      .def_readonly("replan_seconds", &exec::EpisodeMetrics::replan_seconds)
-      .def_readonly("replans", &exec::EpisodeMetrics::replans)
-      .def_readonly("tree_changes", &exec::EpisodeMetrics::tree_changes)
+      .def_readonly("reason", &exec::EpisodeMetrics::reason, "Why the episode ended, readable.")
+      .def_readonly("first_plan_seconds", &exec::EpisodeMetrics::first_plan_seconds, "Wall time (s) of the first plan.")
+      .def_readonly("replan_seconds", &exec::EpisodeMetrics::replan_seconds, "Total wall time (s) of the replans.")
+      .def_readonly("replans", &exec::EpisodeMetrics::replans, "Number of replans after the first plan.")
+      .def_readonly("tree_changes", &exec::EpisodeMetrics::tree_changes, "Subtrees inserted plus removed over the episode.")
       .def_readonly("completion_time", &exec::EpisodeMetrics::completion_time, "World seconds (success only).")
-      .def_readonly("motion_cost", &exec::EpisodeMetrics::motion_cost)
-      .def_readonly("interventions", &exec::EpisodeMetrics::interventions)
-      .def_readonly("interventions_applied", &exec::EpisodeMetrics::interventions_applied)
-      .def_readonly("interventions_refused", &exec::EpisodeMetrics::interventions_refused)
-      .def_readonly("actions_succeeded", &exec::EpisodeMetrics::actions_succeeded)
-      .def_readonly("actions_failed", &exec::EpisodeMetrics::actions_failed)
-      .def_readonly("cycles", &exec::EpisodeMetrics::cycles)
-      .def_readonly("run_length", &exec::EpisodeMetrics::run_length)
-      .def_readonly("world_time", &exec::EpisodeMetrics::world_time)
-      .def_readonly("wall_seconds", &exec::EpisodeMetrics::wall_seconds)
-      .def_readonly("real_time_factor", &exec::EpisodeMetrics::real_time_factor)
-      .def_readonly("seed", &exec::EpisodeMetrics::seed)
+      .def_readonly("motion_cost", &exec::EpisodeMetrics::motion_cost, "Tool path travelled (m), when the world measures it (else 0).")
+      .def_readonly("interventions", &exec::EpisodeMetrics::interventions, "Interventions the world reported, applied or refused.")
+      .def_readonly("interventions_applied", &exec::EpisodeMetrics::interventions_applied, "Interventions the world applied.")
+      .def_readonly("interventions_refused", &exec::EpisodeMetrics::interventions_refused, "Interventions the world refused.")
+      .def_readonly("actions_succeeded", &exec::EpisodeMetrics::actions_succeeded, "Moves that succeeded.")
+      .def_readonly("actions_failed", &exec::EpisodeMetrics::actions_failed, "Moves that failed.")
+      .def_readonly("cycles", &exec::EpisodeMetrics::cycles, "Completed cycles of a recurring task.")
+      .def_readonly("run_length", &exec::EpisodeMetrics::run_length, "States of the observed run.")
+      .def_readonly("world_time", &exec::EpisodeMetrics::world_time, "World time (s) at the end.")
+      .def_readonly("wall_seconds", &exec::EpisodeMetrics::wall_seconds, "Wall time (s) of the episode.")
+      .def_readonly("real_time_factor", &exec::EpisodeMetrics::real_time_factor, "World time divided by wall time.")
+      .def_readonly("seed", &exec::EpisodeMetrics::seed, "The episode's random seed.")
       .def("__repr__", [](const exec::EpisodeMetrics& x) {
         return std::string("<rtamp.EpisodeMetrics ") + exec::to_string(x.end) + (x.success ? " success" : " failure") +
                " world_time=" + std::to_string(x.world_time) + ">";
       });
 
   py::class_<exec::EpisodeInfo>(m, "EpisodeInfo", "What an episode runs: scenario, task, algorithm, ...")
-      .def_readonly("scenario", &exec::EpisodeInfo::scenario)
-      .def_readonly("task", &exec::EpisodeInfo::task)
-      .def_readonly("algorithm", &exec::EpisodeInfo::algorithm)
-      .def_readonly("conditions", &exec::EpisodeInfo::conditions)
-      .def_readonly("reconfiguration", &exec::EpisodeInfo::reconfiguration)
-      .def_readonly("world", &exec::EpisodeInfo::world)
-      .def_readonly("seed", &exec::EpisodeInfo::seed);
+      .def_readonly("scenario", &exec::EpisodeInfo::scenario, "The scenario's name.")
+      .def_readonly("task", &exec::EpisodeInfo::task, "The LTL task, as text.")
+      .def_readonly("algorithm", &exec::EpisodeInfo::algorithm, "The search algorithm's name (rtamp.algorithms()).")
+      .def_readonly("conditions", &exec::EpisodeInfo::conditions, "The behavior tree's condition mode ('action' or 'state').")
+      .def_readonly("reconfiguration", &exec::EpisodeInfo::reconfiguration, "How the tree changes on a replan ('online' or 'rebuild').")
+      .def_readonly("world", &exec::EpisodeInfo::world, "The world's kind ('mujoco', 'symbolic' or the Python World's).")
+      .def_readonly("seed", &exec::EpisodeInfo::seed, "The episode's random seed.");
 
   py::class_<exec::EpisodeObserver, PyObserver>(
       m, "Observer",

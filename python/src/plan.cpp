@@ -216,28 +216,28 @@ void bind_plan(py::module_& m) {
   py::class_<plan::SearchStats>(m, "SearchStats", "What one planning query did.")
       .def_readonly("generated", &plan::SearchStats::generated, "Product nodes created during the query.")
       .def_readonly("expanded", &plan::SearchStats::expanded, "Node expansions (prefix and cycle searches).")
-      .def_readonly("successor_generations", &plan::SearchStats::successor_generations)
-      .def_readonly("cycle_searches", &plan::SearchStats::cycle_searches)
+      .def_readonly("successor_generations", &plan::SearchStats::successor_generations, "Expansions that had to compute their successors.")
+      .def_readonly("cycle_searches", &plan::SearchStats::cycle_searches, "Cycle searches run (misses of the cycle table).")
       .def_readonly("graph_nodes", &plan::SearchStats::graph_nodes, "Nodes of the product graph after the query.")
-      .def_readonly("graph_edges", &plan::SearchStats::graph_edges)
-      .def_readonly("cache_used", &plan::SearchStats::cache_used)
-      .def_readonly("cache_hits", &plan::SearchStats::cache_hits)
-      .def_readonly("cache_misses", &plan::SearchStats::cache_misses)
+      .def_readonly("graph_edges", &plan::SearchStats::graph_edges, "Edges of the product graph after the query.")
+      .def_readonly("cache_used", &plan::SearchStats::cache_used, "The motion-cost cache was consulted (astar-exp with an expensive model).")
+      .def_readonly("cache_hits", &plan::SearchStats::cache_hits, "Motion costs found in the cache.")
+      .def_readonly("cache_misses", &plan::SearchStats::cache_misses, "Motion costs computed by the cost model.")
       .def_readonly("reused_nodes", &plan::SearchStats::reused_nodes, "Nodes already in the graph (experience).")
-      .def_readonly("reused_path_edges", &plan::SearchStats::reused_path_edges)
-      .def_readonly("memory_bytes", &plan::SearchStats::memory_bytes)
-      .def_readonly("construction_seconds", &plan::SearchStats::construction_seconds)
+      .def_readonly("reused_path_edges", &plan::SearchStats::reused_path_edges, "Plan edges taken from an earlier optimal plan (astar-exp).")
+      .def_readonly("memory_bytes", &plan::SearchStats::memory_bytes, "Bytes of product graph, search arrays and cache after the query.")
+      .def_readonly("construction_seconds", &plan::SearchStats::construction_seconds, "Wall time (s) of the full construction before the search (graph 'full').")
       .def_readonly("seconds", &plan::SearchStats::seconds, "Wall time of the whole query.")
-      .def_readonly("hit_node_limit", &plan::SearchStats::hit_node_limit)
-      .def_readonly("hit_time_limit", &plan::SearchStats::hit_time_limit)
+      .def_readonly("hit_node_limit", &plan::SearchStats::hit_node_limit, "The search stopped at its node limit.")
+      .def_readonly("hit_time_limit", &plan::SearchStats::hit_time_limit, "The search stopped at its time limit.")
       .def("__repr__", [](const plan::SearchStats& s) {
         return "<rtamp.SearchStats expanded=" + std::to_string(s.expanded) + " graph_nodes=" +
                std::to_string(s.graph_nodes) + " seconds=" + std::to_string(s.seconds) + ">";
       });
 
   py::class_<plan::Condition>(m, "Condition", "thing is at location (a state or action condition).")
-      .def_readonly("thing", &plan::Condition::thing)
-      .def_readonly("location", &plan::Condition::location)
+      .def_readonly("thing", &plan::Condition::thing, "The thing (object or container).")
+      .def_readonly("location", &plan::Condition::location, "The region or container it is in.")
       .def("__repr__", [](const plan::Condition& c) { return c.thing + "@" + c.location; });
 
   py::class_<plan::ActionTuple>(m, "ActionTuple",
@@ -245,16 +245,16 @@ void bind_plan(py::module_& m) {
                                 "action, its thing, source and destination, the full state before/after (pre,\n"
                                 "post) and the relaxed action conditions, the hand before/after, its cost.")
       .def_readonly("action", &plan::ActionTuple::action, "'move(o1, r2)'")
-      .def_readonly("thing", &plan::ActionTuple::thing)
-      .def_readonly("from_", &plan::ActionTuple::from)
-      .def_readonly("to", &plan::ActionTuple::to)
-      .def_readonly("pre", &plan::ActionTuple::pre)
-      .def_readonly("post", &plan::ActionTuple::post)
-      .def_readonly("relaxed_pre", &plan::ActionTuple::relaxed_pre)
-      .def_readonly("relaxed_post", &plan::ActionTuple::relaxed_post)
-      .def_readonly("hand_before", &plan::ActionTuple::hand_before)
-      .def_readonly("hand_after", &plan::ActionTuple::hand_after)
-      .def_readonly("cost", &plan::ActionTuple::cost)
+      .def_readonly("thing", &plan::ActionTuple::thing, "The thing moved.")
+      .def_readonly("from_", &plan::ActionTuple::from, "Where the thing is taken from.")
+      .def_readonly("to", &plan::ActionTuple::to, "Where the thing goes.")
+      .def_readonly("pre", &plan::ActionTuple::pre, "The full state before the move: one Condition per thing (the state condition).")
+      .def_readonly("post", &plan::ActionTuple::post, "The full state after the move.")
+      .def_readonly("relaxed_pre", &plan::ActionTuple::relaxed_pre, "The action condition: the thing at its source (and where a container involved stands).")
+      .def_readonly("relaxed_post", &plan::ActionTuple::relaxed_post, "The thing at its destination.")
+      .def_readonly("hand_before", &plan::ActionTuple::hand_before, "Where the hand is before the move ('home' before the first).")
+      .def_readonly("hand_after", &plan::ActionTuple::hand_after, "Where the hand is after the move.")
+      .def_readonly("cost", &plan::ActionTuple::cost, "The move's motion cost.")
       .def_readonly("in_cycle", &plan::ActionTuple::in_cycle, "The move belongs to the plan's cycle.")
       .def("__repr__", [](const plan::ActionTuple& a) { return "<rtamp.ActionTuple " + a.action + ">"; });
 
@@ -265,11 +265,11 @@ void bind_plan(py::module_& m) {
       .def_readonly("thing", &StepView::thing, "The moved thing ('' for stay).")
       .def_readonly("to", &StepView::to, "The destination ('' for stay).")
       .def_readonly("from_state", &StepView::from_state, "'o1@r1 o2@r1 r3@r1 hand@home'")
-      .def_readonly("to_state", &StepView::to_state)
+      .def_readonly("to_state", &StepView::to_state, "The TS state after the step, e.g. 'o1@r2 o2@r1 r3@r1 hand@r2'.")
       .def_readonly("ba_from", &StepView::ba_from, "Büchi state before.")
       .def_readonly("ba_to", &StepView::ba_to, "Büchi state after.")
-      .def_readonly("cost", &StepView::cost)
-      .def_readonly("label", &StepView::label)
+      .def_readonly("cost", &StepView::cost, "The step's motion cost.")
+      .def_readonly("label", &StepView::label, "Atoms true in the state the step leaves.")
       .def("__repr__", [](const StepView& s) { return "<rtamp.Step " + s.action + " cost=" + std::to_string(s.cost) + ">"; });
 
   py::class_<PlanView>(m, "Plan",
@@ -278,16 +278,16 @@ void bind_plan(py::module_& m) {
                        "ActionTuples for the behavior tree), stats. Otherwise reason ('unsatisfiable',\n"
                        "'no-accepting-cycle', 'capacity', 'unknown-name', 'node-limit', 'time-limit') and\n"
                        "message. bool(plan) is plan.found.")
-      .def_readonly("found", &PlanView::found)
-      .def_readonly("reason", &PlanView::reason)
-      .def_readonly("message", &PlanView::message)
-      .def_readonly("prefix", &PlanView::prefix)
-      .def_readonly("cycle", &PlanView::cycle)
-      .def_readonly("prefix_cost", &PlanView::prefix_cost)
-      .def_readonly("cycle_cost", &PlanView::cycle_cost)
+      .def_readonly("found", &PlanView::found, "A lasso plan exists.")
+      .def_readonly("reason", &PlanView::reason, "Why none was found: 'unsatisfiable', 'no-accepting-cycle', 'capacity', 'unknown-name', 'node-limit' or 'time-limit' ('' if found).")
+      .def_readonly("message", &PlanView::message, "A readable explanation when no plan was found.")
+      .def_readonly("prefix", &PlanView::prefix, "The steps from the start to the cycle (list of Step).")
+      .def_readonly("cycle", &PlanView::cycle, "The steps repeated forever (list of Step).")
+      .def_readonly("prefix_cost", &PlanView::prefix_cost, "Motion cost of the prefix.")
+      .def_readonly("cycle_cost", &PlanView::cycle_cost, "Motion cost of one turn of the cycle.")
       .def_property_readonly("cost", [](const PlanView& v) { return v.prefix_cost + v.cycle_cost; })
-      .def_readonly("actions", &PlanView::actions)
-      .def_readonly("stats", &PlanView::stats)
+      .def_readonly("actions", &PlanView::actions, "The moves as ActionTuples, prefix first (what the behavior tree executes).")
+      .def_readonly("stats", &PlanView::stats, "What the query did (SearchStats).")
       .def_readonly("automaton_states", &PlanView::automaton_states, "The Büchi states it started from.")
       .def_property_readonly("moves", [](const PlanView& v) {
         std::vector<std::string> out;

@@ -153,3 +153,89 @@ def test_python_errors_in_leaves_propagate():
         rtamp.Tree(bt.Inverter("i"))
     with pytest.raises(rtamp.Error):
         rtamp.Tree(bt.Condition("c", lambda: True)).set_root(bt.Spec("x"))
+
+
+def _leaves():
+    """Fresh, deterministic leaves for one tree: what they do depends only on their own ticks."""
+    state = {"ticks": 0, "moves": []}
+
+    def ready():
+        state["ticks"] += 1
+        return state["ticks"] % 5 != 0
+
+    def done():
+        return bool(state["moves"]) and all(c.ticks >= c.n for c in state["moves"])
+
+    def make_move(name, ports):
+        c = Counter(int(ports.get("steps", "2")))
+        state["moves"].append(c)
+        return bt.Action(name, c.start, c.running, c.halted, type_id="Move")
+
+    return state, ready, done, make_move
+
+
+def _tree_spec(ready, done, make_move):
+    return bt.ReactiveSequence(
+        "main",
+        bt.Condition("ready", ready, type_id="Ready"),
+        bt.Fallback(
+            "until done",
+            bt.Condition("done", done, type_id="Done"),
+            bt.Retry("retry", bt.Sequence("moves", make_move("m1", {"steps": "2"}), make_move("m2", {"steps": "3"})),
+                     num_attempts=3),
+        ),
+        bt.Parallel("both", bt.Condition("again", done, type_id="Done"), bt.Inverter("not", bt.Condition(
+            "busy", lambda: False, type_id="Busy")), success_count=2),
+        bt.Timeout("limit", bt.Action("finish", lambda: Status.SUCCESS, type_id="Finish"), seconds=5.0),
+    )
+
+
+def test_xml_round_trip_ticks_the_same():
+    state_a, ready_a, done_a, move_a = _leaves()
+    a = rtamp.Tree(_tree_spec(ready_a, done_a, move_a), clock="manual")
+    a.set_port(a.find("m1"), "steps", "2")
+    a.set_port(a.find("m2"), "steps", "3")
+    xml = a.to_xml()
+
+    state_b, ready_b, done_b, move_b = _leaves()
+    b = rtamp.Tree.from_xml(xml, nodes={"Move": move_b}, conditions={"Ready": ready_b, "Done": done_b,
+                                                                    "Busy": lambda: False},
+                            actions={"Finish": lambda: "SUCCESS"}, clock="manual")
+    assert len(b) == len(a)
+    assert [(n["name"], n["kind"], n["type_id"]) for n in b.nodes()] == \
+        [(n["name"], n["kind"], n["type_id"]) for n in a.nodes()]
+    assert b.to_xml() == xml
+    for _ in range(12):
+        assert a.tick() == b.tick()
+        assert a.to_text(ids=False) == b.to_text(ids=False)
+    assert state_a["ticks"] == state_b["ticks"] == 12
+    assert [(c.starts, c.ticks) for c in state_a["moves"]] == [(c.starts, c.ticks) for c in state_b["moves"]]
+    assert sum(c.starts for c in state_b["moves"]) > 0
+
+
+def test_xml_import_errors_are_located(tmp_path):
+    bad = '<root BTCPP_format="4">\n  <BehaviorTree ID="T">\n    <Sequence>\n      <Wave name="w"/>\n' \
+          '    </Sequence>\n  </BehaviorTree>\n</root>\n'
+    with pytest.raises(rtamp.Error) as e:
+        rtamp.Tree.from_xml(bad, file="wave.xml")
+    assert e.value.file == "wave.xml" and e.value.line == 4 and e.value.column is not None
+    assert "Wave" in e.value.message
+    # Known once registered.
+    t = rtamp.Tree.from_xml(bad, actions={"Wave": lambda: Status.SUCCESS})
+    assert t.tick() == Status.SUCCESS
+    # Malformed XML, from a file: the error names the file.
+    path = tmp_path / "broken.xml"
+    path.write_text('<root BTCPP_format="4">\n  <BehaviorTree ID="T">\n    <Sequence>\n  </BehaviorTree>\n')
+    with pytest.raises(rtamp.Error) as e:
+        rtamp.Tree.load_xml(str(path))
+    assert e.value.file == str(path) and e.value.line is not None
+    # A factory must not bring children of its own: they come from the file.
+    with pytest.raises(rtamp.Error):
+        rtamp.Tree.from_xml(bad, nodes={"Wave": lambda name, ports: bt.Sequence(name, bt.Condition("c", bool))})
+    # A Python exception in a factory propagates as itself.
+    def boom(name, ports):
+        raise KeyError(name)
+    with pytest.raises(KeyError):
+        rtamp.Tree.from_xml(bad, nodes={"Wave": boom})
+    # The empty tree.
+    assert rtamp.Tree.from_xml(rtamp.Tree().to_xml()).root is None

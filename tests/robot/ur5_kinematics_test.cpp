@@ -277,7 +277,8 @@ TEST(Ur5Kinematics, NearestSolutionIsTheGeneratorWhenStartingNearIt) {
   std::mt19937_64 rng(13);
   std::normal_distribution<double> noise(0, 0.01);
   for (int i = 0; i < 1000; ++i) {
-    const Joints q = random_joints(rng, -2 * std::numbers::pi, 2 * std::numbers::pi);
+    Joints q = random_joints(rng, -2 * std::numbers::pi, 2 * std::numbers::pi);
+    ASSERT_TRUE(k.limits().wrap(q, q));  // the generator inside the UR5's limits (elbow ±π)
     Joints near = q;
     for (double& x : near) x += noise(rng);
     const auto best = k.ik_nearest(k.tool_pose(q), near);

@@ -33,6 +33,8 @@ TEST(SimEpisode, EveryBlockToEveryLocation) {
         s.sim().step(250);
         EXPECT_EQ(perceived(s, o.name), l) << name << ": move " << o.name << " " << l;
         EXPECT_EQ(s.sim().warnings().total(), 0);
+        // The skills' motions stay inside the UR5's published effort limits.
+        EXPECT_EQ(s.sim().torque_limited_steps(), 0) << name << ": move " << o.name << " " << l;
       }
     }
   }
@@ -46,6 +48,7 @@ TEST(SimEpisode, TrayCarriesItsBlocks) {
   EXPECT_EQ(perceived(s, "o1"), "r3");
   EXPECT_EQ(perceived(s, "o2"), "r3");
   EXPECT_EQ(perceived(s, "o3"), "r1");
+  EXPECT_EQ(s.sim().torque_limited_steps(), 0);  // a loaded tray too: inside the effort limits
 }
 
 TEST(SimEpisode, RemovedGoneAddedAppears) {

@@ -44,5 +44,42 @@ TEST(Mjcf, ArmHoldsPoseAgainstGravity) {
   EXPECT_EQ(sim.warnings().total(), 0);
 }
 
+TEST(Mjcf, ArmMotorTorqueStaysWithinTheEffortLimits) {
+  // A target 1.2 rad away on the pan and wrist joints (the arm stays clear of the table),
+  // with no trajectory: the servo alone would ask for thousands of N m. The motor torque (actuator + applied feed-forward − what MuJoCo's
+  // implicit damping takes back, the servo's velocity feedback) must stay within the UR5's
+  // effort limits (150 / 28 N m), and the arm still gets there.
+  Simulation sim(testing::three_block(false));
+  const mjModel* m = sim.model();
+  const mjData* d = sim.data();
+  robot::Joints q = sim.arm_q();
+  const bool moved[6] = {true, false, false, true, true, true};
+  for (int j = 0; j < 6; ++j)
+    if (moved[j]) q[j] += 1.2;
+  sim.set_arm_target(q);
+  const double limit[6] = {150, 150, 150, 28, 28, 28};
+  double peak[6] = {0, 0, 0, 0, 0, 0}, servo_peak[6] = {0, 0, 0, 0, 0, 0};
+  for (int k = 0; k < 3000; ++k) {
+    double qvel[6];
+    for (int j = 0; j < 6; ++j) qvel[j] = d->qvel[j];
+    sim.step();
+    // This step's motor torque: the actuator force and the applied feed-forward it used,
+    // minus the damping × qvel the feed-forward added back for MuJoCo to take away.
+    for (int j = 0; j < 6; ++j) {
+      peak[j] = std::max(peak[j], std::abs(d->qfrc_actuator[j] + d->qfrc_applied[j] - m->dof_damping[j] * qvel[j]));
+      servo_peak[j] = std::max(servo_peak[j], std::abs(d->qfrc_actuator[j]));
+    }
+  }
+  EXPECT_GT(sim.torque_limited_steps(), 0);
+  for (int j = 0; j < 6; ++j) {
+    EXPECT_EQ(m->actuator_forcerange[2 * j + 1], limit[j]);
+    EXPECT_LE(peak[j], limit[j] * (1 + 1e-9)) << "joint " << j;
+    if (moved[j]) {
+      EXPECT_EQ(servo_peak[j], limit[j]) << "joint " << j;  // the servo saturated: the test bites
+    }
+    EXPECT_NEAR(sim.arm_q()[j], q[j], 1e-3) << "joint " << j;
+  }
+}
+
 }  // namespace
 }  // namespace rtamp::sim

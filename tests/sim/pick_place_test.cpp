@@ -34,6 +34,7 @@ TEST(SimPickPlace, OneBlockToR2) {
   EXPECT_EQ(rig.where("o2"), "r1");
   EXPECT_EQ(rig.sim.held(), -1);
   EXPECT_EQ(rig.sim.warnings().total(), 0);
+  EXPECT_EQ(rig.sim.torque_limited_steps(), 0);  // inside the UR5's effort limits
 }
 
 }  // namespace

@@ -23,8 +23,10 @@ struct JointLimits {
   Joints lower{-kTwoPi, -kTwoPi, -kTwoPi, -kTwoPi, -kTwoPi, -kTwoPi};
   Joints upper{kTwoPi, kTwoPi, kTwoPi, kTwoPi, kTwoPi, kTwoPi};
 
-  // The UR5's own limits: ±2π on every joint.
-  static JointLimits ur5() { return {}; }
+  // The UR5's own limits: ±2π on every joint but the elbow (joint 3), which is ±π
+  // (Universal Robots' description; the values are read from models/ur5.xml at build
+  // time, defined in ur5_kinematics.cpp).
+  static JointLimits ur5();
 
   bool contains(const Joints& q, double tol = 1e-12) const {
     for (int j = 0; j < kDof; ++j)

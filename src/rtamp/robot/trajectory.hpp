@@ -29,7 +29,7 @@
 namespace rtamp::robot {
 
 struct MotionLimits {
-  Joints vmax{1.0, 1.0, 1.0, 1.5, 1.5, 1.5};  // rad/s (UR5 hardware: 3.15)
+  Joints vmax{1.0, 1.0, 1.0, 1.5, 1.5, 1.5};  // rad/s (UR5: π, robot::ur5_velocity_limits())
   Joints amax{2.0, 2.0, 2.0, 3.0, 3.0, 3.0};  // rad/s²
 };
 

@@ -5,6 +5,8 @@
 #include <limits>
 #include <numbers>
 
+#include "ur5_parameters.inc"  // generated from models/ur5.xml
+
 namespace rtamp::robot {
 
 namespace {
@@ -21,10 +23,23 @@ double clamp_unit(double c) { return std::clamp(c, -1.0, 1.0); }
 
 DhParameters DhParameters::ur5() {
   DhParameters p;
-  p.d = {0.089159, 0.0, 0.0, 0.10915, 0.09465, 0.0823};
-  p.a = {0.0, -0.425, -0.39225, 0.0, 0.0, 0.0};
-  p.alpha = {kPi / 2, 0.0, 0.0, kPi / 2, -kPi / 2, 0.0};
+  std::copy(std::begin(detail::kUr5D), std::end(detail::kUr5D), p.d.begin());
+  std::copy(std::begin(detail::kUr5A), std::end(detail::kUr5A), p.a.begin());
+  std::copy(std::begin(detail::kUr5Alpha), std::end(detail::kUr5Alpha), p.alpha.begin());
   return p;
+}
+
+JointLimits JointLimits::ur5() {
+  JointLimits l;
+  std::copy(std::begin(detail::kUr5Lower), std::end(detail::kUr5Lower), l.lower.begin());
+  std::copy(std::begin(detail::kUr5Upper), std::end(detail::kUr5Upper), l.upper.begin());
+  return l;
+}
+
+Joints ur5_velocity_limits() {
+  Joints v;
+  std::copy(std::begin(detail::kUr5VelocityLimit), std::end(detail::kUr5VelocityLimit), v.begin());
+  return v;
 }
 
 double position_error(const Eigen::Isometry3d& a, const Eigen::Isometry3d& b) {

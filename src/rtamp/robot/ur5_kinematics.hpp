@@ -33,9 +33,13 @@ struct DhParameters {
   std::array<double, kDof> d{};
   std::array<double, kDof> a{};
   std::array<double, kDof> alpha{};
-  // UR5 (Universal Robots' published values, metres / radians).
+  // UR5 (Universal Robots' published values, metres / radians), read at build time from
+  // the model file models/ur5.xml, the one place they are written.
   static DhParameters ur5();
 };
+
+// The UR5's joint velocity limits (rad/s; 180°/s on every joint, from models/ur5.xml).
+Joints ur5_velocity_limits();
 
 // All solutions of one IK query; fixed capacity, no allocation.
 struct IkSolutions {

@@ -1,8 +1,11 @@
 #include "rtamp/sim/mjcf_builder.hpp"
 
+#include "rtamp/sim/ur5_model.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <sstream>
+#include <string_view>
 
 namespace rtamp::sim {
 
@@ -93,6 +96,42 @@ void tray_geoms(std::ostream& x, const world::Vec3& size, const std::array<doubl
   }
 }
 
+// The text between <tag> and the last </tag> of the UR5's model file (its one section of
+// that name; nested elements of the same name, like <default class=...>, stay inside).
+std::string_view model_section(std::string_view model, std::string_view tag) {
+  const std::string open = "<" + std::string(tag) + ">", close = "</" + std::string(tag) + ">";
+  const auto b = model.find(open), e = model.rfind(close);
+  if (b == std::string_view::npos || e == std::string_view::npos || e < b || model.rfind(open) != b)
+    throw Error("the UR5 model file has no single <" + std::string(tag) + "> section");
+  return model.substr(b + open.size(), e - b - open.size());
+}
+
+// The parallel gripper, placed inside the flange body: body "gripper" is the flange frame.
+std::string gripper_mjcf(const MjcfOptions& opt) {
+  std::ostringstream x;
+  const std::string in = "                    ";
+  const double to = opt.arm.tool_offset;
+  const double tip = to + kFingerTipBelowTcp;
+  const double palm_top = 0.0, palm_bot = 0.06;
+  x << in << "<body name=\"gripper\" childclass=\"gripper\">\n";
+  x << in << "  <site name=\"tcp\" pos=\"" << v3(0, 0, to) << "\" size=\"0.006\" rgba=\"1 0 0 0.5\"/>\n";
+  x << in << "  <geom name=\"gripper:palm\" type=\"box\" size=\"" << v3(0.03, opt.finger_max + 0.015, 0.03)
+    << "\" pos=\"" << v3(0, 0, (palm_top + palm_bot) / 2) << "\" mass=\"0.6\"/>\n";
+  const double fh = (tip - palm_bot) / 2, fz = (tip + palm_bot) / 2;
+  for (int sgn : {1, -1}) {
+    const char* nm = sgn > 0 ? "left" : "right";
+    x << in << "  <body name=\"gripper:" << nm << "\">\n";
+    x << in << "    <joint name=\"gripper:" << nm << "\" type=\"slide\" axis=\"0 " << sgn << " 0\" range=\"0 "
+      << Num{opt.finger_max} << "\"/>\n";
+    x << in << "    <geom name=\"gripper:" << nm << "\" type=\"box\" size=\"" << v3(0.012, kFingerPad / 2, fh)
+      << "\" pos=\"" << v3(0, sgn * kFingerPad / 2, fz) << "\" mass=\"0.05\" friction=\"" << Num{opt.friction}
+      << " 0.005 0.0001\" rgba=\"0.3 0.3 0.33 1\"/>\n";
+    x << in << "  </body>\n";
+  }
+  x << in << "</body>\n";
+  return x.str();
+}
+
 }  // namespace
 
 world::Vec3 parking_position(int index) { return {3.0 + 0.5 * index, 3.0, -3.0}; }
@@ -108,6 +147,7 @@ double object_base_z(const world::Scenario& s, const world::Object& o) {
 }
 
 std::string build_mjcf(const world::Scenario& s, const MjcfOptions& opt) {
+  const std::string_view ur5 = ur5_model_mjcf();
   for (const auto& r : s.regions) check_name(r.name, r.where);
   for (const auto& c : s.containers) check_name(c.name, c.where);
   for (const auto& o : s.objects) check_name(o.name, o.where);
@@ -136,18 +176,17 @@ std::string build_mjcf(const world::Scenario& s, const MjcfOptions& opt) {
   x << "<mujoco model=\"rtamp:" << xml_escape(s.name) << "\">\n";
   x << "  <compiler angle=\"radian\" autolimits=\"true\"/>\n";
   x << "  <option timestep=\"" << Num{opt.timestep} << "\" integrator=\"Euler\" cone=\"pyramidal\"/>\n";
+  x << "  <custom>" << model_section(ur5, "custom") << "</custom>\n";
   x << "  <size njmax=\"" << njmax << "\" nconmax=\"" << nconmax << "\" nstack=\"" << nstack << "\"/>\n";
   x << "  <visual><quality shadowsize=\"2048\"/><headlight ambient=\"0.3 0.3 0.3\" diffuse=\"0.4 0.4 0.4\"/>"
        "<map znear=\"0.01\"/></visual>\n";
   x << "  <default>\n"
        "    <geom contype=\"1\" conaffinity=\"3\" friction=\""
     << Num{opt.friction} << " 0.005 0.0001\" solref=\"0.01 1\"/>\n"
-    << "    <default class=\"arm\"><geom contype=\"2\" conaffinity=\"1\" rgba=\"0.5 0.52 0.56 1\"/>"
-       "<joint armature=\"0.1\" damping=\"100\"/></default>\n"
-       "    <default class=\"wrist\"><geom contype=\"2\" conaffinity=\"1\" rgba=\"0.5 0.52 0.56 1\"/>"
-       "<joint armature=\"0.1\" damping=\"20\"/></default>\n"
+    << "    <default class=\"gripper\"><geom contype=\"2\" conaffinity=\"1\" rgba=\"0.15 0.15 0.17 1\"/>"
+       "<joint armature=\"0.01\" damping=\"10\"/></default>\n"
        "    <default class=\"visual\"><geom contype=\"0\" conaffinity=\"0\" group=\"1\"/></default>\n"
-       "  </default>\n";
+    << model_section(ur5, "default") << "  </default>\n";
   x << "  <worldbody>\n";
   x << "    <light name=\"sun\" pos=\"" << v3(cx, cy, 3) << "\" dir=\"0 0.2 -1\" directional=\"true\" castshadow=\"false\"/>\n";
   x << "    <geom name=\"floor\" type=\"plane\" size=\"5 5 0.1\" pos=\"0 0 -0.75\" rgba=\"0.82 0.83 0.85 1\" class=\"visual\"/>\n";
@@ -195,83 +234,17 @@ std::string build_mjcf(const world::Scenario& s, const MjcfOptions& opt) {
       << v3(bx, by, bz) << "\" fovy=\"45\"/>\n";
   }
 
-  // The arm.
-  const auto& g = opt.arm;
-  const double masses[6] = {3.7, 8.393, 2.275, 1.219, 1.219, 0.1879};
-  const double radii[6] = {0.06, 0.055, 0.045, 0.04, 0.04, 0.038};
-  // Lateral (joint-axis) offsets of the real links the DH model collapses: the upper arm
-  // sits 0.136 m along joint 2's axis, the forearm 0.016 m (shoulder minus elbow offset).
-  const double lateral[6] = {0, 0.136, 0.016, 0, 0, 0};
-  const double kp[6] = {3000, 3000, 3000, 800, 800, 800};
+  // The arm: the UR5's model file, on a mount at the scenario's base pose, with the
+  // gripper inside its flange body.
+  const std::string gripper = gripper_mjcf(opt);
+  std::string arm(model_section(ur5, "worldbody"));
+  const auto flange = arm.find("<body name=\"ur5:flange\"");
+  if (flange == std::string::npos) throw Error("the UR5 model has no body 'ur5:flange'");
+  arm.insert(arm.find('>', flange) + 1, "\n" + gripper);
   const double ry = s.robot.yaw;
-  x << "    <body name=\"ur5:base\" pos=\"" << v3(s.robot.base[0], s.robot.base[1], s.robot.base[2]) << "\" quat=\""
-    << v4(std::cos(ry / 2), 0, 0, std::sin(ry / 2)) << "\">\n";
-  x << "      <geom name=\"ur5:pedestal\" class=\"visual\" type=\"cylinder\" size=\"0.075 0.02\" pos=\"0 0 0.02\" "
-       "rgba=\"0.25 0.25 0.28 1\"/>\n";
-  std::string indent = "      ";
-  for (int i = 0; i < 6; ++i) {
-    const bool first = i == 0;
-    if (first) {
-      x << indent << "<body name=\"ur5:link1\">\n";
-    } else {
-      x << indent << "<body name=\"ur5:link" << i + 1 << "\" pos=\"" << v3(g.a[i - 1], 0, g.d[i - 1]) << "\" quat=\""
-        << v4(std::cos(g.alpha[i - 1] / 2), std::sin(g.alpha[i - 1] / 2), 0, 0) << "\">\n";
-    }
-    indent += "  ";
-    const char* cls = i < 3 ? "arm" : "wrist";
-    x << indent << "<joint name=\"ur5:joint" << i + 1 << "\" class=\"" << cls
-      << "\" type=\"hinge\" axis=\"0 0 1\" range=\"-6.283185307 6.283185307\"/>\n";
-    const double r = radii[i], lat = lateral[i];
-    // Link 1 turns about the fixed base axis at table height: visual only.
-    const std::string gcls = first ? "visual" : cls;
-    const std::string dark = " rgba=\"0.2 0.3 0.55 1\"";
-    // Joint housing (along this joint's axis).
-    x << indent << "<geom name=\"ur5:housing" << i + 1 << "\" class=\"" << gcls << "\" type=\"cylinder\" size=\""
-      << Num{r * 1.05} << ' ' << Num{std::max(r, std::abs(lat) / 2 + r * 0.5)} << "\" pos=\"" << v3(0, 0, lat / 2)
-      << "\" mass=\"" << Num{masses[i] * 0.3} << "\"" << dark << "/>\n";
-    // The link: along z by d_i, then along x by a_i (at the lateral offset).
-    double segs = 0;
-    if (std::abs(g.d[i]) > 1e-9) segs += 1;
-    if (std::abs(g.a[i]) > 1e-9) segs += 1;
-    if (std::abs(g.d[i]) > 1e-9)
-      x << indent << "<geom name=\"ur5:link" << i + 1 << "/z\" class=\"" << gcls << "\" type=\"capsule\" size=\""
-        << Num{r} << "\" fromto=\"" << v3(0, 0, 0) << ' ' << v3(0, 0, g.d[i]) << "\" mass=\""
-        << Num{masses[i] * 0.7 / segs} << "\"/>\n";
-    if (std::abs(g.a[i]) > 1e-9)
-      x << indent << "<geom name=\"ur5:link" << i + 1 << "/x\" class=\"" << gcls << "\" type=\"capsule\" size=\""
-        << Num{r} << "\" fromto=\"" << v3(0, 0, g.d[i] + lat) << ' ' << v3(g.a[i], 0, g.d[i] + lat) << "\" mass=\""
-        << Num{masses[i] * 0.7 / segs} << "\"/>\n";
-  }
-  // Flange frame (A_1..A_6): offset (a6, 0, d6), rotation Rx(alpha6), in link 6.
-  x << indent << "<body name=\"gripper\" pos=\"" << v3(g.a[5], 0, g.d[5]) << "\" quat=\""
-    << v4(std::cos(g.alpha[5] / 2), std::sin(g.alpha[5] / 2), 0, 0) << "\">\n";
-  {
-    std::string in = indent + "  ";
-    const double to = g.tool_offset;
-    const double tip = to + kFingerTipBelowTcp;
-    const double palm_top = 0.0, palm_bot = 0.06;
-    x << in << "<site name=\"flange\" pos=\"0 0 0\" size=\"0.005\"/>\n";
-    x << in << "<site name=\"tcp\" pos=\"" << v3(0, 0, to) << "\" size=\"0.006\" rgba=\"1 0 0 0.5\"/>\n";
-    x << in << "<geom name=\"gripper:palm\" class=\"wrist\" type=\"box\" size=\"" << v3(0.03, opt.finger_max + 0.015, 0.03)
-      << "\" pos=\"" << v3(0, 0, (palm_top + palm_bot) / 2) << "\" mass=\"0.6\" rgba=\"0.15 0.15 0.17 1\"/>\n";
-    const double fh = (tip - palm_bot) / 2, fz = (tip + palm_bot) / 2;
-    for (int sgn : {1, -1}) {
-      const char* nm = sgn > 0 ? "left" : "right";
-      x << in << "<body name=\"gripper:" << nm << "\">\n";
-      x << in << "  <joint name=\"gripper:" << nm << "\" type=\"slide\" axis=\"0 " << sgn << " 0\" range=\"0 "
-        << Num{opt.finger_max} << "\" damping=\"10\" armature=\"0.01\"/>\n";
-      x << in << "  <geom name=\"gripper:" << nm << "\" type=\"box\" size=\"" << v3(0.012, kFingerPad / 2, fh)
-        << "\" pos=\"" << v3(0, sgn * kFingerPad / 2, fz) << "\" mass=\"0.05\" contype=\"2\" conaffinity=\"1\" "
-        << "friction=\"" << Num{opt.friction} << " 0.005 0.0001\" rgba=\"0.3 0.3 0.33 1\"/>\n";
-      x << in << "</body>\n";
-    }
-  }
-  x << indent << "</body>\n";
-  for (int i = 5; i >= 0; --i) {
-    indent.resize(indent.size() - 2);
-    x << indent << "</body>\n";
-  }
-  x << "    </body>\n";
+  x << "    <body name=\"ur5:mount\" pos=\"" << v3(s.robot.base[0], s.robot.base[1], s.robot.base[2]) << "\" quat=\""
+    << v4(std::cos(ry / 2), 0, 0, std::sin(ry / 2)) << "\">\n"
+    << arm << "    </body>\n";
 
   // Movable bodies.
   auto block_body = [&](const std::string& bname, const world::Vec3& pos, const world::Vec3& size,
@@ -319,10 +292,7 @@ std::string build_mjcf(const world::Scenario& s, const MjcfOptions& opt) {
       << "\" active=\"false\" solref=\"0.01 1\"/>\n";
   x << "  </equality>\n";
 
-  x << "  <actuator>\n";
-  for (int i = 0; i < 6; ++i)
-    x << "    <position name=\"ur5:joint" << i + 1 << "\" joint=\"ur5:joint" << i + 1 << "\" kp=\"" << Num{kp[i]}
-      << "\"/>\n";
+  x << "  <actuator>" << model_section(ur5, "actuator");
   for (const char* nm : {"left", "right"})
     x << "    <position name=\"gripper:" << nm << "\" joint=\"gripper:" << nm << "\" kp=\"400\" ctrlrange=\"0 "
       << Num{opt.finger_max} << "\" forcelimited=\"true\" forcerange=\"-15 15\"/>\n";

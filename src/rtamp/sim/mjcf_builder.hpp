@@ -5,15 +5,14 @@
 // simulation.hpp: the arm's 6 hinge joints are joints 0..5 = dofs 0..5, the two
 // finger slides are joints 6, 7, then one free joint per movable body):
 //  - a table (top face at z = 0), visual-only region rectangles with outlines;
-//  - the UR5 from its standard DH parameters: body i carries hinge joint i about its
-//    local z axis and its child sits at (a_i, 0, d_i) rotated by Rx(alpha_i), so
-//    MuJoCo's site "flange" equals A_1 ... A_6 exactly and site "tcp" is the flange
-//    moved tool_offset along its z (robot::Ur5Kinematics' tool frame). Link geometry is
-//    capsules with the published link masses, armature and damping on every joint,
-//    position actuators (kp; no kv in MuJoCo 2.2.2, damping is implicit);
-//  - a parallel two-finger gripper (body "gripper" = flange frame; fingers slide
-//    along tool y; a finger's joint value is the distance of its inner face from the
-//    tool axis);
+//  - the UR5 of the model file models/ur5.xml (sim/ur5_model.hpp; its <custom>,
+//    <default>, <worldbody> and <actuator> sections, spliced in), on a body "ur5:mount"
+//    at the scenario's base pose. Its site "flange" equals A_1 ... A_6 of the DH
+//    parameters robot::Ur5Kinematics uses (both come from that file), and site "tcp" is
+//    the flange moved tool_offset along its z (robot::Ur5Kinematics' tool frame);
+//  - a parallel two-finger gripper inside the body "ur5:flange" (body "gripper" =
+//    flange frame; fingers slide along tool y; a finger's joint value is the distance of
+//    its inner face from the tool axis);
 //  - one body with a free joint per scenario object (box) and container (base plate
 //    plus four rims), then reserved spare blocks and trays parked out of view with
 //    contacts disabled (the operator's "add" uses them);
@@ -31,11 +30,8 @@
 
 namespace rtamp::sim {
 
-// Arm geometry used to build the model (standard DH, metres / radians).
+// What the scene adds to the UR5 model file (whose DH parameters are fixed there).
 struct ArmGeometry {
-  std::array<double, 6> d{0.089159, 0, 0, 0.10915, 0.09465, 0.0823};
-  std::array<double, 6> a{0, -0.425, -0.39225, 0, 0, 0};
-  std::array<double, 6> alpha{1.5707963267948966, 0, 0, 1.5707963267948966, -1.5707963267948966, 0};
   double tool_offset = 0.15;  // flange -> fingertip centre along flange z
 };
 

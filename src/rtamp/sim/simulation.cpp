@@ -150,8 +150,24 @@ void Simulation::step() {
   }
   d_->ctrl[6] = d_->ctrl[7] = finger_target_;
   mj_mulM(m_, d_, mres_.data(), mvec_.data());
-  for (int j = 0; j < 6; ++j)
-    d_->qfrc_applied[j] = d_->qfrc_bias[j] + m_->dof_damping[j] * qd_target_[j] + mres_[j];
+  bool limited = false;
+  for (int j = 0; j < 6; ++j) {
+    // Actuator j drives arm joint j = dof j (mjcf_builder.hpp). Its servo force is
+    // kp (q* − q) clamped to forcerange; the rest of the motor torque must fit beside it.
+    const double damping = m_->dof_damping[j];
+    double servo = m_->actuator_gainprm[mjNGAIN * j] * (q_target_[j] - d_->qpos[j]);
+    double lo = -mjMAXVAL, hi = mjMAXVAL;
+    if (m_->actuator_forcelimited[j]) {
+      lo = m_->actuator_forcerange[2 * j], hi = m_->actuator_forcerange[2 * j + 1];
+      servo = std::clamp(servo, lo, hi);
+    }
+    const double ff = d_->qfrc_bias[j] + mres_[j] + damping * (qd_target_[j] - d_->qvel[j]);
+    const double ff_limited = std::clamp(ff, lo - servo, hi - servo);
+    if (ff_limited != ff || servo == lo || servo == hi) limited = true;
+    // MuJoCo subtracts damping * qd itself (implicitly): add it back here.
+    d_->qfrc_applied[j] = ff_limited + damping * d_->qvel[j];
+  }
+  if (limited) ++torque_limited_steps_;
   mj_step2(m_, d_);
 }
 

@@ -14,6 +14,11 @@
 //    so one Simulation owns its model and no other mjData may share it);
 //  - step() applies: ctrl = joint targets, qfrc_applied = qfrc_bias + damping * qd* +
 //    M qdd* on the arm dofs (mj_step1 / mj_step2), which holds any pose against gravity.
+//    The motor torque of a joint — servo kp (q* − q), feed-forward qfrc_bias + M qdd*,
+//    and velocity feedback damping (qd* − qd), which MuJoCo applies as implicit joint
+//    damping — is kept within the actuator's forcerange (the UR5's published effort
+//    limits, models/ur5.xml) by clamping the feed-forward; steps where that clamp acts
+//    are counted (torque_limited_steps()).
 #pragma once
 
 #include <mujoco/mujoco.h>
@@ -143,6 +148,8 @@ class Simulation {
   bool config_collides(const robot::Joints& q, const std::vector<int>& ignore = {}) const;
 
   Warnings warnings() const;
+  // Physics steps in which some arm joint's motor torque hit its effort limit.
+  long torque_limited_steps() const { return torque_limited_steps_; }
 
   // Re-run kinematics after direct state edits (set_pose etc. do it themselves).
   void forward();
@@ -163,6 +170,7 @@ class Simulation {
   std::vector<int> hidden_;         // indices of hidden things (re-parked each step)
   std::vector<std::array<int, 2>> geom_contact_;  // original contype/conaffinity
   robot::Joints q_target_{}, qd_target_{}, qdd_target_{};
+  long torque_limited_steps_ = 0;
   double finger_target_ = 0;
   int held_ = -1;
   std::optional<world::Footprint> reserved_;
