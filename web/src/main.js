@@ -131,7 +131,8 @@ function onLog(r) {
       app.drops.splice(i, 1);
     }
   }
-  refreshLog();
+  // Ticks (50 a second with MuJoCo), percepts and frame records change no panel.
+  if (r.ev !== 'tick' && r.ev !== 'perceived' && r.ev !== 'frame') refreshLog();
 }
 
 function onMessage(m) {

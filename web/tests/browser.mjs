@@ -89,6 +89,17 @@ async function withPage(serveArgs, body) {
   }
 }
 
+// Resumes a --paused episode from the page and waits until the robot's first move runs
+// (the person then acts on a running episode, as in the paper).
+async function resumeAndWaitForAMove(page, ws) {
+  await page.click('#pause');
+  await waitFor(() => logRecords(ws).some((r) => r.ev === 'action' && r.what === 'start'), 'the first move').catch((e) => {
+    const seen = logRecords(ws).filter((r) => r.ev !== 'perceived' && r.ev !== 'frame' && r.ev !== 'tick');
+    const control = ws.received.filter((m) => m.type === 'reply' || m.type === 'state');
+    throw new Error(`${e.message}\nlog records: ${JSON.stringify(seen)}\nsent: ${JSON.stringify(ws.sent)}\nreplies and states: ${JSON.stringify(control)}`);
+  });
+}
+
 // Where the page draws a thing / a region (page pixels), through its read-only test hook.
 const at = (page, name) => page.evaluate((n) => window.rtamp.project(n), name);
 
@@ -155,8 +166,8 @@ const cases = {
 
   async drag() {
     await withPage([scenario('3-block-tray'), '--world', 'symbolic', '--no-operator', '--paused'], async ({ page, ws, log }) => {
+      await resumeAndWaitForAMove(page, ws); // the plan moves o3 third: it stays in r1 meanwhile
       await dragTo(page, 'o3', 'r2');
-      await page.click('#pause'); // resume
       const { intervention, reaction: r } = await reaction(ws, (x) => x.ev === 'intervention' && x.kind === 'relocate', 'the relocation and the reaction');
       assert.equal(intervention.subject, 'o3');
       assert.equal(intervention.location, 'r2');
@@ -172,9 +183,9 @@ const cases = {
   async add() {
     await withPage([scenario('3-block-tray'), '--world', 'symbolic', '--no-operator', '--paused'], async ({ page, ws }) => {
       const before = (await page.evaluate(() => window.rtamp.things())).map((t) => t.name);
+      await resumeAndWaitForAMove(page, ws);
       await page.selectOption('#add-at', 'r2');
       await page.click('#palette .class-button[data-class="block"]');
-      await page.click('#pause');
       const { intervention } = await reaction(ws, (x) => x.ev === 'intervention' && x.kind === 'add', 'the addition and the reaction');
       assert.equal(intervention.applied, true);
       assert.equal(intervention.location, 'r2');
@@ -187,11 +198,11 @@ const cases = {
 
   async remove() {
     await withPage([scenario('3-block-tray'), '--world', 'symbolic', '--no-operator', '--paused'], async ({ page, ws }) => {
+      await resumeAndWaitForAMove(page, ws);
       const p = await at(page, 'o3');
       await page.mouse.click(p.x, p.y);
       assert.match(await page.textContent('#selected'), /o3/);
       await page.click('#delete');
-      await page.click('#pause');
       const { intervention } = await reaction(ws, (x) => x.ev === 'intervention' && x.kind === 'remove', 'the removal and the reaction');
       assert.equal(intervention.subject, 'o3');
       assert.equal(intervention.applied, true);
@@ -301,8 +312,8 @@ const cases = {
       // MuJoCo does (the server's tool point).
       const tool = await page.evaluate(() => window.rtamp.tool);
       assert.ok(Math.hypot(...tool.map((v, i) => v - frame.tool[i])) < 0.01, `drawn tool ${tool} vs streamed ${frame.tool}`);
+      await resumeAndWaitForAMove(page, ws);
       await dragTo(page, 'o3', 'r2');
-      await page.click('#pause');
       const { intervention, reaction: r } = await reaction(ws, (x) => x.ev === 'intervention' && x.kind === 'relocate', 'the relocation and the reaction');
       assert.equal(intervention.subject, 'o3');
       assert.equal(intervention.applied, true, JSON.stringify(intervention));
