@@ -39,15 +39,18 @@ class ToyWorld(rtamp.World):
 
     # --- rtamp.World
     def time(self):
+        """World time (s)."""
         return self.t
 
     def next_event_time(self):
+        """When the running move ends or the next scripted relocation happens (inf: never)."""
         nxt = self.end
         if self.script:
             nxt = min(nxt, self.script[0][0])
         return nxt
 
     def advance(self, dt):
+        """Moves time on by dt, finishing moves and applying the script on the way."""
         self.calls += 1
         target = self.t + dt
         while True:
@@ -63,10 +66,12 @@ class ToyWorld(rtamp.World):
         self.t = target
 
     def observe(self):
+        """Where every thing is: {thing: location} ("hand" while held)."""
         self.calls += 1
         return self.place
 
     def start(self, move):
+        """Starts a move: its thing goes into the hand until move_time has passed."""
         self.calls += 1
         if self.place.get(move.thing) is None:
             self.status, self.why = rtamp.MoveStatus.FAILED, "unknown thing"
@@ -79,10 +84,12 @@ class ToyWorld(rtamp.World):
         self.status = rtamp.MoveStatus.RUNNING
 
     def poll(self):
+        """The running move's (status, reason)."""
         self.calls += 1
         return self.status, self.why
 
     def halt(self):
+        """Stops the running move and puts its thing back where it came from."""
         self.calls += 1
         if self.move is not None:
             self.place = dict(self.place)
@@ -91,12 +98,15 @@ class ToyWorld(rtamp.World):
             self.status, self.why = rtamp.MoveStatus.FAILED, "halted"
 
     def busy(self):
+        """Never busy outside a move (no settling, no person in the way)."""
         return False
 
     def hand(self):
+        """Where the hand last put something ("" before the first move)."""
         return self.last_hand
 
     def take_events(self):
+        """The interventions applied since the last call (and forgets them)."""
         out, self.events = self.events, []
         return out
 

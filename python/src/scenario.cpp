@@ -44,7 +44,7 @@ void bind_scenario(py::module_& m) {
            }),
            py::arg("name"), py::arg("center") = Vec3{0, 0, 0}, py::arg("size") = Vec3{0.2, 0.2, 0},
            py::arg("capacity") = 8)
-      .def_readwrite("name", &Region::name)
+      .def_readwrite("name", &Region::name, "The region's name.")
       .def_readwrite("center", &Region::center, "[x, y, z] in metres.")
       .def_readwrite("size", &Region::size, "[x, y, z] extents (z ignored).")
       .def_readwrite("capacity", &Region::capacity, "How many movable things fit.")
@@ -64,11 +64,11 @@ void bind_scenario(py::module_& m) {
            }),
            py::arg("name"), py::arg("cls") = "tray", py::arg("position") = Vec3{0, 0, 0},
            py::arg("size") = Vec3{0.24, 0.16, 0.03}, py::arg("capacity") = 4)
-      .def_readwrite("name", &Container::name)
+      .def_readwrite("name", &Container::name, "The container's name.")
       .def_readwrite("cls", &Container::cls, "Its class, e.g. 'tray'.")
-      .def_readwrite("position", &Container::position)
-      .def_readwrite("size", &Container::size)
-      .def_readwrite("capacity", &Container::capacity)
+      .def_readwrite("position", &Container::position, "Where its base centre stands (x, y, z; m).")
+      .def_readwrite("size", &Container::size, "Its size (x, y, z; m).")
+      .def_readwrite("capacity", &Container::capacity, "How many objects fit in it.")
       .def("__repr__", [](const Container& c) { return "<rtamp.Container " + c.name + ">"; });
 
   py::class_<Object>(m, "Object", "A movable object (a block).")
@@ -82,21 +82,21 @@ void bind_scenario(py::module_& m) {
            }),
            py::arg("name"), py::arg("cls") = "block", py::arg("position") = Vec3{0, 0, 0},
            py::arg("size") = Vec3{0.04, 0.04, 0.04})
-      .def_readwrite("name", &Object::name)
-      .def_readwrite("cls", &Object::cls)
+      .def_readwrite("name", &Object::name, "The object's name.")
+      .def_readwrite("cls", &Object::cls, "Its class, e.g. 'block'.")
       .def_readwrite("position", &Object::position, "Centre of its base, metres.")
-      .def_readwrite("size", &Object::size)
+      .def_readwrite("size", &Object::size, "Its size (x, y, z; m).")
       .def("__repr__", [](const Object& o) { return "<rtamp.Object " + o.name + ">"; });
 
   py::class_<Proposition>(m, "Proposition", "A named proposition over the world, e.g. all_in_r2 = 'all block in r2'.")
-      .def_readonly("name", &Proposition::name)
+      .def_readonly("name", &Proposition::name, "The proposition's name (an atom of the task).")
       .def_readonly("text", &Proposition::text, "The expression as written.")
       .def("__repr__", [](const Proposition& p) { return "<rtamp.Proposition " + p.name + " = '" + p.text + "'>"; });
 
   py::class_<Robot>(m, "Robot", "The robot: model name, base position and yaw.")
-      .def_readwrite("model", &Robot::model)
-      .def_readwrite("base", &Robot::base)
-      .def_readwrite("yaw", &Robot::yaw);
+      .def_readwrite("model", &Robot::model, "The robot model ('ur5').")
+      .def_readwrite("base", &Robot::base, "Where its base stands (x, y, z; m).")
+      .def_readwrite("yaw", &Robot::yaw, "Its base's turn about world z (rad).");
 
   py::class_<Intervention>(m, "Intervention",
                            "A person's action on the world: kind 'relocate', 'add', 'remove', 'add-container',\n"
@@ -115,10 +115,10 @@ void bind_scenario(py::module_& m) {
            py::arg("time") = 0.0)
       .def_property("kind", [](const Intervention& iv) { return intervention_kind_name(iv.kind); },
                     [](Intervention& iv, const std::string& k) { iv.kind = parse_intervention_kind(k); })
-      .def_readwrite("time", &Intervention::time)
-      .def_readwrite("subject", &Intervention::subject)
-      .def_readwrite("cls", &Intervention::cls)
-      .def_readwrite("location", &Intervention::location)
+      .def_readwrite("time", &Intervention::time, "When it happens (s of world time from the start of the episode).")
+      .def_readwrite("subject", &Intervention::subject, "The thing it concerns (the new thing's name for an add; unused by take-from-gripper).")
+      .def_readwrite("cls", &Intervention::cls, "The class of an added thing.")
+      .def_readwrite("location", &Intervention::location, "Where the thing goes (a region or container; '' if not given).")
       .def_readwrite("position", &Intervention::position, "[x, y, z] or None.")
       .def("__repr__", [](const Intervention& iv) {
         return std::string("<rtamp.Intervention ") + intervention_kind_name(iv.kind) + " " + iv.subject +
@@ -129,13 +129,13 @@ void bind_scenario(py::module_& m) {
                        "A workspace and its task: regions, containers, objects, robot, propositions, the LTL\n"
                        "task (text) and scripted interventions. Load with load_scenario(), parse_scenario()\n"
                        "or generate_scenario(); write with to_yaml(). List fields return copies.")
-      .def_readwrite("name", &Scenario::name)
-      .def_readwrite("description", &Scenario::description)
-      .def_readwrite("regions", &Scenario::regions)
-      .def_readwrite("containers", &Scenario::containers)
-      .def_readwrite("objects", &Scenario::objects)
-      .def_readwrite("robot", &Scenario::robot)
-      .def_readonly("propositions", &Scenario::propositions)
+      .def_readwrite("name", &Scenario::name, "The scenario's name.")
+      .def_readwrite("description", &Scenario::description, "A readable description.")
+      .def_readwrite("regions", &Scenario::regions, "The regions (list of Region).")
+      .def_readwrite("containers", &Scenario::containers, "The containers (list of Container).")
+      .def_readwrite("objects", &Scenario::objects, "The objects (list of Object).")
+      .def_readwrite("robot", &Scenario::robot, "The robot and where it stands.")
+      .def_readonly("propositions", &Scenario::propositions, "The task's propositions (list of Proposition).")
       .def_property(
           "task", [](const Scenario& s) { return s.task; },
           [](Scenario& s, const std::string& task) {
@@ -204,9 +204,9 @@ void bind_scenario(py::module_& m) {
              return Placement::Thing{std::move(location), std::move(cls), container};
            }),
            py::arg("location"), py::arg("cls") = "block", py::arg("container") = false)
-      .def_readwrite("location", &Placement::Thing::location)
-      .def_readwrite("cls", &Placement::Thing::cls)
-      .def_readwrite("container", &Placement::Thing::container)
+      .def_readwrite("location", &Placement::Thing::location, "Where the thing is: a region or container name ('none' if outside every location).")
+      .def_readwrite("cls", &Placement::Thing::cls, "The thing's class.")
+      .def_readwrite("container", &Placement::Thing::container, "True if the thing is a container.")
       .def("__eq__", [](const Placement::Thing& a, const Placement::Thing& b) { return a == b; })
       .def("__repr__", [](const Placement::Thing& t) {
         return "rtamp.Thing('" + t.location + "', '" + t.cls + "'" + (t.container ? ", container=True" : "") + ")";
