@@ -33,7 +33,7 @@ endif()
 include(GNUInstallDirs)
 include(rtampDependencies)
 # The layers that link MuJoCo (directly or through sim): the "mujoco" component.
-set(RTAMP_MUJOCO_LAYERS sim episode batch)
+set(RTAMP_MUJOCO_LAYERS sim episode batch serve)
 
 function(rtamp_add_layer name)
   cmake_parse_arguments(L "" "" "SOURCES;DEPS;SYSTEM_DEPS" ${ARGN})

@@ -289,6 +289,8 @@ void task_cases(std::vector<Case>& t) {
     t.push_back({"task/batch", {"batch", p, "--trials", "1", "--world", "symbolic", "-o", "b.csv"}, where, e.what,
                  {"b.csv"}});
     t.push_back({"task/sim", {"sim", p, "--do", "move o1 r2", "--mjcf", "m.xml"}, where, e.what, {"m.xml"}});
+    t.push_back({"task/serve", {"serve", p, "--world", "symbolic", "--port", "0", "--log", "sv.jsonl"}, where, e.what,
+                 {"sv.jsonl"}});
   }
   // The MuJoCo world: refused before MuJoCo starts, no video, no log.
   {
@@ -479,6 +481,37 @@ void sim_cases(std::vector<Case>& t) {
   }
 }
 
+void serve_cases(std::vector<Case>& t) {
+  auto add = [&](std::vector<std::string> args, const std::string& where, const std::string& what) {
+    args.insert(args.begin(), {"serve", "3-block-tray", "--world", "symbolic", "--log", "sv.jsonl"});
+    t.push_back({"serve", args, where, what, {"sv.jsonl"}});
+  };
+  add({"--port", "65536"}, "--port:", "in [0, 65535]");
+  add({"--port", "-1"}, "--port:", "in [0, 65535]");
+  add({"--port", "80x"}, "--port:", "");
+  add({"--speed", "-1"}, "--speed:", "in [0, 1000]");
+  add({"--speed", "nan"}, "--speed:", "");
+  add({"--world", "lego"}, "--world:", "lego");
+  add({"--host", "localhost.invalid"}, "cannot listen on localhost.invalid:", "not an IP address");
+  add({"--host", "203.0.113.7", "--port", "0"}, "cannot listen on 203.0.113.7:0:", "");
+  add({"--web-root", "no-such-dir"}, "--web-root:", "not a directory");
+  add({"--replay", "no-such.jsonl"}, "--replay:", "cannot read 'no-such.jsonl'");
+  add({"--algo", "bfs"}, "--algo:", "unknown");
+  {
+    const std::string p = file("{\"ev\":\"episode\",\"t\":0}\nnot json\n", ".jsonl");
+    add({"--replay", p}, "--replay: " + p + ":2:", "not a JSON object");
+  }
+  {
+    const std::string p = file("{\"ev\":\"episode\",\"scenario\":\"3-block\",\"t\":0}\n", ".jsonl");
+    add({"--replay", p}, "--replay: " + p + ":1:", "the log is of scenario '3-block'");
+  }
+  {
+    const std::string p = file("{\"ev\":\"run\",\"t\":2}\n{\"ev\":\"run\",\"t\":1}\n", ".jsonl");
+    add({"--replay", p}, "--replay: " + p + ":2:", "out of time order");
+  }
+  t.push_back({"serve", {"serve", "3-block-tray", "--log", "no-such-dir/sv.jsonl"}, "--log:", "cannot write", {}});
+}
+
 void gen_cases(std::vector<Case>& t) {
   auto add = [&](std::vector<std::string> args, const std::string& where, const std::string& what) {
     args.insert(args.begin(), "gen");
@@ -562,6 +595,7 @@ std::vector<Case> table() {
   task_cases(t);
   change_cases(t);
   sim_cases(t);
+  serve_cases(t);
   gen_cases(t);
   ltl_cases(t);
   option_cases(t);

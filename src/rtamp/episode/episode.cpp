@@ -69,9 +69,15 @@ world::Intervention random_intervention(const world::Scenario& s, world::Interve
 
 const char* to_string(WorldKind w) { return w == WorldKind::MuJoCo ? "mujoco" : "symbolic"; }
 
-EpisodeMetrics run_episode(const world::Scenario& input, const EpisodeOptions& opt) {
+EpisodeMetrics run_episode(const world::Scenario& scenario, const EpisodeOptions& opt) {
+  return Episode(scenario, opt).run();
+}
+
+Episode::~Episode() = default;
+
+Episode::Episode(const world::Scenario& input, const EpisodeOptions& opt, const WorldWrapper& wrap) : scenario_(input) {
   std::mt19937_64 rng(opt.seed * 0x9E3779B97F4A7C15ull + 1);
-  world::Scenario scenario = input;
+  world::Scenario& scenario = scenario_;
   if (opt.randomize_initial) randomize_objects(scenario, rng);
   std::vector<world::Intervention> script;
   if (opt.scripted_operator) script = scenario.interventions;
@@ -79,33 +85,32 @@ EpisodeMetrics run_episode(const world::Scenario& input, const EpisodeOptions& o
   std::stable_sort(script.begin(), script.end(), [](const auto& a, const auto& b) { return a.time < b.time; });
 
   // Outputs first: a bad path is refused before anything runs.
-  std::unique_ptr<exec::EpisodeLog> log;
-  if (!opt.log_path.empty()) log = std::make_unique<exec::EpisodeLog>(opt.log_path);
-  std::unique_ptr<exec::TreeDump> trees;
-  if (!opt.tree_dir.empty()) trees = std::make_unique<exec::TreeDump>(opt.tree_dir);
+  if (!opt.log_path.empty()) log_ = std::make_unique<exec::EpisodeLog>(opt.log_path);
+  if (!opt.tree_dir.empty()) trees_ = std::make_unique<exec::TreeDump>(opt.tree_dir);
   if (!opt.video_path.empty() && opt.world != WorldKind::MuJoCo)
     throw Error("--video needs the MuJoCo world (the symbolic world has nothing to film)");
 
-  std::unique_ptr<exec::World> world;
-  SimWorld* sim_world = nullptr;
   if (opt.world == WorldKind::MuJoCo) {
     sim::SessionOptions so;
     so.seed = opt.seed;
     so.op.script = script;
     so.op.random_rate = opt.random_rate;
     auto w = std::make_unique<SimWorld>(scenario, so);
-    sim_world = w.get();
-    world = std::move(w);
+    sim_world_ = w.get();
+    world_ = std::move(w);
   } else {
     exec::SymbolicWorldOptions so;
     so.seed = opt.seed;
     so.script = script;
     so.random_rate = opt.random_rate;
     so.failure_probability = opt.failure_probability;
-    world = std::make_unique<exec::SymbolicWorld>(scenario, so);
+    auto w = std::make_unique<exec::SymbolicWorld>(scenario, so);
+    symbolic_world_ = w.get();
+    world_ = std::move(w);
   }
-  std::unique_ptr<VideoRecorder> video;
-  if (sim_world && !opt.video_path.empty()) video = std::make_unique<VideoRecorder>(sim_world->session().sim(), opt.video_path);
+  if (sim_world_ && !opt.video_path.empty())
+    video_ = std::make_unique<VideoRecorder>(sim_world_->session().sim(), opt.video_path);
+  if (wrap) wrapper_ = wrap(*world_);
 
   exec::LoopOptions lo;
   lo.planner.algorithm = opt.algorithm;
@@ -122,20 +127,21 @@ EpisodeMetrics run_episode(const world::Scenario& input, const EpisodeOptions& o
   lo.seed = opt.seed;
   lo.world_name = to_string(opt.world);
   lo.interrupt = opt.interrupt;
-  exec::ReactiveLoop loop(*world, scenario, lo);
-  std::unique_ptr<exec::Timeline> timeline;
-  if (opt.timeline) timeline = std::make_unique<exec::Timeline>(opt.timeline);
-  if (log) {
-    if (sim_world) log->add_end_field("mujoco_warnings", [sim_world] {
-      return static_cast<double>(sim_world->session().sim().warnings().total());
-    });
-    loop.add_observer(*log);
+  loop_ = std::make_unique<exec::ReactiveLoop>(wrapper_ ? *wrapper_ : *world_, scenario, lo);
+  if (opt.timeline) timeline_ = std::make_unique<exec::Timeline>(opt.timeline);
+  if (log_) {
+    if (SimWorld* sw = sim_world_)
+      log_->add_end_field("mujoco_warnings", [sw] { return static_cast<double>(sw->session().sim().warnings().total()); });
+    loop_->add_observer(*log_);
   }
-  if (timeline) loop.add_observer(*timeline);
-  if (trees) loop.add_observer(*trees);
-  if (video) loop.add_observer(*video);
-  EpisodeMetrics m = loop.run();
-  if (video) video->close();
+  if (timeline_) loop_->add_observer(*timeline_);
+  if (trees_) loop_->add_observer(*trees_);
+  if (video_) loop_->add_observer(*video_);
+}
+
+EpisodeMetrics Episode::run() {
+  EpisodeMetrics m = loop_->run();
+  if (video_) video_->close();
   return m;
 }
 

@@ -15,12 +15,17 @@
 #include <atomic>
 #include <cstdint>
 #include <functional>
+#include <memory>
 #include <optional>
 #include <string>
 
+#include "rtamp/exec/episode_log.hpp"
 #include "rtamp/exec/episode_metrics.hpp"
 #include "rtamp/exec/plan_tree.hpp"
 #include "rtamp/exec/reactive_loop.hpp"
+#include "rtamp/exec/symbolic_world.hpp"
+#include "rtamp/exec/timeline.hpp"
+#include "rtamp/exec/tree_dump.hpp"
 #include "rtamp/plan/search.hpp"
 #include "rtamp/world/scenario.hpp"
 
@@ -60,5 +65,45 @@ struct EpisodeOptions {
 using exec::EpisodeMetrics;
 
 EpisodeMetrics run_episode(const world::Scenario& scenario, const EpisodeOptions& options);
+
+class SimWorld;
+class VideoRecorder;
+
+// An episode built and not yet run: its world, loop and observers, for callers
+// that drive the loop themselves (`rtamp serve` steps it on its own thread,
+// paced to wall time). run_episode(s, o) is Episode(s, o).run().
+class Episode {
+ public:
+  // Wraps the world the loop will see (e.g. to pace it); returns the world to use.
+  using WorldWrapper = std::function<std::unique_ptr<exec::World>(exec::World& inner)>;
+
+  Episode(const world::Scenario& scenario, const EpisodeOptions& options, const WorldWrapper& wrap = {});
+  ~Episode();
+  Episode(const Episode&) = delete;
+  Episode& operator=(const Episode&) = delete;
+
+  // Runs the loop to its end (the caller may have stepped it already) and closes the video.
+  EpisodeMetrics run();
+
+  exec::ReactiveLoop& loop() { return *loop_; }
+  // The scenario the episode runs (randomized if asked), its script included.
+  const world::Scenario& scenario() const { return scenario_; }
+  exec::World& world() { return *world_; }  // the world itself (not the wrapper)
+  SimWorld* sim_world() { return sim_world_; }
+  exec::SymbolicWorld* symbolic_world() { return symbolic_world_; }
+  // The log (null without log_path) — EpisodeLog::add_sink streams it.
+  exec::EpisodeLog* log() { return log_.get(); }
+
+ private:
+  world::Scenario scenario_;
+  std::unique_ptr<exec::EpisodeLog> log_;
+  std::unique_ptr<exec::TreeDump> trees_;
+  std::unique_ptr<exec::Timeline> timeline_;
+  std::unique_ptr<exec::World> world_, wrapper_;
+  SimWorld* sim_world_ = nullptr;
+  exec::SymbolicWorld* symbolic_world_ = nullptr;
+  std::unique_ptr<VideoRecorder> video_;
+  std::unique_ptr<exec::ReactiveLoop> loop_;
+};
 
 }  // namespace rtamp::episode

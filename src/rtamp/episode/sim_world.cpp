@@ -19,18 +19,26 @@ void SimWorld::advance(double dt) {
     travelled_ += (tool - last).norm();  // the tool path actually travelled
     last = tool;
     if (op.next_time() <= sim.time())
-      for (const sim::OperatorEvent& e : op.update()) {
-        events_.push_back(exec::WorldEvent{e.time, e.what, e.applied, e.detail});
-        // A person took the thing the arm carries (out of the gripper, or away).
-        using K = world::Intervention::Kind;
-        const bool carried = phase_ == Phase::Placing || phase_ == Phase::Recovering;
-        if (e.applied && carried &&
-            (e.what.kind == K::TakeFromGripper ||
-             ((e.what.kind == K::Relocate || e.what.kind == K::Remove || e.what.kind == K::RemoveContainer) &&
-              e.what.subject == move_.thing)))
-          taken_ = true;
-      }
+      for (const sim::OperatorEvent& e : op.update()) note(e);
   }
+}
+
+void SimWorld::note(const sim::OperatorEvent& e) {
+  events_.push_back(exec::WorldEvent{e.time, e.what, e.applied, e.detail});
+  // A person took the thing the arm carries (out of the gripper, or away).
+  using K = world::Intervention::Kind;
+  const bool carried = phase_ == Phase::Placing || phase_ == Phase::Recovering;
+  if (e.applied && carried &&
+      (e.what.kind == K::TakeFromGripper ||
+       ((e.what.kind == K::Relocate || e.what.kind == K::Remove || e.what.kind == K::RemoveContainer) &&
+        e.what.subject == move_.thing)))
+    taken_ = true;
+}
+
+exec::WorldEvent SimWorld::apply(const world::Intervention& iv) {
+  const sim::OperatorEvent e = session_.op().apply(iv);
+  note(e);
+  return events_.back();
 }
 
 std::vector<exec::WorldEvent> SimWorld::take_events() {

@@ -41,6 +41,11 @@ class SimWorld final : public exec::World {
   double distance_travelled() const override { return travelled_; }
   std::vector<exec::WorldEvent> take_events() override;
 
+  // Applies one intervention now, between physics steps, as the scenario's
+  // operator would (sim::Operator::apply); take_events() reports it like a
+  // scripted one, and a thing taken from the arm ends the running move.
+  exec::WorldEvent apply(const world::Intervention& iv);
+
   sim::Session& session() { return session_; }
   const sim::Session& session() const { return session_; }
 
@@ -48,6 +53,7 @@ class SimWorld final : public exec::World {
   enum class Phase { Idle, Picking, Placing, Recovering, Done };
 
   bool holds(const std::string& thing) const;
+  void note(const sim::OperatorEvent& e);
   void fail_or_recover(const std::string& why);
   // Starts placing the held thing at `preferred`, else the closest region with room; false if none.
   bool place_somewhere(const std::string& preferred);

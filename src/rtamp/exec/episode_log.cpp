@@ -51,9 +51,15 @@ EpisodeLog::EpisodeLog(const std::string& path) : out_(path), path_(path) {
 
 void EpisodeLog::write(double t, const std::string& object) {
   // `object` is "{...}": add the time as the last member.
-  out_ << object.substr(0, object.size() - 1) << (object.size() > 2 ? "," : "") << "\"t\":"
-       << json(std::round(t * 1e4) / 1e4).dump() << "}\n";
-  out_.flush();
+  std::string line = object.substr(0, object.size() - 1);
+  line += object.size() > 2 ? ",\"t\":" : "\"t\":";
+  line += json(std::round(t * 1e4) / 1e4).dump();
+  line += '}';
+  if (out_.is_open()) {
+    out_ << line << '\n';
+    out_.flush();
+  }
+  for (const auto& sink : sinks_) sink(line);
 }
 
 void EpisodeLog::on_begin(const EpisodeInfo& i) {

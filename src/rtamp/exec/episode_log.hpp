@@ -7,6 +7,9 @@
 // The file is opened by the constructor (rtamp::Error if it cannot be), so a
 // bad path is refused before an episode starts; each record is flushed when
 // written, so the log is complete up to the last event whatever ends the process.
+// Sinks (add_sink) receive every record as well, as the same one-line JSON text
+// without the newline — `rtamp serve` streams the log to its pages this way, so
+// a page sees exactly what the file holds. A log may have sinks and no file.
 // The record kinds are documented in docs/exec.md ("The episode log").
 #pragma once
 
@@ -25,7 +28,17 @@ std::string to_json(const EpisodeMetrics& m, int indent = -1);
 
 class EpisodeLog final : public EpisodeObserver {
  public:
+  using Sink = std::function<void(const std::string& record)>;
+
   explicit EpisodeLog(const std::string& path);
+  // No file: records go to the sinks only.
+  EpisodeLog() = default;
+
+  // Every record is also passed to `sink` (on the loop's thread, in order).
+  void add_sink(Sink sink) { sinks_.push_back(std::move(sink)); }
+  // Writes one more record `object` ("{...}", a JSON object with "ev"), adding
+  // "t" as every record has it (e.g. `frame` records of a served episode).
+  void record(double t, const std::string& object) { write(t, object); }
 
   // A number the end record also carries (e.g. the simulator's warnings), read at the end.
   void add_end_field(std::string key, std::function<double()> value) {
@@ -53,6 +66,7 @@ class EpisodeLog final : public EpisodeObserver {
 
   std::ofstream out_;
   std::string path_;
+  std::vector<Sink> sinks_;
   std::vector<std::pair<std::string, std::function<double()>>> end_fields_;
 };
 

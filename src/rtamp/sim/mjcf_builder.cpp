@@ -1,4 +1,5 @@
 #include "rtamp/sim/mjcf_builder.hpp"
+#include "rtamp/sim/scene_style.hpp"
 
 #include "rtamp/sim/ur5_model.hpp"
 
@@ -44,31 +45,6 @@ std::string v4(double a, double b, double c, double d) {
   std::ostringstream o;
   o << Num{a} << ' ' << Num{b} << ' ' << Num{c} << ' ' << Num{d};
   return o.str();
-}
-
-// A colour per class name: a small palette indexed by a stable hash of the name.
-std::array<double, 3> class_colour(const std::string& cls) {
-  static const std::array<std::array<double, 3>, 6> palette{{
-      {0.85, 0.15, 0.12},  // red
-      {0.15, 0.35, 0.85},  // blue
-      {0.95, 0.75, 0.10},  // yellow
-      {0.55, 0.20, 0.70},  // purple
-      {0.10, 0.70, 0.65},  // teal
-      {0.90, 0.45, 0.10},  // orange
-  }};
-  if (cls == "block") return palette[0];
-  if (cls == "tray") return {0.55, 0.36, 0.20};  // wood
-  unsigned h = 2166136261u;
-  for (char c : cls) h = (h ^ static_cast<unsigned char>(c)) * 16777619u;
-  return palette[1 + h % 5];
-}
-
-std::array<double, 3> region_colour(std::size_t i) {
-  static const std::array<std::array<double, 3>, 6> palette{{
-      {0.20, 0.60, 0.25}, {0.25, 0.45, 0.80}, {0.80, 0.55, 0.20},
-      {0.60, 0.30, 0.60}, {0.30, 0.65, 0.65}, {0.70, 0.70, 0.25},
-  }};
-  return palette[i % palette.size()];
 }
 
 void check_name(const std::string& n, const SourceLocation& where) {
@@ -134,6 +110,47 @@ std::string gripper_mjcf(const MjcfOptions& opt) {
 
 }  // namespace
 
+// A colour per class name: a small palette indexed by a stable hash of the name.
+std::array<double, 3> class_colour(const std::string& cls) {
+  static const std::array<std::array<double, 3>, 6> palette{{
+      {0.85, 0.15, 0.12},  // red
+      {0.15, 0.35, 0.85},  // blue
+      {0.95, 0.75, 0.10},  // yellow
+      {0.55, 0.20, 0.70},  // purple
+      {0.10, 0.70, 0.65},  // teal
+      {0.90, 0.45, 0.10},  // orange
+  }};
+  if (cls == "block") return palette[0];
+  if (cls == "tray") return {0.55, 0.36, 0.20};  // wood
+  unsigned h = 2166136261u;
+  for (char c : cls) h = (h ^ static_cast<unsigned char>(c)) * 16777619u;
+  return palette[1 + h % 5];
+}
+
+std::array<double, 3> region_colour(std::size_t i) {
+  static const std::array<std::array<double, 3>, 6> palette{{
+      {0.20, 0.60, 0.25}, {0.25, 0.45, 0.80}, {0.80, 0.55, 0.20},
+      {0.60, 0.30, 0.60}, {0.30, 0.65, 0.65}, {0.70, 0.70, 0.25},
+  }};
+  return palette[i % palette.size()];
+}
+
+TableTop table_top(const world::Scenario& s) {
+  double xmin = s.robot.base[0] - 0.25, xmax = s.robot.base[0] + 0.25;
+  double ymin = s.robot.base[1] - 0.25, ymax = s.robot.base[1] + 0.25;
+  auto grow = [&](const world::Vec3& c, const world::Vec3& sz) {
+    xmin = std::min(xmin, c[0] - sz[0] / 2);
+    xmax = std::max(xmax, c[0] + sz[0] / 2);
+    ymin = std::min(ymin, c[1] - sz[1] / 2);
+    ymax = std::max(ymax, c[1] + sz[1] / 2);
+  };
+  for (const auto& r : s.regions) grow(r.center, r.size);
+  for (const auto& c : s.containers) grow(c.position, c.size);
+  for (const auto& o : s.objects) grow(o.position, o.size);
+  xmin -= 0.15, xmax += 0.15, ymin -= 0.15, ymax += 0.15;
+  return {xmin, xmax, ymin, ymax};
+}
+
 world::Vec3 parking_position(int index) { return {3.0 + 0.5 * index, 3.0, -3.0}; }
 
 double object_base_z(const world::Scenario& s, const world::Object& o) {
@@ -153,18 +170,8 @@ std::string build_mjcf(const world::Scenario& s, const MjcfOptions& opt) {
   for (const auto& o : s.objects) check_name(o.name, o.where);
 
   // Extent of everything on the table, for the table top and the camera.
-  double xmin = s.robot.base[0] - 0.25, xmax = s.robot.base[0] + 0.25;
-  double ymin = s.robot.base[1] - 0.25, ymax = s.robot.base[1] + 0.25;
-  auto grow = [&](const world::Vec3& c, const world::Vec3& sz) {
-    xmin = std::min(xmin, c[0] - sz[0] / 2);
-    xmax = std::max(xmax, c[0] + sz[0] / 2);
-    ymin = std::min(ymin, c[1] - sz[1] / 2);
-    ymax = std::max(ymax, c[1] + sz[1] / 2);
-  };
-  for (const auto& r : s.regions) grow(r.center, r.size);
-  for (const auto& c : s.containers) grow(c.position, c.size);
-  for (const auto& o : s.objects) grow(o.position, o.size);
-  xmin -= 0.15, xmax += 0.15, ymin -= 0.15, ymax += 0.15;
+  const TableTop top = table_top(s);
+  const double xmin = top.xmin, xmax = top.xmax, ymin = top.ymin, ymax = top.ymax;
   const double cx = (xmin + xmax) / 2, cy = (ymin + ymax) / 2;
 
   const int nthings = static_cast<int>(s.objects.size() + s.containers.size()) + opt.spare_blocks + opt.spare_trays;

@@ -1,0 +1,205 @@
+// rtamp serve — a running episode (or a finished one's log, --replay) served to a web
+// page on 127.0.0.1 (serve/, docs/serve.md): watch the arm, the behavior tree, the plan
+// and the automaton, and be the person in the loop. The first line on stdout is the
+// URL. SIGINT / SIGTERM end the episode cleanly (the log gets its end record) and stop
+// the server, exit code 130 / 143 if the episode was still running.
+#include <atomic>
+#include <chrono>
+#include <csignal>
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+#include <thread>
+
+#include "command.hpp"
+#include "options.hpp"
+#include "rtamp/serve/live_episode.hpp"
+#include "rtamp/serve/replay.hpp"
+#include "rtamp/serve/server.hpp"
+#include "rtamp/task/validate.hpp"
+#include "rtamp/util/error.hpp"
+#include "rtamp/util/format.hpp"
+#include "rtamp/world/scenario_io.hpp"
+
+namespace {
+
+std::atomic<int> g_signal{0};
+static_assert(std::atomic<int>::is_always_lock_free);
+extern "C" void on_serve_signal(int sig) { g_signal.store(sig); }
+
+// <dir of the executable>/../share/rtamp/web
+std::string default_web_root() {
+  std::error_code ec;
+  const std::filesystem::path exe = std::filesystem::read_symlink("/proc/self/exe", ec);
+  if (ec) return "";
+  return (exe.parent_path().parent_path() / "share" / "rtamp" / "web").string();
+}
+
+void check_input_file(const std::string& option, const std::string& path) {
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(path, ec)) throw rtamp::Error(option + ": cannot read '" + path + "': no such file");
+}
+
+rtamp::cli::Registrar reg{
+    "serve",
+    "Serve a running episode (or an episode log, --replay) to a web page: watch it and intervene as the person in the loop",
+    [](CLI::App& app) -> rtamp::cli::Action {
+      struct Opts {
+        std::string scenario, algo = "astar-exp", bt = "online-action", cost = "euclid", log, trees, change,
+                              world = "mujoco", planning, host = "127.0.0.1", replay, web_root;
+        std::uint64_t seed = 1;
+        double max_time = 900, rate = 0, failures = 0, speed = 1;
+        int cycles = 0, port = 8080;
+        bool quiet = false, random_initial = false, no_operator = false, paused = false, exit_at_end = false;
+      };
+      auto o = std::make_shared<Opts>();
+      app.description(
+          "Run one episode of rtamp's reactive loop on SCENARIO (as `rtamp run` does) paced to wall time, and\n"
+          "serve it to a web page: the 3-D scene with the arm, the behavior tree with live statuses, the plan,\n"
+          "the task's automaton and a timeline. On the page you are the person in the loop: move, add or\n"
+          "remove blocks and trays, take the held thing out of the gripper; each becomes an intervention of the\n"
+          "episode, checked like a scripted one, and appears in the log. --replay LOG serves a finished\n"
+          "episode's JSON Lines log instead (scrub with seek). Listens on 127.0.0.1 only unless --host says\n"
+          "otherwise; prints the URL as the first line. docs/serve.md.");
+      rtamp::cli::add_scenario(app, o->scenario)->required();
+      app.add_option("--world", o->world, "World: mujoco (simulated UR5) | symbolic (no physics)")
+          ->check(CLI::IsMember({"mujoco", "symbolic"}));
+      rtamp::cli::add_choice(app, "--algo", o->algo, rtamp::cli::algorithm_choices(), "Search algorithm:");
+      app.add_option("--bt", o->bt, "Tree variant: online-action | online-state | offline")
+          ->check(CLI::IsMember({"online-action", "online-state", "offline"}));
+      rtamp::cli::add_choice(app, "--cost", o->cost, rtamp::cli::cost_model_choices(), "Planner motion-cost model:");
+      app.add_option("--planning", o->planning,
+                     "worker (default for mujoco) | inline (default for symbolic; deterministic)")
+          ->check(CLI::IsMember({"worker", "inline"}));
+      rtamp::cli::add_seed(app, "--seed", o->seed, "Seed of the episode (operator, perception, random initial layout)");
+      app.add_option("--change", o->change, "Add one random intervention: relocate | add | remove")
+          ->check(CLI::IsMember({"relocate", "add", "remove"}));
+      rtamp::cli::add_real(app, "--rate", o->rate, {0, 100}, "Random interventions per second of world time, of every kind");
+      rtamp::cli::add_real(app, "--failures", o->failures, {0, 1}, "Symbolic world: probability that a move fails");
+      rtamp::cli::add_integer(app, "--cycles", o->cycles, 0, 1000000,
+                              "Recurring tasks: succeed after K completed cycles (0: run until --max-time)");
+      app.add_flag("--random-initial", o->random_initial, "Shuffle objects inside their initial locations");
+      app.add_flag("--no-operator", o->no_operator, "Ignore the scenario's scripted operator");
+      rtamp::cli::add_real(app, "--max-time", o->max_time, {0, 1e7, true}, "Give up after this many seconds of world time");
+      app.add_option("--log", o->log, "Write the episode as JSON Lines to FILE (with `frame` records for replays)");
+      app.add_option("--trees", o->trees, "Write the tree as BehaviorTree.CPP XML after each change into DIR");
+      app.add_option("--host", o->host, "Address to listen on (default 127.0.0.1: this machine only)");
+      rtamp::cli::add_integer(app, "--port", o->port, 0, 65535, "Port to listen on (0: any free port)");
+      rtamp::cli::add_real(app, "--speed", o->speed, {0, 1000},
+                           "World seconds per wall second (0: as fast as possible)");
+      app.add_flag("--paused", o->paused, "Start paused (the first plan is made; resume or step on the page)");
+      app.add_option("--replay", o->replay, "Serve this episode log (JSON Lines, from run or serve --log) instead of running");
+      app.add_option("--web-root", o->web_root, "The page's files (default: <exe dir>/../share/rtamp/web)");
+      app.add_flag("--exit-at-end", o->exit_at_end, "Stop serving when the episode (or replay) ends");
+      app.add_flag("--quiet", o->quiet, "No timeline");
+      return [o]() -> int {
+        using namespace rtamp;
+        const world::Scenario scenario = world::load_scenario(o->scenario);
+        task::validate_task(scenario);
+        if (!o->log.empty()) rtamp::cli::check_output_file("--log", o->log);
+        if (!o->trees.empty()) rtamp::cli::check_output_dir("--trees", o->trees);
+        if (!o->replay.empty()) check_input_file("--replay", o->replay);
+        serve::ServerOptions so;
+        so.host = o->host;
+        so.port = static_cast<unsigned short>(o->port);
+        so.web_root = o->web_root.empty() ? default_web_root() : o->web_root;
+        if (!o->web_root.empty() && !std::filesystem::is_directory(o->web_root))
+          throw Error("--web-root: '" + o->web_root + "' is not a directory");
+
+        serve::Server server(so);  // binds first: a bad address or a busy port is refused before anything runs
+        std::unique_ptr<serve::LiveEpisode> live;
+        std::unique_ptr<serve::Replay> replay;
+        serve::RequestHandler* handler = nullptr;
+        if (!o->replay.empty()) {
+          serve::ReplayOptions ro;
+          ro.speed = o->speed;
+          ro.paused = o->paused;
+          replay = std::make_unique<serve::Replay>(scenario, o->replay, ro);
+          if (!o->log.empty() || !o->trees.empty())
+            throw Error("--replay: serves a finished episode's log; --log and --trees are for live episodes");
+          handler = replay.get();
+        } else {
+          serve::LiveOptions lo;
+          episode::EpisodeOptions& opt = lo.episode;
+          opt.world = o->world == "symbolic" ? episode::WorldKind::Symbolic : episode::WorldKind::MuJoCo;
+          opt.algorithm = plan::parse_algorithm(o->algo);
+          opt.conditions = o->bt == "online-state" ? exec::ConditionMode::State : exec::ConditionMode::Action;
+          opt.reconfiguration = o->bt == "offline" ? exec::Reconfiguration::Offline : exec::Reconfiguration::Online;
+          const std::string planning =
+              !o->planning.empty() ? o->planning : (opt.world == episode::WorldKind::Symbolic ? "inline" : "worker");
+          opt.planning = planning == "inline" ? exec::PlanningMode::Inline : exec::PlanningMode::Worker;
+          opt.cost = o->cost;
+          opt.seed = o->seed;
+          opt.max_time = o->max_time;
+          opt.cycles = o->cycles;
+          opt.random_rate = o->rate;
+          opt.failure_probability = o->failures;
+          opt.randomize_initial = o->random_initial;
+          opt.scripted_operator = !o->no_operator;
+          if (o->change == "relocate") opt.random_change = world::Intervention::Kind::Relocate;
+          if (o->change == "add") opt.random_change = world::Intervention::Kind::Add;
+          if (o->change == "remove") opt.random_change = world::Intervention::Kind::Remove;
+          opt.log_path = o->log;
+          opt.tree_dir = o->trees;
+          if (!o->quiet)
+            opt.timeline = [](const std::string& line) {
+              std::fputs(line.c_str(), stdout);
+              std::fputc('\n', stdout);
+              std::fflush(stdout);
+            };
+          opt.interrupt = &g_signal;
+          lo.speed = o->speed;
+          lo.paused = o->paused;
+          live = std::make_unique<serve::LiveEpisode>(scenario, lo);
+          handler = live.get();
+        }
+        std::printf("rtamp serve: http://%s:%u/\n", o->host.find(':') != std::string::npos ? ("[" + o->host + "]").c_str()
+                                                                                          : o->host.c_str(),
+                    static_cast<unsigned>(server.port()));
+        std::fflush(stdout);
+        if (!server.has_page())
+          std::fprintf(stderr,
+                       "rtamp serve: no page in '%s' (index.html missing): build the web bundle or pass --web-root; "
+                       "the API (/api/hello) and the WebSocket (/ws) work\n",
+                       so.web_root.c_str());
+        std::signal(SIGINT, on_serve_signal);
+        std::signal(SIGTERM, on_serve_signal);
+        server.start(*handler);
+        int code = 0;
+        if (live) {
+          live->start();
+          while (!live->ended() && g_signal.load() == 0) std::this_thread::sleep_for(std::chrono::milliseconds(20));
+          if (g_signal.load() != 0) live->stop();
+          const exec::EpisodeMetrics m = live->wait();
+          if (!o->quiet) {
+            const std::string completion = m.completion_time ? format_number(*m.completion_time) + " s" : "none";
+            std::printf("\n%s: %s\n  completion %s (world time), %d replans, %d interventions (%d applied, %d refused)\n",
+                        m.success ? "SUCCESS" : "FAILURE", escape_text(m.reason).c_str(), completion.c_str(),
+                        m.replans, m.interventions, m.interventions_applied, m.interventions_refused);
+            std::fflush(stdout);
+          }
+          code = m.end == exec::EndReason::Interrupted ? (g_signal.load() == SIGTERM ? 143 : 130) : (m.success ? 0 : 1);
+          const serve::InterventionStats st = live->stats();
+          if (!st.latency_ms.empty()) {
+            std::vector<double> v = st.latency_ms;
+            std::sort(v.begin(), v.end());
+            std::fprintf(stderr, "rtamp serve: %zu interventions from pages; receipt to applied: median %.3f ms, max %.3f ms\n",
+                         v.size(), v[v.size() / 2], v.back());
+          }
+        } else {
+          replay->start();
+          while (!(o->exit_at_end && replay->ended()) && g_signal.load() == 0)
+            std::this_thread::sleep_for(std::chrono::milliseconds(20));
+          replay->stop();
+        }
+        if (live && !o->exit_at_end)
+          while (g_signal.load() == 0) std::this_thread::sleep_for(std::chrono::milliseconds(50));
+        server.stop();
+        std::signal(SIGINT, SIG_DFL);
+        std::signal(SIGTERM, SIG_DFL);
+        if (!live) return g_signal.load() == SIGTERM ? 143 : g_signal.load() ? 130 : 0;
+        return code;
+      };
+    }};
+
+}  // namespace

@@ -1,0 +1,83 @@
+// The hub of `rtamp serve` (docs/serve.md): what every page sees, shared between
+// the episode's thread and the server's connections — the episode's log records
+// so far (hello's `history`), the latest tree, frame and playback state — and
+// the broadcast of every new message to every connected client.
+//
+// Invariants: a client that join()s gets `hello` (built from the state at that
+// instant), then the latest frame, before any later message, and never a
+// message twice or out of order: join, leave and every broadcast hold one lock.
+// Clients only queue what they are sent (Client::send never blocks), so a slow
+// page never holds up the episode. Messages are JSON text, built once, shared.
+#pragma once
+
+#include <atomic>
+#include <memory>
+#include <mutex>
+#include <string>
+#include <vector>
+
+namespace rtamp::serve {
+
+// One connected page. send() queues and returns at once (called under the hub's lock).
+class Client {
+ public:
+  virtual ~Client() = default;
+  // `frame`: a frame message (a newer frame may replace an unsent one).
+  virtual void send(std::shared_ptr<const std::string> message, bool frame) = 0;
+};
+
+struct PlaybackState {
+  double speed = 1;
+  bool paused = false;
+  double t = 0;
+  bool ended = false;
+};
+
+class Hub {
+ public:
+  // `hello_fields`: the fixed members of hello as a JSON object text
+  // ({"mode":..,"world":..,"scene":..,"task":..,"automaton":..}).
+  explicit Hub(std::string hello_fields);
+
+  void join(const std::shared_ptr<Client>& c);
+  void leave(const Client* c);
+  // Forgets every client (the server is stopping).
+  void clear();
+  std::size_t clients() const { return count_.load(); }
+
+  // hello for a new client (also GET /api/hello).
+  std::string hello() const;
+
+  // One record of the episode log (one-line JSON object): kept and broadcast as `log`.
+  void log_record(const std::string& record);
+  // A `tree` message (kept: hello's `tree` is its body), a `status` message.
+  void tree(const std::string& message);
+  void status(const std::string& message);
+  // A `frame` message (kept: sent to a client after its hello).
+  void frame(const std::string& message);
+  // The playback state: kept (hello's speed, paused, t) and broadcast as `state`.
+  void state(const PlaybackState& s);
+  PlaybackState state() const;
+  // The current time (hello's `t`), not broadcast.
+  void time(double t);
+  // Replay seek: replaces the history, tree and frame, and sends every client a new hello.
+  void reset(std::vector<std::string> history, std::string tree, std::string frame, const PlaybackState& s);
+  // Number of log records kept.
+  std::size_t history_size() const;
+
+ private:
+  std::string hello_locked() const;
+  void broadcast_locked(const std::shared_ptr<const std::string>& m, bool frame);
+
+  mutable std::mutex mu_;
+  std::string fields_;
+  std::vector<std::string> history_;
+  std::string tree_, frame_;  // latest tree message, latest frame message ("" = none)
+  PlaybackState state_;
+  std::vector<std::shared_ptr<Client>> clients_;
+  std::atomic<std::size_t> count_{0};
+};
+
+std::string state_message(const PlaybackState& s);
+
+}  // namespace rtamp::serve

@@ -1,0 +1,262 @@
+#include "rtamp/serve/live_episode.hpp"
+
+#include <algorithm>
+#include <cstdio>
+
+#include <nlohmann/json.hpp>
+
+#include "rtamp/episode/sim_world.hpp"
+#include "rtamp/serve/frame.hpp"
+#include "rtamp/serve/paced_world.hpp"
+#include "rtamp/serve/scene_message.hpp"
+#include "rtamp/serve/tree_message.hpp"
+#include "rtamp/util/error.hpp"
+
+namespace rtamp::serve {
+
+namespace {
+using Clock = std::chrono::steady_clock;
+constexpr auto kFrameInterval = std::chrono::microseconds(1000000 / 30);
+bool is_frame_record(const std::string& r) { return r.rfind("{\"ev\":\"frame\"", 0) == 0; }
+}  // namespace
+
+// The loop's events a page sees besides the log: the tree, statuses, perception (for frames), the end.
+class LiveEpisode::Observer final : public exec::EpisodeObserver {
+ public:
+  explicit Observer(LiveEpisode& e) : e_(e) {}
+
+  void on_perceived(double, const world::Placement& seen, const world::Placement&) override {
+    e_.frames_->perceived(seen);
+    e_.check_->note(seen);
+  }
+  void on_tree_change(double t, const exec::ReconfigurationReport&, const exec::PlanTree& tree, bool) override {
+    send_tree(t, tree.tree());
+  }
+  void on_tick(double t, bt::Status, const std::string&) override {
+    if (e_.hub_->clients() == 0) return;
+    const bt::Tree& tree = e_.episode_->loop().tree().tree();
+    std::string s = status_string(tree);
+    if (s.size() != nodes_) {
+      send_tree(t, tree);
+    } else if (s != last_) {
+      e_.hub_->status(status_message(t, s));
+      last_ = std::move(s);
+    }
+  }
+  void on_end(double, const exec::EpisodeMetrics&, const world::Placement&) override {
+    e_.ended_.store(true);
+    e_.emit_frame(true);
+    e_.publish_state();
+  }
+
+ private:
+  void send_tree(double t, const bt::Tree& tree) {
+    last_ = status_string(tree);
+    nodes_ = last_.size();
+    e_.hub_->tree(tree_message(t, tree));
+  }
+
+  LiveEpisode& e_;
+  std::string last_;
+  std::size_t nodes_ = 0;
+};
+
+LiveEpisode::LiveEpisode(const world::Scenario& scenario, LiveOptions options)
+    : options_(std::move(options)), playback_(options_.speed, options_.paused) {
+  episode_ = std::make_unique<episode::Episode>(
+      scenario, options_.episode, [this](exec::World& inner) -> std::unique_ptr<exec::World> {
+        return std::make_unique<PacedWorld>(inner, playback_, [this] { service(); }, [this] { after_slice(); });
+      });
+  if (episode::SimWorld* sw = episode_->sim_world())
+    frames_ = std::make_unique<SimFrames>(*sw);
+  else
+    frames_ = std::make_unique<SymbolicFrames>(*episode_->symbolic_world(), episode_->scenario());
+  check_ = std::make_unique<InterventionCheck>(episode_->scenario());
+  hub_ = std::make_unique<Hub>(hello_fields(episode_->scenario(), episode_->loop().progress().automaton(), "live",
+                                            episode::to_string(options_.episode.world)));
+  log_ = episode_->log();
+  if (!log_) {
+    own_log_ = std::make_unique<exec::EpisodeLog>();
+    log_ = own_log_.get();
+    episode_->loop().add_observer(*log_);
+  }
+  log_->add_sink([this](const std::string& record) {
+    if (!is_frame_record(record)) hub_->log_record(record);
+  });
+  observer_ = std::make_unique<Observer>(*this);
+  episode_->loop().add_observer(*observer_);
+  PlaybackState s;
+  s.speed = options_.speed;
+  s.paused = options_.paused;
+  hub_->state(s);
+}
+
+LiveEpisode::~LiveEpisode() {
+  stop();
+  if (thread_.joinable()) thread_.join();
+}
+
+void LiveEpisode::start() {
+  thread_ = std::thread([this] {
+    emit_frame(true);
+    metrics_ = episode_->run();
+    ended_.store(true);
+    // Requests that arrived after the last step.
+    std::deque<Pending> left;
+    {
+      std::lock_guard lock(mu_);
+      left.swap(pending_);
+    }
+    for (auto& p : left) p.reply(reply_message(p.request.id, false, "the episode has ended"));
+  });
+}
+
+void LiveEpisode::stop() {
+  episode_->loop().stop();
+  playback_.stop();
+}
+
+exec::EpisodeMetrics LiveEpisode::wait() {
+  if (thread_.joinable()) thread_.join();
+  return metrics_;
+}
+
+InterventionStats LiveEpisode::stats() const {
+  std::lock_guard lock(mu_);
+  return stats_;
+}
+
+void LiveEpisode::publish_state() {
+  PlaybackState s;
+  s.speed = playback_.speed();
+  s.paused = playback_.paused();
+  s.t = episode_->world().time();
+  s.ended = ended_.load();
+  hub_->state(s);
+}
+
+void LiveEpisode::handle(const Request& r, Reply reply) {
+  if (r.type == Request::Type::Invalid) {
+    reply(reply_message(r.id, false, r.error));
+    return;
+  }
+  if (r.type == Request::Type::Control) {
+    const std::string& a = r.action;
+    if (a == "seek") {
+      reply(reply_message(r.id, false, "seek is for replays (rtamp serve --replay LOG)"));
+      return;
+    }
+    if (a == "speed" && !(*r.value >= 0 && *r.value <= 1000)) {
+      reply(reply_message(r.id, false, "speed must be in [0, 1000] (0: as fast as possible)"));
+      return;
+    }
+    if (a == "pause") playback_.pause();
+    if (a == "resume") playback_.resume();
+    if (a == "step") {
+      if (!playback_.paused()) {
+        reply(reply_message(r.id, false, "step needs the episode paused"));
+        return;
+      }
+      playback_.step();
+    }
+    if (a == "speed") playback_.set_speed(*r.value);
+    reply(reply_message(r.id, true));
+    PlaybackState s = hub_->state();
+    s.speed = playback_.speed();
+    s.paused = playback_.paused();
+    s.ended = ended_.load();
+    hub_->state(s);
+    return;
+  }
+  // Intervene: queued for the loop's thread.
+  {
+    std::lock_guard lock(mu_);
+    if (ended_.load()) {
+      reply(reply_message(r.id, false, "the episode has ended"));
+      return;
+    }
+    if (pending_.size() >= options_.max_pending) {
+      reply(reply_message(r.id, false, "too many interventions waiting (" + std::to_string(pending_.size()) + ")"));
+      return;
+    }
+    pending_.push_back(Pending{r, std::move(reply), Clock::now()});
+  }
+  playback_.wake();
+}
+
+world::Placement LiveEpisode::present() const {
+  if (const exec::SymbolicWorld* w = episode_->symbolic_world()) return w->truth();
+  // MuJoCo: the bodies in the scene (the check needs names and kinds, not locations).
+  world::Placement p;
+  const sim::Simulation& sim = episode_->sim_world()->session().sim();
+  for (const sim::Thing& t : sim.things())
+    if (t.present && !t.name.empty()) p.set(t.name, "", t.cls, t.container);
+  return p;
+}
+
+exec::WorldEvent LiveEpisode::apply(const world::Intervention& iv) {
+  if (exec::SymbolicWorld* w = episode_->symbolic_world()) return w->apply(iv);
+  return episode_->sim_world()->apply(iv);
+}
+
+void LiveEpisode::service() {
+  std::deque<Pending> todo;
+  {
+    std::lock_guard lock(mu_);
+    todo.swap(pending_);
+  }
+  if (todo.empty()) return;
+  bool changed = false;
+  for (Pending& p : todo) {
+    world::Intervention iv = p.request.intervention;
+    iv.time = episode_->world().time();
+    const world::Placement now = present();
+    check_->note(now);
+    using K = world::Intervention::Kind;
+    if ((iv.kind == K::Add || iv.kind == K::AddContainer) && iv.subject.empty())
+      iv.subject = check_->fresh_name(iv.kind == K::AddContainer);
+    if ((iv.kind == K::Add || iv.kind == K::AddContainer) && iv.cls.empty())
+      iv.cls = iv.kind == K::AddContainer ? "tray" : "block";
+    std::string error = check_->check(iv, now);
+    bool ok = error.empty();
+    std::string extra;
+    if (ok) {
+      const exec::WorldEvent e = apply(iv);
+      ok = e.applied;
+      changed = changed || ok;
+      if (!ok) error = std::string("intervention '") + kind_name(iv.kind) + "' refused by the world: " + e.detail;
+      extra = "\"subject\":" + nlohmann::json(iv.subject).dump() + ",\"detail\":" +
+              nlohmann::json(e.detail).dump(-1, ' ', false, nlohmann::json::error_handler_t::replace) + ",";
+    }
+    const double ms = std::chrono::duration<double, std::milli>(Clock::now() - p.received).count();
+    {
+      std::lock_guard lock(mu_);
+      stats_.latency_ms.push_back(ms);
+    }
+    char buf[64];
+    std::snprintf(buf, sizeof buf, "\"server_ms\":%.3f", ms);
+    p.reply(reply_message(p.request.id, ok, error, extra + buf));
+  }
+  if (changed) emit_frame(true);
+}
+
+void LiveEpisode::after_slice() {
+  const double t = episode_->world().time();
+  if (options_.frame_record_period > 0 && t >= next_frame_record_) {
+    log_->record(t, frame_record(frames_->frame()));
+    next_frame_record_ = t + options_.frame_record_period;
+  }
+  emit_frame(false);
+}
+
+void LiveEpisode::emit_frame(bool force) {
+  if (hub_->clients() == 0 && !force) return;
+  const auto now = Clock::now();
+  if (!force && now - last_frame_ < kFrameInterval) return;
+  last_frame_ = now;
+  const Frame f = frames_->frame();
+  hub_->time(f.t);
+  hub_->frame(frame_message(f));
+}
+
+}  // namespace rtamp::serve

@@ -1,0 +1,110 @@
+// A live served episode (`rtamp serve SCENARIO`, docs/serve.md): the reactive
+// loop (exec::ReactiveLoop, the paper's Algorithm 1) on the MuJoCo world or
+// the symbolic one, run on its own thread, paced to wall time x speed
+// (PacedWorld, Playback), streamed to pages through the Hub:
+//  - every record of the episode's JSON Lines log, exactly as the log file
+//    holds it (exec::EpisodeLog's sink), as `log` messages;
+//  - the behavior tree after each change and node statuses after ticks that
+//    changed them (`tree`, `status`);
+//  - frames (frame_source.hpp) at most 30 per wall second, and one after each
+//    applied intervention; the log also gets a `frame` record every
+//    `frame_record_period` s of world time (replays move things with them);
+//  - playback state after each control.
+// Pages' interventions (request.hpp) are queued and applied on the loop's
+// thread between slices of world time, through the world — SimWorld::apply
+// (the MuJoCo operator) or SymbolicWorld::apply — after InterventionCheck: so
+// they enter the log as `intervention` records exactly like scripted ones, and
+// the loop reacts to them as to any person's. Each gets one reply: refused
+// (the check's or the world's reason), or applied, with the server-side
+// latency from receipt to applied ("server_ms").
+//
+// Invariants: nothing a page sends can throw on the loop's thread or block it
+// (replies and broadcasts only queue); the log is complete whatever ends the
+// episode (stop(), SIGINT/SIGTERM through options.interrupt, an error).
+#pragma once
+
+#include <atomic>
+#include <chrono>
+#include <deque>
+#include <memory>
+#include <mutex>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "rtamp/episode/episode.hpp"
+#include "rtamp/serve/frame_source.hpp"
+#include "rtamp/serve/hub.hpp"
+#include "rtamp/serve/intervention_check.hpp"
+#include "rtamp/serve/playback.hpp"
+#include "rtamp/serve/request_handler.hpp"
+
+namespace rtamp::serve {
+
+struct LiveOptions {
+  episode::EpisodeOptions episode;  // the episode (log_path: the --log file, may be empty)
+  double speed = 1;                 // world seconds per wall second; 0: as fast as possible
+  bool paused = false;              // start paused (the first plan is made)
+  double frame_record_period = 0.5; // s of world time between `frame` log records (0: none)
+  std::size_t max_pending = 64;     // queued interventions; more are refused
+};
+
+// Server-side timing of the pages' interventions (docs/benchmarks.md).
+struct InterventionStats {
+  std::vector<double> latency_ms;  // receipt -> applied (or refused) in the world, each
+};
+
+class LiveEpisode final : public RequestHandler {
+ public:
+  // Builds the world, loop and log (rtamp::Error before anything runs on bad input).
+  LiveEpisode(const world::Scenario& scenario, LiveOptions options);
+  ~LiveEpisode() override;
+
+  Hub& hub() override { return *hub_; }
+  void handle(const Request& request, Reply reply) override;
+
+  void start();                // the loop's thread
+  void stop();                 // ends the episode at its next step (Interrupted)
+  exec::EpisodeMetrics wait(); // joins the loop's thread; the end metrics
+  bool ended() const { return ended_.load(); }
+  InterventionStats stats() const;
+
+ private:
+  struct Pending {
+    Request request;
+    Reply reply;
+    std::chrono::steady_clock::time_point received;
+  };
+  class Observer;
+
+  void service();           // loop thread: apply queued interventions
+  void after_slice();       // loop thread: frames
+  void emit_frame(bool force);
+  world::Placement present() const;  // the things present now, exactly
+  exec::WorldEvent apply(const world::Intervention& iv);
+  void publish_state();
+
+  // Declared in the order things may refer to each other: the loop (in
+  // episode_) goes first on destruction, its observers and world wrapper after.
+  LiveOptions options_;
+  Playback playback_;
+  std::unique_ptr<Hub> hub_;
+  std::unique_ptr<InterventionCheck> check_;
+  std::unique_ptr<FrameSource> frames_;
+  std::unique_ptr<exec::EpisodeLog> own_log_;  // when there is no --log file
+  std::unique_ptr<Observer> observer_;
+  std::unique_ptr<episode::Episode> episode_;
+  exec::EpisodeLog* log_ = nullptr;
+  std::thread thread_;
+  exec::EpisodeMetrics metrics_;
+  std::atomic<bool> ended_{false};
+
+  mutable std::mutex mu_;
+  std::deque<Pending> pending_;
+  InterventionStats stats_;
+
+  std::chrono::steady_clock::time_point last_frame_{};
+  double next_frame_record_ = 0;
+};
+
+}  // namespace rtamp::serve

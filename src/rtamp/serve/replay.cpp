@@ -1,0 +1,275 @@
+#include "rtamp/serve/replay.hpp"
+
+#include <chrono>
+#include <cmath>
+#include <fstream>
+
+#include <nlohmann/json.hpp>
+
+#include "rtamp/automata/translate.hpp"
+#include "rtamp/ltl/parser.hpp"
+#include "rtamp/serve/frame.hpp"
+#include "rtamp/serve/scene_message.hpp"
+#include "rtamp/util/error.hpp"
+#include "rtamp/world/geometry.hpp"
+
+namespace rtamp::serve {
+
+using nlohmann::json;
+
+namespace {
+
+// A placement record's {"name": "location"} as a Placement (classes from the scenario, else the default).
+world::Placement placement_of(const json& j, const world::Scenario& s, const world::Placement& before) {
+  world::Placement p;
+  for (const auto& [name, loc] : j.items()) {
+    if (!loc.is_string()) continue;
+    std::string cls = "block";
+    bool container = false;
+    if (const auto* c = s.find_container(name)) {
+      cls = c->cls;
+      container = true;
+    } else if (const auto* o = s.find_object(name)) {
+      cls = o->cls;
+    } else if (auto it = before.things.find(name); it != before.things.end()) {
+      cls = it->second.cls;
+      container = it->second.container;
+    }
+    p.set(name, loc.get<std::string>(), cls, container);
+  }
+  return p;
+}
+
+}  // namespace
+
+Replay::Replay(const world::Scenario& scenario, const std::string& path, ReplayOptions options)
+    : scenario_(scenario), layout_(scenario), playback_(options.speed, options.paused) {
+  std::ifstream in(path);
+  if (!in) throw Error("--replay: cannot read '" + path + "'");
+  std::string line;
+  int n = 0;
+  world::Placement last = world::initial_placement(scenario);
+  std::string world_name = "symbolic";
+  // Things added by interventions: their kind (an add-container makes a container).
+  std::map<std::string, bool> added;
+  while (std::getline(in, line)) {
+    ++n;
+    if (line.empty()) continue;
+    const std::string where = "--replay: " + path + ":" + std::to_string(n) + ": ";
+    json j;
+    try {
+      j = json::parse(line);
+    } catch (const json::exception&) {
+      throw Error(where + "not a JSON object (is this an episode log?)");
+    }
+    if (!j.is_object() || !j.contains("ev") || !j["ev"].is_string() || !j.contains("t") || !j["t"].is_number() ||
+        !std::isfinite(j["t"].get<double>()))
+      throw Error(where + "not an episode log record (an object with \"ev\" and a number \"t\")");
+    Record r;
+    r.t = j["t"].get<double>();
+    if (!records_.empty() && r.t < records_.back().t - 1e-9)
+      throw Error(where + "records out of time order (t=" + std::to_string(r.t) + " after t=" +
+                  std::to_string(records_.back().t) + ")");
+    r.text = j.dump();
+    const std::string ev = j["ev"].get<std::string>();
+    r.frame = ev == "frame";
+    has_frames_ = has_frames_ || r.frame;
+    if (ev == "episode") {
+      world_name = j.value("world", "symbolic");
+      const std::string sc = j.value("scenario", "");
+      if (!sc.empty() && sc != scenario.name)
+        throw Error(where + "the log is of scenario '" + sc + "', not '" + scenario.name + "'");
+    }
+    if (ev == "intervention" && j.value("applied", false) && j.value("kind", "") == "add-container")
+      added[j.value("subject", "")] = true;
+    const char* key = ev == "perceived" || ev == "end" ? "placement" : ev == "run" ? "state" : nullptr;
+    if (key && j.contains(key) && j[key].is_object()) {
+      world::Placement p = placement_of(j[key], scenario, last);
+      for (auto& [name, t] : p.things)
+        if (added.count(name)) {
+          t.container = true;
+          t.cls = "tray";
+        }
+      r.placement = p;
+      last = std::move(p);
+    }
+    records_.push_back(std::move(r));
+  }
+  if (records_.empty()) throw Error("--replay: " + path + ": the log is empty");
+  duration_ = records_.back().t;
+  home_ = {scenario.robot.base[0], scenario.robot.base[1], scenario.robot.base[2] + 0.5};
+  const automata::Automaton ba = automata::translate(ltl::parse(scenario.task, scenario.task_where));
+  hub_ = std::make_unique<Hub>(hello_fields(scenario, ba, "replay", world_name, duration_));
+  PlaybackState s;
+  s.speed = options.speed;
+  s.paused = options.paused;
+  hub_->reset({}, "", frame_at(0), s);
+}
+
+Replay::~Replay() {
+  stop();
+}
+
+std::size_t Replay::first_after(double t) const {
+  std::size_t i = 0;
+  while (i < records_.size() && records_[i].t <= t + 1e-9) ++i;
+  return i;
+}
+
+std::string Replay::frame_at(double t) {
+  const std::size_t end = first_after(t);
+  if (has_frames_) {
+    for (std::size_t i = end; i-- > 0;)
+      if (records_[i].frame) {
+        json j = json::parse(frame_message_from_record(records_[i].text));
+        j["t"] = t;
+        // A later placement (e.g. the end record's) gives the things' locations.
+        for (std::size_t k = end; k-- > i + 1;)
+          if (records_[k].placement) {
+            for (auto& th : j["things"])
+              if (const std::string* loc = records_[k].placement->location_of(th.value("name", "")))
+                th["at"] = *loc;
+            break;
+          }
+        return j.dump();
+      }
+  }
+  world::Placement p = world::initial_placement(scenario_);
+  for (std::size_t i = end; i-- > 0;)
+    if (records_[i].placement) {
+      p = *records_[i].placement;
+      break;
+    }
+  layout_ = ThingLayout(scenario_);
+  layout_.update(p, home_);
+  Frame f;
+  f.t = t;
+  f.tool = home_;
+  for (const auto& [name, th] : p.things) {
+    if (th.location == "hand") f.held = name;
+    Frame::Thing ft;
+    ft.name = name;
+    ft.cls = th.cls;
+    ft.container = th.container;
+    ft.size = layout_.size(name, th.cls, th.container);
+    ft.pos = layout_.position(name);
+    ft.at = th.location;
+    f.things.push_back(std::move(ft));
+  }
+  return frame_message(f);
+}
+
+void Replay::publish(double t) {
+  PlaybackState s;
+  s.speed = playback_.speed();
+  s.paused = playback_.paused();
+  s.t = t;
+  s.ended = ended_.load();
+  hub_->state(s);
+}
+
+void Replay::seek_to(double t) {
+  t = std::clamp(t, 0.0, duration_);
+  t_ = t;
+  next_ = first_after(t);
+  std::vector<std::string> history;
+  for (std::size_t i = 0; i < next_; ++i)
+    if (!records_[i].frame) history.push_back(records_[i].text);
+  ended_.store(next_ >= records_.size());
+  PlaybackState s;
+  s.speed = playback_.speed();
+  s.paused = playback_.paused();
+  s.t = t;
+  s.ended = ended_.load();
+  hub_->reset(std::move(history), "", frame_at(t), s);
+}
+
+void Replay::run() {
+  auto service = [this] {
+    const double s = seek_.exchange(-1);
+    if (s >= 0) seek_to(s);
+  };
+  auto last_frame = std::chrono::steady_clock::now();
+  while (!playback_.stopped()) {
+    service();
+    if (next_ >= records_.size()) {  // at the end: wait for a seek or stop
+      if (!ended_.exchange(true)) publish(t_);
+      std::this_thread::sleep_for(std::chrono::milliseconds(20));
+      continue;
+    }
+    const bool step = playback_.hold(service);
+    if (playback_.stopped()) break;
+    service();
+    if (next_ >= records_.size()) continue;
+    const double speed = playback_.speed();
+    double target = (step || speed <= 0) ? records_[next_].t : std::min(records_[next_].t, t_ + speed / 30);
+    if (!step) playback_.pace(target, service);
+    if (seek_.load() >= 0) continue;
+    t_ = std::max(t_, target);
+    bool sent = false;
+    while (next_ < records_.size() && records_[next_].t <= t_ + 1e-9) {
+      if (!records_[next_].frame) hub_->log_record(records_[next_].text);
+      ++next_;
+      sent = true;
+    }
+    const auto now = std::chrono::steady_clock::now();
+    if (sent || now - last_frame > std::chrono::milliseconds(33)) {
+      hub_->time(t_);
+      hub_->frame(frame_at(t_));
+      last_frame = now;
+    }
+    if (step) publish(t_);
+  }
+}
+
+void Replay::start() {
+  thread_ = std::thread([this] { run(); });
+}
+
+void Replay::stop() {
+  playback_.stop();
+  if (thread_.joinable()) thread_.join();
+}
+
+void Replay::handle(const Request& r, Reply reply) {
+  if (r.type == Request::Type::Invalid) {
+    reply(reply_message(r.id, false, r.error));
+    return;
+  }
+  if (r.type == Request::Type::Intervene) {
+    reply(reply_message(r.id, false, "this is a replay: interventions change nothing (run `rtamp serve` live)"));
+    return;
+  }
+  const std::string& a = r.action;
+  if (a == "speed" && !(*r.value >= 0 && *r.value <= 1000)) {
+    reply(reply_message(r.id, false, "speed must be in [0, 1000] (0: as fast as possible)"));
+    return;
+  }
+  if (a == "seek") {
+    if (!(*r.value >= 0)) {
+      reply(reply_message(r.id, false, "seek needs a time >= 0"));
+      return;
+    }
+    seek_.store(*r.value);
+    playback_.wake();
+  }
+  if (a == "pause") playback_.pause();
+  if (a == "resume") playback_.resume();
+  if (a == "step") {
+    if (!playback_.paused()) {
+      reply(reply_message(r.id, false, "step needs the replay paused"));
+      return;
+    }
+    playback_.step();
+  }
+  if (a == "speed") playback_.set_speed(*r.value);
+  reply(reply_message(r.id, true));
+  if (a != "seek") {
+    PlaybackState s = hub_->state();
+    s.speed = playback_.speed();
+    s.paused = playback_.paused();
+    hub_->state(s);
+  }
+}
+
+}  // namespace rtamp::serve

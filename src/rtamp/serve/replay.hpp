@@ -1,0 +1,83 @@
+// `rtamp serve --replay LOG` (docs/serve.md "Replay"): a finished episode's
+// JSON Lines log (from `rtamp run --log` or `rtamp serve --log`) served to
+// pages as if it ran again — its records in time order as `log` messages,
+// paced to wall time x speed, with pause, resume, step (to the next record)
+// and seek. Frames come from the log's `frame` records (a served episode
+// writes them); a log without them has things drawn at their logged
+// locations (the latest `perceived` placement, else `run` state; laid out by
+// ThingLayout) and the arm parked at home.
+//
+// seek(t) re-sends every page a hello whose history holds the records with
+// time <= t, then the frame at t. The end of the log is the episode's end
+// state: the last frame shows the placement of the `end` record.
+//
+// Invariants: the log is read and checked whole by the constructor
+// (rtamp::Error "--replay: FILE:LINE: WHY" on a line that is not a JSON
+// object with "ev" and a finite "t", or records out of time order); the
+// replay never changes; interventions are refused (a replay cannot be changed).
+#pragma once
+
+#include <atomic>
+#include <memory>
+#include <optional>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "rtamp/serve/hub.hpp"
+#include "rtamp/serve/playback.hpp"
+#include "rtamp/serve/request_handler.hpp"
+#include "rtamp/serve/thing_layout.hpp"
+#include "rtamp/world/scenario.hpp"
+
+namespace rtamp::serve {
+
+struct ReplayOptions {
+  double speed = 1;
+  bool paused = false;
+};
+
+class Replay final : public RequestHandler {
+ public:
+  Replay(const world::Scenario& scenario, const std::string& log_path, ReplayOptions options = {});
+  ~Replay() override;
+
+  Hub& hub() override { return *hub_; }
+  void handle(const Request& request, Reply reply) override;
+
+  void start();
+  void stop();
+  bool ended() const { return ended_.load(); }
+  double duration() const { return duration_; }
+  // The frame message at time t (what a page is sent after seeking there).
+  std::string frame_at(double t);
+
+ private:
+  struct Record {
+    double t = 0;
+    std::string text;
+    bool frame = false;
+    std::optional<world::Placement> placement;  // perceived / run / end: where things were
+  };
+
+  void run();
+  void seek_to(double t);
+  void publish(double t);
+  std::size_t first_after(double t) const;  // index of the first record with time > t
+
+  world::Scenario scenario_;
+  std::vector<Record> records_;
+  double duration_ = 0;
+  bool has_frames_ = false;
+  world::Vec3 home_{0, 0, 0};
+  ThingLayout layout_;
+  Playback playback_;
+  std::unique_ptr<Hub> hub_;
+  std::thread thread_;
+  std::atomic<bool> ended_{false};
+  std::atomic<double> seek_{-1};
+  double t_ = 0;
+  std::size_t next_ = 0;
+};
+
+}  // namespace rtamp::serve

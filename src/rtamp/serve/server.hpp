@@ -1,0 +1,52 @@
+// The HTTP and WebSocket server of `rtamp serve` (docs/serve.md), on
+// Boost.Beast and Boost.Asio, one I/O thread:
+//  - GET / and GET /<path>: the page's files under `web_root` (index.html for
+//    a directory; no path outside it); without a page there, a plain-text 404
+//    that says so (the API and the WebSocket still work);
+//  - GET /api/hello: the hello message as JSON;
+//  - GET /ws with an upgrade: a WebSocket client (client_session.hpp);
+//  - any other method: 405; any other path: 404.
+// It listens on `host` (127.0.0.1 by default: loopback only) and `port` (0:
+// any free port; port() tells which). Connections never touch the episode:
+// they read the Hub and hand requests to the RequestHandler.
+#pragma once
+
+#include <memory>
+#include <string>
+
+#include "rtamp/serve/request_handler.hpp"
+
+namespace rtamp::serve {
+
+struct ServerOptions {
+  std::string host = "127.0.0.1";
+  unsigned short port = 8080;
+  std::string web_root;  // the page's files ("" or missing: no page)
+};
+
+class Server {
+ public:
+  // Binds and listens (rtamp::Error "cannot listen on HOST:PORT: WHY"), before
+  // anything else starts; start() serves `handler`.
+  explicit Server(ServerOptions options);
+  Server(ServerOptions options, RequestHandler& handler) : Server(std::move(options)) { handler_ = &handler; }
+  ~Server();
+  Server(const Server&) = delete;
+  Server& operator=(const Server&) = delete;
+
+  unsigned short port() const;
+  std::string address() const;  // the address listened on
+  // Whether web_root holds the page (index.html).
+  bool has_page() const;
+  void start();  // the I/O thread (the handler given to the constructor)
+  void start(RequestHandler& handler);
+  void stop();   // closes every connection and joins the thread
+
+  struct Impl;
+
+ private:
+  std::unique_ptr<Impl> impl_;
+  RequestHandler* handler_ = nullptr;
+};
+
+}  // namespace rtamp::serve

@@ -1,0 +1,178 @@
+// Unit tests of serve's parts that need no network: request parsing
+// (request.hpp), the intervention check (intervention_check.hpp, against the
+// scenario validator's rules), the layout of things (thing_layout.hpp), and
+// the hub's ordering (hub.hpp).
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+
+#include "rtamp/serve/hub.hpp"
+#include "rtamp/serve/intervention_check.hpp"
+#include "rtamp/serve/request.hpp"
+#include "rtamp/serve/thing_layout.hpp"
+#include "rtamp/world/geometry.hpp"
+#include "rtamp/world/scenario_io.hpp"
+
+namespace rtamp::serve {
+namespace {
+
+using nlohmann::json;
+using K = world::Intervention::Kind;
+
+TEST(ServeRequest, ParsesInterventionsAndControls) {
+  Request r = parse_request(R"({"type":"intervene","id":7,"kind":"relocate","subject":"o1","location":"r2"})");
+  ASSERT_EQ(r.type, Request::Type::Intervene) << r.error;
+  EXPECT_EQ(r.id, "7");
+  EXPECT_EQ(r.intervention.kind, K::Relocate);
+  EXPECT_EQ(r.intervention.subject, "o1");
+  EXPECT_EQ(r.intervention.location, "r2");
+  r = parse_request(R"({"type":"intervene","id":"a","kind":"add","class":"block","position":[0.4,0.3,0]})");
+  ASSERT_EQ(r.type, Request::Type::Intervene) << r.error;
+  EXPECT_EQ(r.id, "\"a\"");
+  ASSERT_TRUE(r.intervention.position);
+  EXPECT_DOUBLE_EQ((*r.intervention.position)[0], 0.4);
+  r = parse_request(R"({"type":"control","id":1,"action":"speed","value":2.5})");
+  ASSERT_EQ(r.type, Request::Type::Control);
+  EXPECT_EQ(r.action, "speed");
+  EXPECT_DOUBLE_EQ(*r.value, 2.5);
+}
+
+TEST(ServeRequest, RefusesWhatIsNotARequest) {
+  struct Case {
+    const char* text;
+    const char* error;
+  };
+  for (const Case& c : std::vector<Case>{
+           {"{", "malformed JSON"},
+           {"[1]", "one JSON object"},
+           {R"({"id":1})", "needs a 'type'"},
+           {R"({"type":"dance"})", "unknown request type 'dance'"},
+           {R"({"type":"intervene","kind":"teleport"})", "unknown intervention kind 'teleport'"},
+           {R"({"type":"intervene","kind":"relocate","subject":5})", "'subject' must be a string"},
+           {R"({"type":"intervene","kind":"relocate","position":[1,2]})", "'position' must be [x, y, z]"},
+           {R"({"type":"intervene","kind":"relocate","position":[1,2,1e9]})", "within ±1000 m"},
+           {R"({"type":"control","action":"fly"})", "unknown control action 'fly'"},
+           {R"({"type":"control","action":"speed"})", "needs a 'value'"},
+           {R"({"type":"control","id":{},"action":"pause"})", "'id' must be"},
+       }) {
+    const Request r = parse_request(c.text);
+    EXPECT_EQ(r.type, Request::Type::Invalid) << c.text;
+    EXPECT_NE(r.error.find(c.error), std::string::npos) << c.text << " -> " << r.error;
+  }
+  // The id is echoed when it could be read.
+  EXPECT_EQ(parse_request(R"({"type":"dance","id":42})").id, "42");
+  const json reply = json::parse(reply_message("42", false, "bad \xff byte"));
+  EXPECT_EQ(reply["id"], 42);
+  EXPECT_EQ(reply["ok"], false);
+}
+
+TEST(ServeInterventionCheck, FollowsTheScenarioRules) {
+  const world::Scenario s = world::load_scenario("3-block-tray");
+  InterventionCheck check(s);
+  const world::Placement now = world::initial_placement(s);
+  auto iv = [](K k, std::string subject, std::string location, std::string cls = {}) {
+    world::Intervention v;
+    v.kind = k;
+    v.subject = std::move(subject);
+    v.location = std::move(location);
+    v.cls = std::move(cls);
+    return v;
+  };
+  auto refused = [&](const world::Intervention& v, const std::string& why) {
+    const std::string e = check.check(v, now);
+    EXPECT_NE(e.find(why), std::string::npos) << "'" << e << "' lacks '" << why << "'";
+  };
+  EXPECT_EQ(check.check(iv(K::Relocate, "o1", "r2"), now), "");
+  EXPECT_EQ(check.check(iv(K::Relocate, "o1", "r3"), now), "");  // into the tray
+  EXPECT_EQ(check.check(iv(K::Add, "o4", "r2", "block"), now), "");
+  EXPECT_EQ(check.check(iv(K::AddContainer, "t2", "r2", "tray"), now), "");
+  EXPECT_EQ(check.check(iv(K::Remove, "o2", ""), now), "");
+  EXPECT_EQ(check.check(iv(K::RemoveContainer, "r3", ""), now), "");
+  EXPECT_EQ(check.check(iv(K::TakeFromGripper, "", ""), now), "");
+  refused(iv(K::Relocate, "o7", "r2"), "unknown object or container 'o7'");
+  refused(iv(K::Relocate, "o1", "r5"), "unknown location 'r5'");
+  refused(iv(K::Relocate, "r3", "r3"), "containers do not nest");
+  refused(iv(K::Relocate, "o1", ""), "needs a target");
+  refused(iv(K::Add, "o1", "r2", "block"), "'o1' already exists");
+  refused(iv(K::Add, "r1", "r2", "block"), "'r1' already exists");
+  refused(iv(K::Add, "all_in_r2", "r2", "block"), "proposition");
+  refused(iv(K::Add, "none", "r2", "block"), "reserved word");
+  refused(iv(K::Add, "o9", "r2", "object"), "class 'object' is reserved");
+  refused(iv(K::Add, "o9", "r2", "tray"), "is the class of containers");
+  refused(iv(K::AddContainer, "t9", "r2", "block"), "is the class of objects");
+  refused(iv(K::AddContainer, "t9", "r3", "tray"), "containers do not nest");
+  refused(iv(K::Remove, "r3", ""), "it is a container");
+  refused(iv(K::RemoveContainer, "o1", ""), "it is an object");
+  refused(iv(K::Remove, "o1", "", "block"), "a class is only given");
+  refused(iv(K::TakeFromGripper, "o1", ""), "names no subject");
+  // Fresh names skip every name in use.
+  EXPECT_EQ(check.fresh_name(false), "o4");
+  EXPECT_EQ(check.fresh_name(true), "t1");
+  // A name that was an object stays one.
+  world::Placement later = now;
+  later.things.erase("o1");
+  check.note(now);
+  const std::string e = check.check(iv(K::AddContainer, "o1", "r2", "tray"), later);
+  EXPECT_NE(e.find("was an object earlier"), std::string::npos) << e;
+  EXPECT_EQ(check.check(iv(K::Add, "o1", "r2", "block"), later), "");  // an object again: fine
+}
+
+TEST(ServeThingLayout, ThingsInOneLocationGetDistinctSpots) {
+  const world::Scenario s = world::load_scenario("3-block-tray");
+  ThingLayout layout(s);
+  world::Placement p = world::initial_placement(s);
+  layout.update(p);
+  EXPECT_DOUBLE_EQ(layout.position("o1")[0], 0.32);  // unmoved: the scenario position
+  for (const char* n : {"o1", "o2", "o3"}) p.things[n].location = "r2";
+  layout.update(p);
+  const world::Region& r2 = *s.find_region("r2");
+  const world::Footprint f = world::footprint(r2);
+  for (const char* a : {"o1", "o2", "o3"}) {
+    EXPECT_TRUE(f.contains_point(layout.position(a)[0], layout.position(a)[1])) << a;
+    for (const char* b : {"o1", "o2", "o3"})
+      if (std::string(a) < b) {
+        const auto pa = layout.position(a), pb = layout.position(b);
+        EXPECT_TRUE(std::abs(pa[0] - pb[0]) >= 0.04 || std::abs(pa[1] - pb[1]) >= 0.04) << a << " " << b;
+      }
+  }
+  // Contents move with their container.
+  p.things["o1"].location = "r3";
+  layout.update(p);
+  const auto before = layout.position("o1");
+  p.things["r3"].location = "r2";
+  layout.update(p);
+  const auto tray = layout.position("r3");
+  EXPECT_TRUE(f.contains_point(tray[0], tray[1]));
+  EXPECT_NE(layout.position("o1")[1], before[1]);
+}
+
+class RecordingClient final : public Client {
+ public:
+  void send(std::shared_ptr<const std::string> m, bool) override { got.push_back(json::parse(*m)); }
+  std::vector<json> got;
+};
+
+TEST(ServeHub, ALateClientCatchesUpWithTheHistory) {
+  Hub hub(R"({"mode":"live","world":"symbolic"})");
+  hub.log_record(R"({"ev":"episode","t":0})");
+  hub.tree(R"({"type":"tree","t":0,"nodes":[]})");
+  hub.frame(R"({"type":"frame","t":0,"things":[]})");
+  auto c = std::make_shared<RecordingClient>();
+  hub.join(c);
+  hub.log_record(R"({"ev":"plan","t":0.5})");
+  ASSERT_EQ(c->got.size(), 3u);
+  EXPECT_EQ(c->got[0]["type"], "hello");
+  EXPECT_EQ(c->got[0]["protocol"], 1);
+  EXPECT_EQ(c->got[0]["history"].size(), 1u);
+  EXPECT_EQ(c->got[0]["tree"]["nodes"], json::array());
+  EXPECT_EQ(c->got[1]["type"], "frame");
+  EXPECT_EQ(c->got[2]["type"], "log");
+  EXPECT_EQ(c->got[2]["record"]["ev"], "plan");
+  hub.leave(c.get());
+  hub.log_record(R"({"ev":"end","t":1})");
+  EXPECT_EQ(c->got.size(), 3u);
+  EXPECT_EQ(hub.history_size(), 3u);
+}
+
+}  // namespace
+}  // namespace rtamp::serve

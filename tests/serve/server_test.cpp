@@ -1,0 +1,425 @@
+// Tests of `rtamp serve`'s server (serve/server.hpp, client_session.hpp,
+// live_episode.hpp, replay.hpp) with real WebSocket clients (Boost.Beast) on
+// the symbolic world, whose episodes are deterministic: hostile clients must
+// not change an episode's end metrics (the oracle is run_episode, what `rtamp
+// run --world symbolic` runs, with the same seed); an intervention sent over
+// the WebSocket is applied, logged like a scripted one and reacted to within
+// one step; a refused one says why; only loopback is bound by default; a
+// replay reaches the logged end state and seeks.
+#include <gtest/gtest.h>
+
+#include <atomic>
+#include <filesystem>
+#include <fstream>
+#include <set>
+#include <thread>
+
+#include <boost/asio/ip/udp.hpp>
+#include <boost/beast/http.hpp>
+
+#include "rtamp/episode/episode.hpp"
+#include "rtamp/serve/live_episode.hpp"
+#include "rtamp/serve/replay.hpp"
+#include "rtamp/serve/server.hpp"
+#include "rtamp/world/scenario_io.hpp"
+#include "ws_client.hpp"
+
+namespace rtamp::serve {
+namespace {
+
+using test::json;
+using test::WsClient;
+namespace fs = std::filesystem;
+
+fs::path temp_dir(const std::string& name) {
+  const fs::path d = fs::temp_directory_path() / ("rtamp_serve_test_" + std::to_string(::getpid()) + "_" + name);
+  fs::create_directories(d);
+  return d;
+}
+
+episode::EpisodeOptions symbolic_options(const std::string& log = {}) {
+  episode::EpisodeOptions o;
+  o.world = episode::WorldKind::Symbolic;
+  o.planning = exec::PlanningMode::Inline;
+  o.seed = 7;
+  o.max_time = 300;
+  o.log_path = log;
+  return o;
+}
+
+std::vector<json> read_log(const fs::path& p) {
+  std::vector<json> v;
+  std::ifstream in(p);
+  std::string line;
+  while (std::getline(in, line)) v.push_back(json::parse(line));
+  return v;
+}
+
+void expect_same_metrics(const exec::EpisodeMetrics& a, const exec::EpisodeMetrics& b) {
+  EXPECT_EQ(a.success, b.success);
+  EXPECT_EQ(a.end, b.end);
+  EXPECT_EQ(a.reason, b.reason);
+  ASSERT_EQ(a.completion_time.has_value(), b.completion_time.has_value());
+  if (a.completion_time) {
+    EXPECT_NEAR(*a.completion_time, *b.completion_time, 1e-9);
+  }
+  EXPECT_NEAR(a.motion_cost, b.motion_cost, 1e-9);
+  EXPECT_EQ(a.replans, b.replans);
+  EXPECT_EQ(a.tree_changes, b.tree_changes);
+  EXPECT_EQ(a.interventions, b.interventions);
+  EXPECT_EQ(a.interventions_applied, b.interventions_applied);
+  EXPECT_EQ(a.actions_succeeded, b.actions_succeeded);
+  EXPECT_EQ(a.actions_failed, b.actions_failed);
+  EXPECT_EQ(a.run_length, b.run_length);
+  EXPECT_NEAR(a.world_time, b.world_time, 1e-9);
+}
+
+struct Served {
+  LiveEpisode episode;
+  Server server;
+  Served(const world::Scenario& s, LiveOptions o, ServerOptions so = {})
+      : episode(s, std::move(o)), server([&so] {
+          so.port = 0;
+          return so;
+        }(), episode) {
+    server.start();
+    episode.start();
+  }
+  // The episode's thread ends before the server goes (replies may be on their way).
+  ~Served() {
+    episode.stop();
+    episode.wait();
+  }
+  unsigned short port() const { return server.port(); }
+};
+
+TEST(ServeServer, HelloDescribesTheSceneAndTheApiServesIt) {
+  const world::Scenario s = world::load_scenario("3-block-tray");
+  LiveOptions o;
+  o.episode = symbolic_options();
+  o.paused = true;
+  Served sv(s, o);
+  WsClient c(sv.port());
+  const auto hello = c.read();
+  ASSERT_TRUE(hello);
+  EXPECT_EQ((*hello)["type"], "hello");
+  EXPECT_EQ((*hello)["mode"], "live");
+  EXPECT_EQ((*hello)["world"], "symbolic");
+  EXPECT_EQ((*hello)["task"], s.task);
+  std::set<std::string> names;
+  for (const auto& t : (*hello)["scene"]["things"]) names.insert(t["name"].get<std::string>());
+  EXPECT_EQ(names, (std::set<std::string>{"o1", "o2", "o3", "r3"}));
+  EXPECT_EQ((*hello)["scene"]["regions"].size(), 2u);
+  EXPECT_EQ((*hello)["scene"]["robot"]["dh"]["d"].size(), 6u);
+  EXPECT_GE((*hello)["automaton"]["states"].size(), 1u);
+  // A frame follows the hello: every present thing, no joint angles in the symbolic world.
+  const auto frame = c.read_until([](const json& m) { return m["type"] == "frame"; });
+  ASSERT_TRUE(frame);
+  EXPECT_TRUE((*frame)["q"].is_null());
+  EXPECT_EQ((*frame)["things"].size(), 4u);
+
+  // GET /api/hello: the same hello.
+  namespace http = boost::beast::http;
+  test::net::io_context ioc;
+  test::beast::tcp_stream stream(ioc);
+  stream.connect(test::tcp::endpoint(test::net::ip::make_address("127.0.0.1"), sv.port()));
+  http::request<http::empty_body> req{http::verb::get, "/api/hello", 11};
+  req.set(http::field::host, "127.0.0.1");
+  http::write(stream, req);
+  test::beast::flat_buffer b;
+  http::response<http::string_body> res;
+  http::read(stream, b, res);
+  EXPECT_EQ(res.result(), http::status::ok);
+  const json api = json::parse(res.body());
+  EXPECT_EQ(api["type"], "hello");
+  EXPECT_EQ(api["scene"], (*hello)["scene"]);
+  // A path outside the page, and a POST, are refused.
+  http::request<http::empty_body> bad{http::verb::get, "/../../etc/passwd", 11};
+  bad.set(http::field::host, "127.0.0.1");
+  http::write(stream, bad);
+  http::response<http::string_body> res2;
+  http::read(stream, b, res2);
+  EXPECT_EQ(res2.result(), http::status::not_found);
+  http::request<http::string_body> post{http::verb::post, "/api/hello", 11};
+  post.set(http::field::host, "127.0.0.1");
+  post.prepare_payload();
+  http::write(stream, post);
+  http::response<http::string_body> res3;
+  http::read(stream, b, res3);
+  EXPECT_EQ(res3.result(), http::status::method_not_allowed);
+}
+
+TEST(ServeServer, OnlyLoopbackIsBoundByDefault) {
+  const world::Scenario s = world::load_scenario("3-block-tray");
+  LiveOptions o;
+  o.episode = symbolic_options();
+  o.paused = true;
+  Served sv(s, o);
+  EXPECT_EQ(sv.server.address(), "127.0.0.1");
+  // A non-loopback address of this machine (the source address of a route out, if there is one).
+  std::string other;
+  try {
+    test::net::io_context ioc;
+    test::net::ip::udp::socket u(ioc);
+    u.connect(test::net::ip::udp::endpoint(test::net::ip::make_address("192.0.2.1"), 9));  // sends nothing
+    const auto a = u.local_endpoint().address();
+    if (!a.is_loopback() && !a.is_unspecified()) other = a.to_string();
+  } catch (const std::exception&) {
+  }
+  if (other.empty()) GTEST_SKIP() << "this machine has no non-loopback address to try";
+  test::net::io_context ioc;
+  test::tcp::socket sock(ioc);
+  boost::system::error_code ec;
+  sock.connect(test::tcp::endpoint(test::net::ip::make_address(other), sv.port()), ec);
+  EXPECT_TRUE(ec) << "connected to " << other << ":" << sv.port();
+}
+
+// Hostile clients: they connect and disconnect, send malformed JSON, unknown
+// types and names, oversize and binary messages, and flood — each refused with
+// a reply — while the episode runs; its end metrics equal an unserved run's.
+TEST(ServeServer, HostileClientsDoNotDisturbTheEpisode) {
+  const world::Scenario s = world::load_scenario("3-block-tray");
+  const exec::EpisodeMetrics oracle = episode::run_episode(s, symbolic_options());
+  ASSERT_TRUE(oracle.success) << oracle.reason;
+
+  LiveOptions o;
+  o.episode = symbolic_options();
+  o.paused = true;
+  o.speed = 20;
+  Served sv(s, o);
+
+  // Each kind of bad request gets one refusal that says what is wrong.
+  WsClient c(sv.port());
+  ASSERT_TRUE(c.read());  // hello
+  c.send(std::string("{\"type\": \"intervene\", \"id\": 1,"));
+  auto r = c.read_until([](const json& m) { return m["type"] == "reply"; });
+  ASSERT_TRUE(r);
+  EXPECT_FALSE((*r)["ok"]);
+  EXPECT_NE((*r)["error"].get<std::string>().find("malformed JSON"), std::string::npos);
+  c.send(json{{"type", "launch"}, {"id", 2}});
+  r = c.reply(2);
+  ASSERT_TRUE(r);
+  EXPECT_FALSE((*r)["ok"]);
+  EXPECT_NE((*r)["error"].get<std::string>().find("unknown request type 'launch'"), std::string::npos);
+  c.send(json{{"type", "intervene"}, {"id", 3}, {"kind", "relocate"}, {"subject", "o9"}, {"location", "r2"}});
+  r = c.reply(3);
+  ASSERT_TRUE(r);
+  EXPECT_FALSE((*r)["ok"]);
+  EXPECT_NE((*r)["error"].get<std::string>().find("unknown object or container 'o9'"), std::string::npos)
+      << (*r)["error"];
+  c.send(json{{"type", "intervene"}, {"id", 4}, {"kind", "relocate"}, {"subject", "o1"}, {"location", "r7"}});
+  r = c.reply(4);
+  ASSERT_TRUE(r);
+  EXPECT_FALSE((*r)["ok"]);
+  EXPECT_NE((*r)["error"].get<std::string>().find("unknown location 'r7'"), std::string::npos) << (*r)["error"];
+  c.send(json{{"type", "intervene"}, {"id", 5}, {"kind", "add"}, {"subject", "in"}, {"location", "r1"}});
+  r = c.reply(5);
+  ASSERT_TRUE(r);
+  EXPECT_FALSE((*r)["ok"]);
+  EXPECT_NE((*r)["error"].get<std::string>().find("reserved word"), std::string::npos) << (*r)["error"];
+  c.send(json{{"type", "intervene"}, {"id", 6}, {"kind", "add"}, {"subject", "x"}, {"class", "tray"}, {"location", "r1"}});
+  r = c.reply(6);
+  ASSERT_TRUE(r);
+  EXPECT_FALSE((*r)["ok"]);
+  EXPECT_NE((*r)["error"].get<std::string>().find("is the class of containers"), std::string::npos) << (*r)["error"];
+  c.send(json{{"type", "control"}, {"id", 7}, {"action", "seek"}, {"value", 3}});
+  r = c.reply(7);
+  ASSERT_TRUE(r);
+  EXPECT_FALSE((*r)["ok"]);
+  c.send(std::string(70000, ' '));
+  r = c.read_until([](const json& m) { return m["type"] == "reply"; });
+  ASSERT_TRUE(r);
+  EXPECT_FALSE((*r)["ok"]);
+  EXPECT_NE((*r)["error"].get<std::string>().find("over the limit of 65536 bytes"), std::string::npos);
+
+  // While the episode runs: flooders, churners (connect, read hello, drop), a sender of garbage.
+  std::atomic<bool> stop{false};
+  std::atomic<int> throttled{0}, churned{0};
+  std::vector<std::thread> threads;
+  // A client thread ends quietly when the server drops it.
+  auto guarded = [](auto body) {
+    return [body] {
+      try {
+        body();
+      } catch (const std::exception&) {
+      }
+    };
+  };
+  threads.emplace_back(guarded([&] {
+    WsClient f(sv.port());
+    for (int i = 0; i < 3000 && !stop; ++i)
+      if (!f.send("{\"type\":\"control\",\"id\":" + std::to_string(i) + ",\"action\":\"fly\"}")) break;
+    while (!stop) {
+      auto m = f.read(std::chrono::milliseconds(200));
+      if (!m) {
+        if (f.closed()) break;
+        continue;
+      }
+      if ((*m)["type"] == "reply" && (*m).value("error", "").find("throttled") != std::string::npos) ++throttled;
+    }
+  }));
+  for (int k = 0; k < 2; ++k)
+    threads.emplace_back(guarded([&] {
+      while (!stop) {
+        WsClient ch(sv.port());
+        if (ch.read()) ++churned;
+        ch.drop();
+      }
+    }));
+  threads.emplace_back(guarded([&] {
+    WsClient g(sv.port());
+    for (int i = 0; !stop; ++i) {
+      g.send(i % 2 ? std::string("[1,2,3]")
+                   : json{{"type", "intervene"}, {"id", i}, {"kind", "remove"}, {"subject", "zz"}}.dump());
+      g.read(std::chrono::milliseconds(50));
+    }
+  }));
+  c.send(json{{"type", "control"}, {"id", 8}, {"action", "resume"}});
+  r = c.reply(8);
+  ASSERT_TRUE(r);
+  EXPECT_TRUE((*r)["ok"]);
+  const exec::EpisodeMetrics m = sv.episode.wait();
+  stop = true;
+  for (auto& t : threads) t.join();
+  expect_same_metrics(m, oracle);
+  EXPECT_GT(throttled.load(), 0);
+  EXPECT_GT(churned.load(), 0);
+}
+
+// An intervention from a page is applied through the world, logged as an
+// `intervention` record like a scripted one, and the loop reacts (handled by
+// the tree, or a replan) before its next tick.
+TEST(ServeServer, InterventionIsAppliedLoggedAndReactedTo) {
+  const world::Scenario s = world::load_scenario("3-block-tray");
+  const fs::path dir = temp_dir("intervene");
+  LiveOptions o;
+  o.episode = symbolic_options((dir / "ep.jsonl").string());
+  o.episode.scripted_operator = false;
+  o.paused = true;
+  o.speed = 5;
+  Served sv(s, o);
+  WsClient c(sv.port());
+  ASSERT_TRUE(c.read());
+  c.send(json{{"type", "control"}, {"id", 1}, {"action", "resume"}});
+  ASSERT_TRUE(c.reply(1));
+  // Once the tray has been moved to r2, put it back in r1 (undoing work: the loop must notice).
+  const auto finished = c.read_until([](const json& m) {
+    return m["type"] == "log" && m["record"]["ev"] == "action" && m["record"]["what"] == "finished";
+  });
+  ASSERT_TRUE(finished);
+  // "move(o2, r3)": the thing just moved goes back to where it was.
+  const std::string action = (*finished)["record"]["action"];
+  const std::string moved = action.substr(5, action.find(',') - 5);
+  // Every first move leaves r1 (blocks into the tray or to r2, or the tray to r2): back to r1 is a change.
+  c.send(json{{"type", "intervene"}, {"id", 2}, {"kind", "relocate"}, {"subject", moved}, {"location", "r1"}});
+  auto r = c.reply(2);
+  ASSERT_TRUE(r);
+  EXPECT_TRUE((*r)["ok"]) << r->dump();
+  EXPECT_GE((*r)["server_ms"].get<double>(), 0);
+  // The log record, then the reaction before the second tick after it.
+  ASSERT_TRUE(c.read_until([&](const json& m) {
+    return m["type"] == "log" && m["record"]["ev"] == "intervention" && m["record"]["subject"] == moved;
+  }));
+  int ticks = 0;
+  const auto reaction = c.read_until([&](const json& m) {
+    if (m["type"] != "log") return false;
+    const std::string ev = m["record"]["ev"];
+    if (ev == "tick") ++ticks;
+    return ev == "handled_by_tree" || ev == "replan" || ticks >= 2;
+  });
+  ASSERT_TRUE(reaction);
+  EXPECT_NE((*reaction)["record"]["ev"], "tick") << "no reaction before the second tick";
+  // A refused one says why.
+  c.send(json{{"type", "intervene"}, {"id", 3}, {"kind", "relocate"}, {"subject", "r3"}, {"location", "o2"}});
+  r = c.reply(3);
+  ASSERT_TRUE(r);
+  EXPECT_FALSE((*r)["ok"]);
+  EXPECT_NE((*r)["error"].get<std::string>().find("unknown location 'o2'"), std::string::npos) << (*r)["error"];
+  const exec::EpisodeMetrics m = sv.episode.wait();
+  EXPECT_TRUE(m.success) << m.reason;
+  EXPECT_EQ(m.interventions_applied, 1);
+  // The file log holds the intervention exactly as the page saw it.
+  const auto log = read_log(dir / "ep.jsonl");
+  int found = 0;
+  for (const auto& rec : log)
+    if (rec["ev"] == "intervention") {
+      ++found;
+      EXPECT_EQ(rec["kind"], "relocate");
+      EXPECT_EQ(rec["subject"], moved);
+      EXPECT_EQ(rec["applied"], true);
+    }
+  EXPECT_EQ(found, 1);
+  fs::remove_all(dir);
+}
+
+// Replays: a served episode's log (with frame records) and a `run` log (without)
+// both reach the logged end state; seek cuts the history at t.
+TEST(ServeServer, ReplayReachesTheLoggedEndStateAndSeeks) {
+  const world::Scenario s = world::load_scenario("3-block-tray");
+  const fs::path dir = temp_dir("replay");
+  {
+    LiveOptions o;
+    o.episode = symbolic_options((dir / "served.jsonl").string());
+    o.speed = 0;
+    LiveEpisode live(s, o);
+    live.start();
+    ASSERT_TRUE(live.wait().success);
+  }
+  episode::run_episode(s, symbolic_options((dir / "run.jsonl").string()));
+  for (const char* name : {"served.jsonl", "run.jsonl"}) {
+    SCOPED_TRACE(name);
+    const auto log = read_log(dir / name);
+    ASSERT_FALSE(log.empty());
+    const json end = log.back();
+    ASSERT_EQ(end["ev"], "end");
+    bool frames = false;
+    for (const auto& rec : log) frames = frames || rec["ev"] == "frame";
+    EXPECT_EQ(frames, std::string(name) == "served.jsonl");
+
+    ReplayOptions ro;
+    ro.speed = 0;
+    ro.paused = true;
+    Replay replay(s, (dir / name).string(), ro);
+    Server server({"127.0.0.1", 0, ""}, replay);
+    server.start();
+    replay.start();
+    WsClient c(server.port());
+    auto hello = c.read();
+    ASSERT_TRUE(hello);
+    EXPECT_EQ((*hello)["mode"], "replay");
+    EXPECT_NEAR((*hello)["replay"]["duration"].get<double>(), end["t"].get<double>(), 1e-9);
+    EXPECT_TRUE((*hello)["history"].empty());
+    // Seek to the middle: a new hello whose history is every non-frame record up to t.
+    const double mid = end["t"].get<double>() / 2;
+    c.send(json{{"type", "control"}, {"id", 1}, {"action", "seek"}, {"value", mid}});
+    hello = c.read_until([](const json& m) { return m["type"] == "hello"; });
+    ASSERT_TRUE(hello);
+    std::size_t expect = 0;
+    for (const auto& rec : log) expect += rec["t"].get<double>() <= mid + 1e-9 && rec["ev"] != "frame";
+    EXPECT_EQ((*hello)["history"].size(), expect);
+    for (const auto& rec : (*hello)["history"]) EXPECT_LE(rec["t"].get<double>(), mid + 1e-9);
+    // Play to the end: every record arrives, the last frame shows the end placement.
+    c.send(json{{"type", "control"}, {"id", 2}, {"action", "resume"}});
+    const auto ended = c.read_until([](const json& m) { return m["type"] == "state" && m["ended"] == true; });
+    ASSERT_TRUE(ended);
+    json last_frame;
+    std::size_t records = (*hello)["history"].size();
+    for (const auto& m : c.seen) {
+      if (m["type"] == "frame") last_frame = m;
+      if (m["type"] == "log") ++records;
+    }
+    std::size_t non_frame = 0;
+    for (const auto& rec : log) non_frame += rec["ev"] != "frame";
+    EXPECT_EQ(records, non_frame);
+    ASSERT_FALSE(last_frame.is_null());
+    std::map<std::string, std::string> at;
+    for (const auto& t : last_frame["things"]) at[t["name"]] = t["at"];
+    std::map<std::string, std::string> expected;
+    for (const auto& [n, l] : end["placement"].items()) expected[n] = l;
+    EXPECT_EQ(at, expected);
+  }
+  fs::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace rtamp::serve

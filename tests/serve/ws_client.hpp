@@ -1,0 +1,96 @@
+// A WebSocket test client on Boost.Beast (the server's own library, used as a
+// client): connect to 127.0.0.1:PORT/ws, send text, read JSON messages with a
+// generous deadline (a missing message fails the test instead of hanging it).
+#pragma once
+
+#include <chrono>
+#include <functional>
+#include <optional>
+#include <string>
+
+#include <boost/asio/connect.hpp>
+#include <boost/asio/ip/tcp.hpp>
+#include <boost/beast/core.hpp>
+#include <boost/beast/websocket.hpp>
+#include <nlohmann/json.hpp>
+
+namespace rtamp::serve::test {
+
+namespace beast = boost::beast;
+namespace websocket = beast::websocket;
+namespace net = boost::asio;
+using tcp = net::ip::tcp;
+using nlohmann::json;
+
+class WsClient {
+ public:
+  explicit WsClient(unsigned short port, const std::string& host = "127.0.0.1") {
+    beast::get_lowest_layer(ws_).connect(tcp::endpoint(net::ip::make_address(host), port));
+    ws_.handshake(host + ":" + std::to_string(port), "/ws");
+  }
+
+  // False once the connection is gone (the server dropped this client).
+  bool send(const std::string& text) {
+    beast::error_code ec;
+    ws_.text(true);
+    ws_.write(net::buffer(text), ec);
+    if (ec) closed_ = true;
+    return !ec;
+  }
+  bool send(const json& j) { return send(j.dump()); }
+
+  // The next message, or nullopt after `deadline` (or when the connection ends).
+  std::optional<json> read(std::chrono::milliseconds deadline = std::chrono::seconds(60)) {
+    beast::flat_buffer b;
+    beast::error_code ec;
+    bool done = false;
+    ws_.async_read(b, [&](beast::error_code e, std::size_t) {
+      ec = e;
+      done = true;
+    });
+    ioc_.restart();
+    ioc_.run_for(deadline);
+    if (!done) {
+      beast::get_lowest_layer(ws_).cancel();
+      ioc_.restart();
+      ioc_.run();
+      return std::nullopt;
+    }
+    if (ec) {
+      closed_ = true;
+      return std::nullopt;
+    }
+    return json::parse(beast::buffers_to_string(b.data()));
+  }
+
+  // Reads until `pred` holds for a message (returned), or nullopt.
+  std::optional<json> read_until(const std::function<bool(const json&)>& pred,
+                                 std::chrono::milliseconds deadline = std::chrono::seconds(60)) {
+    const auto end = std::chrono::steady_clock::now() + deadline;
+    for (;;) {
+      const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(end - std::chrono::steady_clock::now());
+      if (left.count() <= 0) return std::nullopt;
+      auto m = read(left);
+      if (!m) return std::nullopt;
+      seen.push_back(*m);
+      if (pred(*m)) return m;
+    }
+  }
+
+  // The reply to request `id`.
+  std::optional<json> reply(int id) {
+    return read_until([id](const json& m) { return m.value("type", "") == "reply" && m["id"] == id; });
+  }
+
+  bool closed() const { return closed_; }
+  void drop() { beast::get_lowest_layer(ws_).close(); }
+
+  std::vector<json> seen;  // every message read_until has read
+
+ private:
+  net::io_context ioc_;
+  websocket::stream<beast::tcp_stream> ws_{ioc_};
+  bool closed_ = false;
+};
+
+}  // namespace rtamp::serve::test
