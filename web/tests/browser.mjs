@@ -7,6 +7,7 @@
 //   scene       the scene shows the scenario's things where the server says they are
 //   drag        a real mouse drag of a block onto another region → `relocate` in the log,
 //               then `handled_by_tree` or `replan` within a bounded number of ticks
+//   paused      the same drag made while paused is applied on resume, before any move
 //   add         the palette adds a block → `add` in the log, the thing appears, a reaction
 //   remove      click a block, delete → `remove` in the log, the thing disappears
 //   take        take the held block out of the gripper → `take-from-gripper`, a reaction
@@ -177,6 +178,21 @@ const cases = {
       // The same record is in the episode's JSON Lines log file.
       const lines = readFileSync(log, 'utf8').trim().split('\n').map((l) => JSON.parse(l));
       assert.ok(lines.some((l) => l.ev === 'intervention' && l.kind === 'relocate' && l.subject === 'o3' && l.location === 'r2' && l.applied));
+    });
+  },
+
+  async paused() {
+    // The person pauses, fixes the scene, resumes: the drag made while paused is applied
+    // when the episode goes on, before the robot's first move.
+    await withPage([scenario('3-block-tray'), '--world', 'symbolic', '--no-operator', '--paused'], async ({ page, ws }) => {
+      await dragTo(page, 'o3', 'r2');
+      await waitFor(() => ws.received.some((m) => m.type === 'reply' && m.ok), 'the reply to the drag');
+      await page.click('#pause'); // resume
+      const { intervention, reaction: r, between } = await reaction(ws, (x) => x.ev === 'intervention' && x.kind === 'relocate', 'the relocation and the reaction');
+      assert.equal(intervention.subject, 'o3');
+      assert.equal(intervention.applied, true);
+      assert.ok(REACTIONS.has(r.ev));
+      assert.ok(!between.some((x) => x.ev === 'action'), 'no move ran between the intervention and the reaction');
     });
   },
 
