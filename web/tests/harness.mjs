@@ -36,6 +36,9 @@ export function startServer(args) {
   const proc = spawn(process.env.RTAMP_BIN, ['serve', ...args, '--port', '0'], { stdio: ['ignore', 'pipe', 'pipe'] });
   let err = '';
   proc.stderr.on('data', (d) => (err += d));
+  // The server never outlives the test (a failed assertion, a ctest timeout's SIGTERM).
+  process.on('exit', () => proc.kill('SIGTERM'));
+  for (const sig of ['SIGTERM', 'SIGINT']) process.once(sig, () => process.exit(1));
   const lines = createInterface({ input: proc.stdout });
   return new Promise((resolve, reject) => {
     const timer = setTimeout(() => reject(new Error(`rtamp serve printed no URL in 60 s; stderr:\n${err}`)), 60000);
