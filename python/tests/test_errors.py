@@ -58,3 +58,88 @@ def test_logging_hooks_are_explicit_calls():
     for _ in range(2):
         rtamp.install_mujoco_log_handler()
         rtamp.quiet_ompl_logging()
+
+
+# The head of a scenario (3 blocks, a tray, all_in_r2): the task goes on line 13.
+_HEAD = """name: t
+regions:
+  - {name: r1, center: [0.40, 0.32, 0], size: [0.36, 0.36], capacity: 4}
+  - {name: r2, center: [0.40, -0.32, 0], size: [0.36, 0.36], capacity: 4}
+containers:
+  - {name: r3, class: tray, position: [0.40, 0.25, 0], size: [0.30, 0.16, 0.03], capacity: 3}
+objects:
+  - {name: o1, class: block, position: [0.32, 0.40, 0], size: [0.04, 0.04, 0.04]}
+  - {name: o2, class: block, position: [0.40, 0.40, 0], size: [0.04, 0.04, 0.04]}
+  - {name: o3, class: block, position: [0.48, 0.40, 0], size: [0.04, 0.04, 0.04]}
+propositions:
+  all_in_r2: "all block in r2"
+"""
+
+
+def test_planner_refuses_what_the_cli_refuses_with_the_same_location():
+    # The messages and locations of tests/cli/bad_input_test.cpp's rows.
+    cases = [
+        ('F G "all blocks in r2"', "t.yaml:13:16: ", "unknown class 'blocks' (did you mean 'block'?)"),
+        ('F G all_in_r3', "t.yaml:13:11: ", "not a proposition of the scenario"),
+        ('>\n    F G all_in_r2 &\n    G "o1 in r9"\n', "t.yaml:15:14: ", "unknown location 'r9'"),
+        ('|\n  F G all_in_r2\n  & & all_in_r2\n', "t.yaml:15:5: ", "expected a formula before '&'"),
+    ]
+    for task, where, what in cases:
+        s = rtamp.parse_scenario(_HEAD + "task: " + task + "\n", "t.yaml")
+        with pytest.raises(rtamp.Error) as e:
+            rtamp.Planner(s)
+        assert str(e.value).startswith(where), (task, str(e.value))
+        assert what in str(e.value), (task, str(e.value))
+
+
+def test_a_task_set_in_python_is_located_in_its_own_text():
+    s = rtamp.parse_scenario(_HEAD + "task: |\n    F G all_in_r2\n", "t.yaml")
+    s.task = 'F G "o1 in r9"'
+    with pytest.raises(rtamp.Error) as e:
+        rtamp.Planner(s)
+    assert e.value.file != "t.yaml" and e.value.line == 1 and e.value.column == 12, str(e.value)
+
+
+def test_planner_apply_refuses_what_plan_change_refuses():
+    p = rtamp.Planner(rtamp.load_scenario("3-block-tray"))
+    for change, what in [
+        ("add-region in 0.4 0", "region name 'in' is a reserved word"),
+        ("add o9 object r1", "class 'object' is reserved"),
+        ("add-region r9 0.40 0.32", "overlaps region 'r1'"),
+        ("add-region r9 0 0 99999999999999999999", "out of range"),
+        ("move o1 r9", "unknown location 'r9'"),
+    ]:
+        with pytest.raises(rtamp.Error, match=what.replace("(", r"\(").replace(")", r"\)")):
+            p.apply(change)
+
+
+@pytest.mark.parametrize("option,value", [
+    ("max_time", float("nan")), ("max_time", 0.0), ("max_time", -5.0),
+    ("tick_period", 0.0), ("tick_period", float("nan")),
+    ("outside_grace", float("nan")), ("max_consecutive_failures", 0), ("cycles", -1),
+])
+def test_run_episode_refuses_loop_options_out_of_range(option, value, tmp_path):
+    s = rtamp.load_scenario("3-block")
+    log = tmp_path / "ep.jsonl"
+    with pytest.raises(rtamp.Error, match="loop option " + option):
+        rtamp.run_episode(s, world="symbolic", log=str(log), **{option: value})
+    assert not log.exists()  # refused before the log was opened
+
+
+def test_run_episode_checks_the_task_before_it_opens_the_log(tmp_path):
+    s = rtamp.parse_scenario(_HEAD + 'task: F G "all blocks in r2"\n', "t.yaml")
+    log = tmp_path / "ep.jsonl"
+    with pytest.raises(rtamp.Error, match="t.yaml:13:16: .*unknown class 'blocks'"):
+        rtamp.run_episode(s, world="symbolic", log=str(log), random_rate=0.0)
+    with pytest.raises(rtamp.Error, match="random_rate"):
+        rtamp.run_episode(rtamp.load_scenario("3-block"), world="symbolic", log=str(log), random_rate=-1.0)
+    assert not log.exists()
+
+
+def test_run_episode_refuses_bad_outputs_before_it_starts(tmp_path):
+    s = rtamp.load_scenario("3-block")
+    with pytest.raises(rtamp.Error, match="episode log"):
+        rtamp.run_episode(s, world="symbolic", log=str(tmp_path / "no_dir" / "ep.jsonl"))
+    with pytest.raises(rtamp.Error, match="MuJoCo world"):
+        rtamp.run_episode(s, world="symbolic", video=str(tmp_path / "v.mp4"))
+    assert not (tmp_path / "v.mp4").exists()

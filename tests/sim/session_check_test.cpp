@@ -2,7 +2,8 @@
 // API refuses what `rtamp sim --do` refuses, with the same words): run()
 // checks every action of the list first, execute() its one action, against
 // the names of the running simulation; a bad list leaves the world exactly as
-// it was (no simulated time, nothing held, every thing where it was).
+// it was (no simulated time, nothing held, every thing where it was). A
+// random operator's rate must be finite and >= 0.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -98,6 +99,20 @@ TEST(SessionCheck, ActionsBuiltInCodeAreCheckedToo) {
     EXPECT_EQ(format_location(e.where()), "actions:1:9: ") << e.what();
   }
   EXPECT_EQ(snapshot(s), before);
+}
+
+TEST(SessionCheck, ARandomOperatorRateOutOfRangeIsRefused) {
+  const world::Scenario sc = world::load_scenario("3-block");
+  for (double bad : {std::nan(""), -1.0, std::numeric_limits<double>::infinity()}) {
+    SessionOptions o;
+    o.op.random_rate = bad;
+    try {
+      Session s(sc, o);
+      ADD_FAILURE() << bad << " accepted";
+    } catch (const Error& e) {
+      EXPECT_NE(std::string(e.what()).find("random_rate"), std::string::npos) << e.what();
+    }
+  }
 }
 
 TEST(SessionCheck, NamesAddedSinceTheStartAreKnown) {

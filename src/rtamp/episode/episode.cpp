@@ -84,9 +84,10 @@ Episode::Episode(const world::Scenario& input, const EpisodeOptions& opt, const 
   if (opt.random_change) script.push_back(random_intervention(scenario, *opt.random_change, opt, rng));
   std::stable_sort(script.begin(), script.end(), [](const auto& a, const auto& b) { return a.time < b.time; });
 
-  // Outputs first: a bad path is refused before anything runs.
-  if (!opt.log_path.empty()) log_ = std::make_unique<exec::EpisodeLog>(opt.log_path);
-  if (!opt.tree_dir.empty()) trees_ = std::make_unique<exec::TreeDump>(opt.tree_dir);
+  // Every input is checked before any output is opened (a log file is
+  // created, a tree directory emptied): the world checks its options, the
+  // loop's constructor the task, the planner's names and the loop's numbers.
+  // Then the outputs, so that a bad path too is refused before anything runs.
   if (!opt.video_path.empty() && opt.world != WorldKind::MuJoCo)
     throw Error("--video needs the MuJoCo world (the symbolic world has nothing to film)");
 
@@ -108,8 +109,6 @@ Episode::Episode(const world::Scenario& input, const EpisodeOptions& opt, const 
     symbolic_world_ = w.get();
     world_ = std::move(w);
   }
-  if (sim_world_ && !opt.video_path.empty())
-    video_ = std::make_unique<VideoRecorder>(sim_world_->session().sim(), opt.video_path);
   if (wrap) wrapper_ = wrap(*world_);
 
   exec::LoopOptions lo;
@@ -128,6 +127,11 @@ Episode::Episode(const world::Scenario& input, const EpisodeOptions& opt, const 
   lo.world_name = to_string(opt.world);
   lo.interrupt = opt.interrupt;
   loop_ = std::make_unique<exec::ReactiveLoop>(wrapper_ ? *wrapper_ : *world_, scenario, lo);
+
+  if (!opt.log_path.empty()) log_ = std::make_unique<exec::EpisodeLog>(opt.log_path);
+  if (!opt.tree_dir.empty()) trees_ = std::make_unique<exec::TreeDump>(opt.tree_dir);
+  if (sim_world_ && !opt.video_path.empty())
+    video_ = std::make_unique<VideoRecorder>(sim_world_->session().sim(), opt.video_path);
   if (opt.timeline) timeline_ = std::make_unique<exec::Timeline>(opt.timeline);
   if (log_) {
     if (SimWorld* sw = sim_world_)

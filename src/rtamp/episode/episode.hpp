@@ -6,10 +6,12 @@
 // what `rtamp run` and `rtamp batch` call; programs that bring their own world
 // use exec::ReactiveLoop directly.
 //
-// Output files are opened (tree directory checked, video encoder started)
-// before the episode starts; a bad path is an rtamp::Error, thrown before
-// anything runs. Errors inside the episode end it with EndReason::Error and a
-// complete log.
+// Every input (the task, the planner's names, the loop's numbers, the world's
+// options) is checked before any output file is opened, and the outputs
+// (log, tree directory, video encoder) before the episode starts: a bad one
+// is an rtamp::Error, thrown before anything is written or runs. Errors
+// inside the episode end it with EndReason::Error and a complete log; a
+// video encoder that failed then throws its rtamp::Error.
 #pragma once
 
 #include <atomic>

@@ -24,6 +24,23 @@ std::optional<world::PropExpr> parse_atom(const std::string& atom) {
   }
 }
 
+}  // namespace
+
+const LoopOptions& check_loop_options(const LoopOptions& o) {
+  auto fail = [](const char* name, const std::string& rule, double v) {
+    throw Error(std::string("loop option ") + name + ": " + rule + ", found " + format_number(v));
+  };
+  if (!(o.max_time > 0)) fail("max_time", "must be > 0 s (inf: no limit)", o.max_time);
+  if (!(o.tick_period > 0 && std::isfinite(o.tick_period))) fail("tick_period", "must be finite and > 0 s", o.tick_period);
+  if (!(o.outside_grace >= 0 && std::isfinite(o.outside_grace)))
+    fail("outside_grace", "must be finite and >= 0 s", o.outside_grace);
+  if (o.max_consecutive_failures < 1) fail("max_consecutive_failures", "must be >= 1", o.max_consecutive_failures);
+  if (o.cycles < 0) fail("cycles", "must be >= 0 (0: no cycle count)", o.cycles);
+  return o;
+}
+
+namespace {
+
 bool cycle_has_moves(const plan::Plan& p) {
   return std::any_of(p.cycle.begin(), p.cycle.end(), [](const plan::Step& s) { return !s.action.is_stay(); });
 }
@@ -69,7 +86,7 @@ const char* to_string(EndReason r) {
 ReactiveLoop::ReactiveLoop(World& world, const world::Scenario& scenario, LoopOptions options)
     : world_(world),
       scenario_(scenario),
-      options_(std::move(options)),
+      options_(check_loop_options(options)),
       planner_(std::make_unique<plan::Planner>(scenario_, options_.planner)),
       progress_(planner_->automaton()) {
   runner_ = std::make_unique<WorldRunner>(world_);

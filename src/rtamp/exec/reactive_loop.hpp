@@ -84,9 +84,18 @@ struct LoopOptions {
   const std::atomic<int>* interrupt = nullptr;
 };
 
+// The loop's numbers, checked before anything runs (a NaN time limit or a
+// zero tick would run forever): throws rtamp::Error "loop option NAME: RULE,
+// found VALUE" unless max_time > 0 (inf: no limit), tick_period finite > 0,
+// outside_grace finite >= 0, max_consecutive_failures >= 1, cycles >= 0.
+// Returns `o`. The loop's constructor calls it; callers that open outputs
+// first (episode::run_episode) call it before.
+const LoopOptions& check_loop_options(const LoopOptions& o);
+
 class ReactiveLoop {
  public:
-  // Translates the task (rtamp::Error on a bad task). `world` must outlive the loop.
+  // Translates the task (rtamp::Error on a bad task, or on options out of
+  // range: check_loop_options). `world` must outlive the loop.
   ReactiveLoop(World& world, const world::Scenario& scenario, LoopOptions options);
   ~ReactiveLoop();
   ReactiveLoop(const ReactiveLoop&) = delete;

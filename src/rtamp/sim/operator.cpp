@@ -6,6 +6,9 @@
 #include <cmath>
 #include <limits>
 
+#include "rtamp/util/error.hpp"
+#include "rtamp/util/format.hpp"
+
 namespace rtamp::sim {
 
 namespace {
@@ -32,6 +35,9 @@ Operator::Operator(Simulation& sim, OperatorOptions options)
     : sim_(sim), options_(std::move(options)), rng_(options_.seed) {
   std::stable_sort(options_.script.begin(), options_.script.end(),
                    [](const auto& a, const auto& b) { return a.time < b.time; });
+  if (!(options_.random_rate >= 0 && std::isfinite(options_.random_rate)))
+    throw Error("operator: random_rate must be finite and >= 0 per second, found " +
+                format_number(options_.random_rate));
   next_random_ = std::numeric_limits<double>::infinity();
   if (options_.random_rate > 0) {
     next_random_ = options_.random_start;
