@@ -352,6 +352,35 @@ TEST(ServeServer, InterventionIsAppliedLoggedAndReactedTo) {
   fs::remove_all(dir);
 }
 
+// A person fixes the scene while the episode is paused (before the first move):
+// the intervention is applied at once and logged when the loop goes on.
+TEST(ServeServer, InterventionWhilePausedIsLoggedAfterResume) {
+  const world::Scenario s = world::load_scenario("3-block-tray");
+  LiveOptions o;
+  o.episode = symbolic_options();
+  o.episode.scripted_operator = false;
+  o.paused = true;
+  o.speed = 20;
+  Served sv(s, o);
+  WsClient c(sv.port());
+  ASSERT_TRUE(c.read());
+  c.send(json{{"type", "intervene"}, {"id", 1}, {"kind", "add"}, {"class", "block"}, {"location", "r2"}});
+  auto r = c.reply(1);
+  ASSERT_TRUE(r);
+  ASSERT_TRUE((*r)["ok"]) << r->dump();
+  EXPECT_EQ((*r)["subject"], "o4");
+  c.send(json{{"type", "control"}, {"id", 2}, {"action", "resume"}});
+  ASSERT_TRUE(c.reply(2));
+  const auto rec = c.read_until([](const json& m) {
+    return m["type"] == "log" && m["record"]["ev"] == "intervention" && m["record"]["subject"] == "o4";
+  });
+  ASSERT_TRUE(rec);
+  EXPECT_EQ((*rec)["record"]["applied"], true);
+  const exec::EpisodeMetrics m = sv.episode.wait();
+  EXPECT_EQ(m.interventions_applied, 1);
+  EXPECT_TRUE(m.success) << m.reason;
+}
+
 // Replays: a served episode's log (with frame records) and a `run` log (without)
 // both reach the logged end state; seek cuts the history at t.
 TEST(ServeServer, ReplayReachesTheLoggedEndStateAndSeeks) {

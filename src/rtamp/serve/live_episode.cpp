@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <utility>
 
 #include <nlohmann/json.hpp>
 
@@ -65,7 +66,8 @@ LiveEpisode::LiveEpisode(const world::Scenario& scenario, LiveOptions options)
     : options_(std::move(options)), playback_(options_.speed, options_.paused) {
   episode_ = std::make_unique<episode::Episode>(
       scenario, options_.episode, [this](exec::World& inner) -> std::unique_ptr<exec::World> {
-        return std::make_unique<PacedWorld>(inner, playback_, [this] { service(); }, [this] { after_slice(); });
+        return std::make_unique<PacedWorld>(inner, playback_, [this] { service(); }, [this] { after_slice(); },
+                                            [this] { return std::exchange(changed_, false); });
       });
   if (episode::SimWorld* sw = episode_->sim_world())
     frames_ = std::make_unique<SimFrames>(*sw);
@@ -237,7 +239,10 @@ void LiveEpisode::service() {
     std::snprintf(buf, sizeof buf, "\"server_ms\":%.3f", ms);
     p.reply(reply_message(p.request.id, ok, error, extra + buf));
   }
-  if (changed) emit_frame(true);
+  if (changed) {
+    changed_ = true;
+    emit_frame(true);
+  }
 }
 
 void LiveEpisode::after_slice() {

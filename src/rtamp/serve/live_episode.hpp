@@ -104,6 +104,7 @@ class LiveEpisode final : public RequestHandler {
   InterventionStats stats_;
 
   std::chrono::steady_clock::time_point last_frame_{};
+  bool changed_ = false;  // loop thread: a page's intervention was applied since the world last looked
   double next_frame_record_ = 0;
 };
 

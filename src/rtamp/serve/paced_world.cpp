@@ -10,6 +10,7 @@ void PacedWorld::advance(double dt) {
   for (;;) {
     if (!stepping && playback_.hold(service_)) stepping = true;
     service_();
+    if (changed_ && changed_()) break;  // the loop looks at the change now
     const double now = inner_.time();
     const double speed = playback_.speed();
     const double end = (stepping || speed <= 0 || playback_.stopped()) ? target : std::min(target, now + speed / 30);
@@ -17,6 +18,7 @@ void PacedWorld::advance(double dt) {
     if (!stepping) playback_.pace(inner_.time(), service_);
     after_slice_();
     if (end >= target) break;
+    if (changed_ && changed_()) break;
   }
 }
 

@@ -12,6 +12,11 @@
 // advance(a + b) (exec/world.hpp), so an unhindered served episode ends as
 // `rtamp run` does. At speed 0 (as fast as possible) and for a granted step
 // the whole dt is one slice, unpaced.
+//
+// A change a page made (`changed()` true after `service`) ends advance() early,
+// after the slice it happened in: the loop observes it at once (logs it, reacts)
+// instead of after the rest of a discrete-event jump; the loop then asks again
+// from the new time (exec/world.hpp lets advance() stop at any change).
 #pragma once
 
 #include <functional>
@@ -23,8 +28,10 @@ namespace rtamp::serve {
 
 class PacedWorld final : public exec::World {
  public:
-  PacedWorld(exec::World& inner, Playback& playback, std::function<void()> service, std::function<void()> after_slice)
-      : inner_(inner), playback_(playback), service_(std::move(service)), after_slice_(std::move(after_slice)) {}
+  PacedWorld(exec::World& inner, Playback& playback, std::function<void()> service, std::function<void()> after_slice,
+             std::function<bool()> changed = {})
+      : inner_(inner), playback_(playback), service_(std::move(service)), after_slice_(std::move(after_slice)),
+        changed_(std::move(changed)) {}
 
   double time() const override { return inner_.time(); }
   void advance(double dt) override;
@@ -42,6 +49,7 @@ class PacedWorld final : public exec::World {
   exec::World& inner_;
   Playback& playback_;
   std::function<void()> service_, after_slice_;
+  std::function<bool()> changed_;  // true once after a page changed the world
 };
 
 }  // namespace rtamp::serve
