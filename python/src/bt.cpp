@@ -236,9 +236,10 @@ void bind_bt(py::module_& m) {
       }, "The root's id, or None.")
       .def("tick", [](PyTree& t) { return t.tree->tick(); }, "Ticks the root once; returns its status.")
       .def("halt", [](PyTree& t) { t.tree->halt(); }, "Halts every node (running actions get on_halted).")
-      .def_property_readonly("status", [](PyTree& t) { return t.tree->status(); })
-      .def_property_readonly("tick_count", [](PyTree& t) { return t.tree->tick_count(); })
-      .def_property_readonly("change_count", [](PyTree& t) { return t.tree->change_count(); })
+      .def_property_readonly("status", [](PyTree& t) { return t.tree->status(); }, "The root's status after the last tick.")
+      .def_property_readonly("tick_count", [](PyTree& t) { return t.tree->tick_count(); }, "Ticks so far.")
+      .def_property_readonly("change_count", [](PyTree& t) { return t.tree->change_count(); },
+                             "Structural changes so far (inserts, removals, replacements).")
       .def("__len__", [](PyTree& t) { return t.tree->size(); })
       .def("find", [](PyTree& t, const std::string& name) -> py::object {
         Node* n = t.tree->find_by_name(name);
@@ -266,14 +267,16 @@ void bind_bt(py::module_& m) {
         return t.tree->replace(id, build(spec), cut_of(force));
       }, py::arg("id"), py::arg("spec"), py::kw_only(), py::arg("force") = false,
          "Puts a new subtree where `id` is; returns the new id.")
-      .def("can_cut", [](PyTree& t, bt::NodeId id) { return t.tree->can_cut(id); }, py::arg("id"))
+      .def("can_cut", [](PyTree& t, bt::NodeId id) { return t.tree->can_cut(id); }, py::arg("id"),
+           "True if the subtree at `id` runs no non-interruptible node (remove() would succeed).")
       .def("set_port", [](PyTree& t, bt::NodeId id, std::string name, std::string value) {
         t.tree->at(id).set_port(std::move(name), std::move(value));
       }, py::arg("id"), py::arg("name"), py::arg("value"), "Sets a node's port (exported as an XML attribute).")
       .def("advance_clock", [](PyTree& t, double seconds) {
         if (!t.manual) throw Error("advance_clock needs Tree(..., clock='manual')");
         t.manual->advance(std::chrono::duration_cast<bt::Duration>(std::chrono::duration<double>(seconds)));
-      }, py::arg("seconds"))
+      }, py::arg("seconds"),
+         "Moves the manual clock on (Tree(..., clock='manual') only; drives Timeout).")
       .def("on_status", [](PyTree& t, py::function f) {
         auto ref = std::make_shared<PyRef>(std::move(f));
         return t.tree->add_status_observer([ref](const bt::StatusChange& c) {
@@ -289,7 +292,8 @@ void bind_bt(py::module_& m) {
         });
       }, py::arg("callback"), "Calls callback(kind, node, previous, parent, position) on every structural change.")
       .def("remove_observer", [](PyTree& t, bt::Tree::ObserverHandle h) { return t.tree->remove_observer(h); },
-           py::arg("handle"))
+           py::arg("handle"),
+           "Detaches an observer by the handle on_status()/on_change() returned; False if unknown.")
       .def("to_text", [](PyTree& t, bool ids) { return bt::to_text(*t.tree, {ids, -1}); }, py::kw_only(),
            py::arg("ids") = true, "The tree as indented text with status markers ([*] running, [o] success, ...).")
       .def("to_xml", [](PyTree& t, const std::string& tree_id) {

@@ -241,23 +241,26 @@ void bind_loop(py::module_& m) {
              return w;
            }),
            py::arg("scenario") = py::none())
-      .def("time", &exec::World::time)
-      .def("advance", &exec::World::advance, py::arg("dt"), py::call_guard<py::gil_scoped_release>())
-      .def("next_event_time", &exec::World::next_event_time)
-      .def("observe", &exec::World::observe)
-      .def("start", &exec::World::start, py::arg("move"))
+      .def("time", &exec::World::time, "World time (s).")
+      .def("advance", &exec::World::advance, py::arg("dt"), py::call_guard<py::gil_scoped_release>(),
+           "Moves world time on by dt seconds (the world runs its moves and its person meanwhile).")
+      .def("next_event_time", &exec::World::next_event_time,
+           "When something next happens by itself (a discrete-event world); inf: tick at the loop's rate.")
+      .def("observe", &exec::World::observe, "What perception sees now: where every thing is.")
+      .def("start", &exec::World::start, py::arg("move"), "Starts a Move (one at a time).")
       .def("poll",
            [](exec::World& w) {
              std::string why;
              MoveStatus s = w.poll(&why);
              return py::make_tuple(s, why);
            },
-           "(status, why)")
-      .def("halt", &exec::World::halt)
-      .def("busy", &exec::World::busy)
-      .def("hand", &exec::World::hand)
-      .def("distance_travelled", &exec::World::distance_travelled)
-      .def("take_events", &exec::World::take_events);
+           "The running move's state as a tuple (MoveStatus, reason; the reason says why a move failed).")
+      .def("halt", &exec::World::halt, "Stops the running move where it is.")
+      .def("busy", &exec::World::busy, "True while the arm may not start a move (e.g. still settling).")
+      .def("hand", &exec::World::hand, "Where the hand is: a location name, or '' before the first move.")
+      .def("distance_travelled", &exec::World::distance_travelled, "Tool path travelled so far (m), if the world measures it.")
+      .def("take_events", &exec::World::take_events,
+           "The WorldEvents (interventions applied or refused) since the last call; the world forgets them.");
 
   py::class_<exec::EpisodeMetrics>(m, "EpisodeMetrics", "What one episode measured (the quantities of the paper's Table I).")
       .def_readonly("success", &exec::EpisodeMetrics::success, "The task was done (end == 'success').")
@@ -347,11 +350,12 @@ void bind_loop(py::module_& m) {
         return l.loop().run();
       }, "Steps until the episode ends; returns its EpisodeMetrics (the GIL is released meanwhile).")
       .def("stop", [](PyLoop& l) { l.loop().stop(); }, "Ends the episode at the next step (thread-safe).")
-      .def_property_readonly("ended", [](PyLoop& l) { return l.loop().ended(); })
-      .def_property_readonly("metrics", [](PyLoop& l) { return l.loop().metrics(); })
+      .def_property_readonly("ended", [](PyLoop& l) { return l.loop().ended(); }, "The episode has ended.")
+      .def_property_readonly("metrics", [](PyLoop& l) { return l.loop().metrics(); }, "The EpisodeMetrics so far.")
       .def_property_readonly("observed_run", [](PyLoop& l) { return l.loop().observed_run(); },
                              "The observed run: symbolic states (Placements), in order.")
-      .def_property_readonly("cycle_marks", [](PyLoop& l) { return l.loop().cycle_marks(); })
+      .def_property_readonly("cycle_marks", [](PyLoop& l) { return l.loop().cycle_marks(); },
+                             "For recurring tasks: the index into the observed run at which each counted cycle ended.")
       .def_property_readonly("actions", [](PyLoop& l) { return l.loop().tree().tuples(); },
                              "The moves of the plan the tree runs now (ActionTuples).")
       .def("tree_text", [](PyLoop& l) { return bt::to_text(l.loop().tree().tree()); },

@@ -285,7 +285,8 @@ void bind_plan(py::module_& m) {
       .def_readonly("cycle", &PlanView::cycle, "The steps repeated forever (list of Step).")
       .def_readonly("prefix_cost", &PlanView::prefix_cost, "Motion cost of the prefix.")
       .def_readonly("cycle_cost", &PlanView::cycle_cost, "Motion cost of one turn of the cycle.")
-      .def_property_readonly("cost", [](const PlanView& v) { return v.prefix_cost + v.cycle_cost; })
+      .def_property_readonly("cost", [](const PlanView& v) { return v.prefix_cost + v.cycle_cost; },
+                             "prefix_cost + cycle_cost.")
       .def_readonly("actions", &PlanView::actions, "The moves as ActionTuples, prefix first (what the behavior tree executes).")
       .def_readonly("stats", &PlanView::stats, "What the query did (SearchStats).")
       .def_readonly("automaton_states", &PlanView::automaton_states, "The Büchi states it started from.")
@@ -307,14 +308,16 @@ void bind_plan(py::module_& m) {
                            "A change of the world between plans: build with the static constructors or\n"
                            "Change.parse('move o1 r2' | 'add o4 block r1' | 'remove o1' | 'add-container t2 tray r1 3'\n"
                            "| 'remove-container t2' | 'add-region r4 0.5 0.2 [capacity]').")
-      .def_static("parse", &plan::Change::parse, py::arg("text"))
-      .def_static("relocate", &plan::Change::relocate, py::arg("thing"), py::arg("location"))
-      .def_static("add_object", &plan::Change::add_object, py::arg("object"), py::arg("cls"), py::arg("location"))
-      .def_static("remove_object", &plan::Change::remove_object, py::arg("object"))
+      .def_static("parse", &plan::Change::parse, py::arg("text"), "A change from its text (see the class); raises rtamp.Error with the column.")
+      .def_static("relocate", &plan::Change::relocate, py::arg("thing"), py::arg("location"), "A thing moved to a location.")
+      .def_static("add_object", &plan::Change::add_object, py::arg("object"), py::arg("cls"), py::arg("location"),
+                  "A new object of class cls at a location.")
+      .def_static("remove_object", &plan::Change::remove_object, py::arg("object"), "An object taken away.")
       .def_static("add_container", &plan::Change::add_container, py::arg("container"), py::arg("cls"),
-                  py::arg("region"), py::arg("capacity") = 4)
-      .def_static("remove_container", &plan::Change::remove_container, py::arg("container"))
-      .def_static("add_region", &plan::Change::add_region, py::arg("region"))
+                  py::arg("region"), py::arg("capacity") = 4, "A new container of class cls in a region.")
+      .def_static("remove_container", &plan::Change::remove_container, py::arg("container"),
+                  "A container taken away (its contents stay where it stood).")
+      .def_static("add_region", &plan::Change::add_region, py::arg("region"), "A new region (a Region).")
       .def("__str__", &plan::Change::to_string)
       .def("__repr__", [](const plan::Change& c) { return "rtamp.Change.parse('" + c.to_string() + "')"; });
 
@@ -363,14 +366,17 @@ void bind_plan(py::module_& m) {
              p.locked([&](plan::Planner& x) { x.set_automaton_states(std::move(s)); });
            },
            py::arg("states"), "The Büchi states plan() starts from (default: the initial state).")
-      .def_property_readonly("automaton_states", [](PyPlanner& p) { return p.raw().automaton_states(); })
+      .def_property_readonly("automaton_states", [](PyPlanner& p) { return p.raw().automaton_states(); },
+                             "The Büchi states the next plan starts from.")
       .def("forbid_move",
            [](PyPlanner& p, const std::string& t, const std::string& l) {
              p.locked([&](plan::Planner& x) { x.forbid_move(t, l); });
            },
            py::arg("thing"), py::arg("location"), "move(thing, location) is in no plan until clear_forbidden_moves().")
-      .def("clear_forbidden_moves", [](PyPlanner& p) { p.locked([](plan::Planner& x) { x.clear_forbidden_moves(); }); })
-      .def_property_readonly("forbidden_moves", [](PyPlanner& p) { return p.raw().forbidden_moves(); })
+      .def("clear_forbidden_moves", [](PyPlanner& p) { p.locked([](plan::Planner& x) { x.clear_forbidden_moves(); }); },
+           "Allows every move forbid_move() forbade again.")
+      .def_property_readonly("forbidden_moves", [](PyPlanner& p) { return p.raw().forbidden_moves(); },
+                             "The moves forbid_move() forbade (until the world changes).")
       .def_property_readonly("scenario", [](PyPlanner& p) { return p.raw().scenario(); }, "A copy of the scenario.")
       .def_property_readonly("automaton", [](PyPlanner& p) { return p.raw().automaton(); },
                              "The task's Büchi automaton (a copy).")
@@ -386,7 +392,8 @@ void bind_plan(py::module_& m) {
         p.locked([&](plan::Planner& x) { s = x.system().to_string(x.state()); });
         return s;
       }, "The current TS state as text: 'o1@r1 o2@r1 r3@r1 hand@home'.")
-      .def_property_readonly("algorithm", [](PyPlanner& p) { return std::string(plan::algorithm_info(p.raw().options().algorithm).name); })
+      .def_property_readonly("algorithm", [](PyPlanner& p) { return std::string(plan::algorithm_info(p.raw().options().algorithm).name); },
+                             "The search algorithm's name.")
       .def_property_readonly("cost_model", [](PyPlanner& p) { return p.raw().options().cost; },
                              "The motion-cost model's name.");
 }

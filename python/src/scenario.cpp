@@ -114,7 +114,8 @@ void bind_scenario(py::module_& m) {
            py::arg("kind"), py::arg("subject") = "", py::arg("location") = "", py::arg("cls") = "",
            py::arg("time") = 0.0)
       .def_property("kind", [](const Intervention& iv) { return intervention_kind_name(iv.kind); },
-                    [](Intervention& iv, const std::string& k) { iv.kind = parse_intervention_kind(k); })
+                    [](Intervention& iv, const std::string& k) { iv.kind = parse_intervention_kind(k); },
+                    "'relocate', 'add', 'remove', 'add-container', 'remove-container' or 'take-from-gripper'.")
       .def_readwrite("time", &Intervention::time, "When it happens (s of world time from the start of the episode).")
       .def_readwrite("subject", &Intervention::subject, "The thing it concerns (the new thing's name for an add; unused by take-from-gripper).")
       .def_readwrite("cls", &Intervention::cls, "The class of an added thing.")
