@@ -6,6 +6,7 @@
 // Invariant: the drawn tool point is linkFrames(robot, q)[7]'s origin for the q shown.
 import * as THREE from 'three';
 import { linkFrames, origin, reachTool } from './kinematics.js';
+import { litMaterial } from './material.js';
 
 const up = new THREE.Vector3(0, 1, 0);
 
@@ -14,8 +15,8 @@ export class Robot {
     this.robot = robot;
     this.group = new THREE.Group();
     parent.add(this.group);
-    const metal = new THREE.MeshLambertMaterial({ color: '#9aa3ad' });
-    const joint = new THREE.MeshLambertMaterial({ color: '#2b4f81' });
+    const metal = litMaterial('#9aa3ad');
+    const joint = litMaterial('#2b4f81');
     this.joints = [];
     this.links = [];
     for (let i = 0; i < 8; i++) {

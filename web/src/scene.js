@@ -8,6 +8,7 @@
 import * as THREE from 'three';
 import { OrbitControls } from 'three/examples/jsm/controls/OrbitControls.js';
 import { CSS2DRenderer, CSS2DObject } from 'three/examples/jsm/renderers/CSS2DRenderer.js';
+import { litMaterial } from './material.js';
 
 function label(text, cls) {
   const div = document.createElement('div');
@@ -32,10 +33,7 @@ export class Scene {
     this.camera.up.set(0, 0, 1);
     this.controls = new OrbitControls(this.camera, this.renderer.domElement);
     this.controls.enableDamping = false;
-    this.scene.add(new THREE.HemisphereLight('#ffffff', '#8a8f99', 1.6));
-    const sun = new THREE.DirectionalLight('#ffffff', 1.4);
-    sun.position.set(1.5, 1, 3);
-    this.scene.add(sun);
+    // No three.js lights: the lit materials (material.js) carry the light rig themselves.
 
     this.things = new Map(); // name -> {mesh, info}
     this.infos = new Map(); // name -> {class, kind, size, color}
@@ -67,7 +65,7 @@ export class Scene {
     this.tableTop = t.center[2] + t.size[2] / 2;
     const table = new THREE.Mesh(
       new THREE.BoxGeometry(...t.size),
-      new THREE.MeshLambertMaterial({ color: '#c8b79a' }),
+      litMaterial('#c8b79a'),
     );
     table.position.set(...t.center);
     table.name = 'table';
@@ -111,7 +109,7 @@ export class Scene {
   // A mesh for a thing: a block is a box, a tray a floor with four rims.
   makeMesh(name, info) {
     const color = info.color || this.classes?.get(info.class)?.color || '#888888';
-    const mat = new THREE.MeshLambertMaterial({ color });
+    const mat = litMaterial(color);
     const [sx, sy, sz] = info.size || [0.04, 0.04, 0.04];
     let mesh;
     if (info.kind === 'container') {
