@@ -57,10 +57,10 @@ const world::Scenario& tray() {
 
 // A change and the change that undoes it, by kind.
 struct ChangePair {
-  plan::Change apply, undo;
+  world::Change apply, undo;
 };
 std::vector<ChangePair> changes_of_kind(const std::string& kind) {
-  using plan::Change;
+  using world::Change;
   std::vector<ChangePair> out;
   if (kind == "relocate") {
     for (const char* o : {"o1", "o2", "o3"})
@@ -185,7 +185,7 @@ const std::vector<std::vector<StreamState>>& replan_streams() {
         if (moves && rng() % 3 != 0) {
           gen.execute(r.plan.prefix.front().action);
         } else {
-          gen.apply(plan::Change::relocate(blocks[rng() % 3], locs[rng() % 3]));
+          gen.apply(world::Change::relocate(blocks[rng() % 3], locs[rng() % 3]));
         }
         stream.push_back({gen.placement(), gen.hand()});
       }

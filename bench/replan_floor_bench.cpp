@@ -62,11 +62,11 @@ struct ChangedWorld {
 
 std::vector<ChangedWorld> changed_worlds(int kind) {
   std::vector<ChangedWorld> out;
-  std::vector<plan::Change> changes;
+  std::vector<world::Change> changes;
   if (kind == 0)
-    for (const char* l : {"r1", "r2", "r3"}) changes.push_back(plan::Change::add_object("o4", "block", l));
+    for (const char* l : {"r1", "r2", "r3"}) changes.push_back(world::Change::add_object("o4", "block", l));
   else
-    for (const char* o : {"o1", "o2", "o3"}) changes.push_back(plan::Change::remove_object(o));
+    for (const char* o : {"o1", "o2", "o3"}) changes.push_back(world::Change::remove_object(o));
   for (const auto& c : changes) {
     plan::Planner p(world::load_scenario("3-block-tray"), astar_euclid());
     (void)p.plan();
@@ -195,9 +195,10 @@ void BM_FloorOracleSearch(benchmark::State& state) {
     const auto t0 = Clock::now();
     plan::ProductGraph g(p.system(), p.labeling(), p.automaton(), p.model(), nullptr);
     plan::LassoSearch ls;
+    plan::Experience x;
     plan::SearchStats stats;
     const NodeId init = g.find_or_add(p.system().canonical(p.state()), p.automaton().initial);
-    const auto r = ls.run(g, init, h, true, false, plan::SearchLimits{}, 0, stats);
+    const auto r = ls.run(g, x, init, h, true, false, plan::SearchLimits{}, 0, stats);
     state.SetIterationTime(since(t0));
     if (!r.found || std::abs(r.prefix_cost + r.cycle_cost - c.cold_cost) > 1e-9)
       state.SkipWithError("the oracle search did not find the optimal cost");

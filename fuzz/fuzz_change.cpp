@@ -1,4 +1,4 @@
-// Fuzz target for `plan --change` parsing and checking (plan/change_check.hpp):
+// Fuzz target for `plan --change` parsing and checking (world/change.hpp):
 // on any input, read as one change per line, parse_changes() against the
 // 3-block-tray scene either returns or throws rtamp::Error — never crashes,
 // hangs or throws anything else. Oracles on accepted changes: the canonical
@@ -11,7 +11,7 @@
 #include <string_view>
 #include <vector>
 
-#include "rtamp/plan/change_check.hpp"
+#include "rtamp/world/change.hpp"
 #include "rtamp/util/error.hpp"
 #include "rtamp/world/geometry.hpp"
 #include "rtamp/world/scenario_io.hpp"
@@ -37,24 +37,24 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     lines.emplace_back(text.substr(start, end - start));
     start = end + 1;
   }
-  std::vector<plan::Change> changes;
+  std::vector<world::Change> changes;
   try {
-    changes = plan::parse_changes(scene, lines);
+    changes = world::parse_changes(scene, lines);
   } catch (const Error&) {
     return 0;  // the only acceptable failure
   }
   world::Scenario s = scene;
   world::Placement p = world::initial_placement(s);
   std::string hand;
-  for (const plan::Change& c : changes) {
+  for (const world::Change& c : changes) {
     const std::string canonical = c.to_string();
     try {
-      if (plan::parse_change(canonical).to_string() != canonical) fail("the canonical text reads back differently", canonical);
-      plan::check_change(c, s);
+      if (world::parse_change(canonical).to_string() != canonical) fail("the canonical text reads back differently", canonical);
+      world::check_change(c, s);
     } catch (const Error& e) {
       fail("an accepted change is refused when checked again", canonical + "\n" + e.what());
     }
-    plan::apply_change(c, s, p, hand);
+    world::apply_change(c, s, p, hand);
   }
   return 0;
 }

@@ -128,8 +128,8 @@ int run_batch(const BatchArgs& a) {
   if (!a.output.empty()) rtamp::cli::check_output_file("--output", a.output);
   if (!a.log_dir.empty()) rtamp::cli::check_output_dir("--log-dir", a.log_dir);
   batch::Grid grid;
-  grid.algorithms = parse_all(a.algos, batch::parse_algorithm);
-  grid.changes = parse_all(a.changes, batch::parse_change);
+  grid.algorithms = parse_all(a.algos, plan::parse_algorithm);
+  grid.changes = parse_all(a.changes, batch::parse_change_kind);
   grid.bt_variants = parse_all(a.bts, batch::parse_bt_variant);
   grid.trials = a.trials;
   grid.base_seed = a.seed;

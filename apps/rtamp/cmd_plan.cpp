@@ -12,7 +12,7 @@
 
 #include "command.hpp"
 #include "options.hpp"
-#include "rtamp/plan/change_check.hpp"
+#include "rtamp/world/change.hpp"
 #include "rtamp/plan/planner.hpp"
 #include "rtamp/task/validate.hpp"
 #include "rtamp/util/error.hpp"
@@ -174,7 +174,7 @@ rtamp::cli::Registrar reg{
           opt.limits.on_progress = [progress](const plan::SearchProgress& p) { (*progress)(p); };
         world::Scenario scenario = world::load_scenario(a->scenario);
         task::validate_task(scenario);  // every input is checked before anything runs
-        const std::vector<plan::Change> changes = plan::parse_changes(scenario, a->changes);
+        const std::vector<world::Change> changes = world::parse_changes(scenario, a->changes);
         plan::Planner planner(std::move(scenario), opt);
 
         nlohmann::json doc;

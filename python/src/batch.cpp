@@ -21,13 +21,13 @@ namespace {
 using TrialTuple = std::tuple<std::string, std::string, std::string, int, std::uint64_t>;
 
 TrialTuple to_tuple(const batch::Trial& t) {
-  return {batch::to_string(t.algorithm), batch::to_string(t.change), batch::to_string(t.bt), t.index, t.seed};
+  return {plan::to_string(t.algorithm), batch::to_string(t.change), batch::to_string(t.bt), t.index, t.seed};
 }
 
 batch::Trial from_tuple(const TrialTuple& t) {
   batch::Trial x;
-  x.algorithm = batch::parse_algorithm(std::get<0>(t));
-  x.change = batch::parse_change(std::get<1>(t));
+  x.algorithm = plan::parse_algorithm(std::get<0>(t));
+  x.change = batch::parse_change_kind(std::get<1>(t));
   x.bt = batch::parse_bt_variant(std::get<2>(t));
   x.index = std::get<3>(t);
   x.seed = std::get<4>(t);
@@ -48,8 +48,8 @@ void bind_batch(py::module_& m) {
         [](const std::vector<std::string>& algorithms, const std::vector<std::string>& changes,
            const std::vector<std::string>& bts, int trials, std::uint64_t seed, const std::string& shard) {
           batch::Grid g;
-          g.algorithms = parse_all<batch::Algorithm>(algorithms, batch::parse_algorithm);
-          g.changes = parse_all<batch::Change>(changes, batch::parse_change);
+          g.algorithms = parse_all<plan::Algorithm>(algorithms, plan::parse_algorithm);
+          g.changes = parse_all<batch::ChangeKind>(changes, batch::parse_change_kind);
           g.bt_variants = parse_all<batch::BtVariant>(bts, batch::parse_bt_variant);
           g.trials = trials;
           g.base_seed = seed;

@@ -304,23 +304,6 @@ void bind_plan(py::module_& m) {
         return "<rtamp.Plan cost=" + std::to_string(v.prefix_cost + v.cycle_cost) + " " + join(mv) + ">";
       });
 
-  py::class_<plan::Change>(m, "Change",
-                           "A change of the world between plans: build with the static constructors or\n"
-                           "Change.parse('move o1 r2' | 'add o4 block r1' | 'remove o1' | 'add-container t2 tray r1 3'\n"
-                           "| 'remove-container t2' | 'add-region r4 0.5 0.2 [capacity]').")
-      .def_static("parse", &plan::Change::parse, py::arg("text"), "A change from its text (see the class); raises rtamp.Error with the column.")
-      .def_static("relocate", &plan::Change::relocate, py::arg("thing"), py::arg("location"), "A thing moved to a location.")
-      .def_static("add_object", &plan::Change::add_object, py::arg("object"), py::arg("cls"), py::arg("location"),
-                  "A new object of class cls at a location.")
-      .def_static("remove_object", &plan::Change::remove_object, py::arg("object"), "An object taken away.")
-      .def_static("add_container", &plan::Change::add_container, py::arg("container"), py::arg("cls"),
-                  py::arg("region"), py::arg("capacity") = 4, "A new container of class cls in a region.")
-      .def_static("remove_container", &plan::Change::remove_container, py::arg("container"),
-                  "A container taken away (its contents stay where it stood).")
-      .def_static("add_region", &plan::Change::add_region, py::arg("region"), "A new region (a Region).")
-      .def("__str__", &plan::Change::to_string)
-      .def("__repr__", [](const plan::Change& c) { return "rtamp.Change.parse('" + c.to_string() + "')"; });
-
   py::class_<PyPlanner>(m, "Planner",
                         "The planning front door (OMPL SimpleSetup style):\n\n"
                         "    p = rtamp.Planner(rtamp.load_scenario('3-block-tray'))\n"
@@ -344,11 +327,11 @@ void bind_plan(py::module_& m) {
            "released while it searches).")
       .def("apply",
            [](PyPlanner& p, const py::object& c) {
-             const plan::Change ch =
-                 py::isinstance<py::str>(c) ? plan::Change::parse(c.cast<std::string>()) : c.cast<plan::Change>();
+             const world::Change ch =
+                 py::isinstance<py::str>(c) ? world::Change::parse(c.cast<std::string>()) : c.cast<world::Change>();
              p.locked([&](plan::Planner& pl) { pl.apply(ch); });
            },
-           py::arg("change"), "Applies a change of the world (a Change or its text, e.g. 'move o1 r2').")
+           py::arg("change"), "Applies a change of the world (a Change, e.g. an Intervention, or its text, e.g. 'move o1 r2').")
       .def("execute",
            [](PyPlanner& p, const StepView& s) {
              p.locked([&](plan::Planner& pl) { pl.execute(task::Action::unpack(s.packed)); });

@@ -30,7 +30,7 @@ py::object location_tuple(const SourceLocation& w) {
 Intervention::Kind parse_intervention_kind(const std::string& s) {
   return parse_choice(kInterventionKinds, s, "intervention kind");
 }
-const char* intervention_kind_name(Intervention::Kind k) { return choice_name(kInterventionKinds, k); }
+const char* intervention_kind_name(Intervention::Kind k) { return world::to_string(k); }
 
 void bind_scenario(py::module_& m) {
   py::class_<Region>(m, "Region", "A fixed region of the table: an axis-aligned box [center ± size/2] in x, y (metres).")
@@ -98,9 +98,37 @@ void bind_scenario(py::module_& m) {
       .def_readwrite("base", &Robot::base, "Where its base stands (x, y, z; m).")
       .def_readwrite("yaw", &Robot::yaw, "Its base's turn about world z (rad).");
 
-  py::class_<Intervention>(m, "Intervention",
-                           "A person's action on the world: kind 'relocate', 'add', 'remove', 'add-container',\n"
-                           "'remove-container' or 'take-from-gripper', at `time` seconds.")
+  py::class_<Change>(m, "Change",
+                     "A change of the world (one type for the planner, the worlds and the loop): build with the\n"
+                     "static constructors or Change.parse('move o1 r2' | 'add o4 block r1' | 'remove o1' |\n"
+                     "'add-container t2 tray r1 3' | 'remove-container t2' | 'add-region r4 0.5 0.2 [capacity]').\n"
+                     "Planner.apply takes one; an Intervention is a Change at a time.")
+      .def_static("parse", &Change::parse, py::arg("text"),
+                  "A change from its text (see the class); raises rtamp.Error with the column.")
+      .def_static("relocate", &Change::relocate, py::arg("thing"), py::arg("location"), "A thing moved to a location.")
+      .def_static("add_object", &Change::add_object, py::arg("object"), py::arg("cls"), py::arg("location"),
+                  "A new object of class cls at a location.")
+      .def_static("remove_object", &Change::remove_object, py::arg("object"), "An object taken away.")
+      .def_static("add_container", &Change::add_container, py::arg("container"), py::arg("cls"), py::arg("region"),
+                  py::arg("capacity") = 4, "A new container of class cls in a region.")
+      .def_static("remove_container", &Change::remove_container, py::arg("container"),
+                  "A container taken away (its contents stay where it stood).")
+      .def_static("add_region", &Change::add_region, py::arg("region"), "A new region (a Region).")
+      .def_static("take_from_gripper", &Change::take_from_gripper, py::arg("location") = "",
+                  "Take what the gripper holds (to `location`, else away): for worlds; the planner refuses it.")
+      .def_property_readonly("kind", [](const Change& c) { return world::to_string(c.kind); },
+                             "'relocate', 'add', 'remove', 'add-container', 'remove-container',\n"
+                             "'take-from-gripper' or 'add-region'.")
+      .def_readonly("subject", &Change::subject, "The object, container or region ('' for take-from-gripper).")
+      .def_readonly("cls", &Change::cls, "The class of an added object or container.")
+      .def_readonly("location", &Change::location, "A region or container name ('' if none).")
+      .def_readonly("capacity", &Change::capacity, "An added container's capacity.")
+      .def("__str__", &Change::to_string)
+      .def("__repr__", [](const Change& c) { return "rtamp.Change.parse('" + c.to_string() + "')"; });
+
+  py::class_<Intervention, Change>(m, "Intervention",
+                           "A person's action on the world (a Change at `time` seconds): kind 'relocate', 'add',\n"
+                           "'remove', 'add-container', 'remove-container' or 'take-from-gripper'.")
       .def(py::init([](const std::string& kind, std::string subject, std::string location, std::string cls,
                        double time) {
              Intervention iv;

@@ -151,6 +151,23 @@ def test_change_text():
     assert str(rtamp.Change.add_container("t2", "tray", "r1", 3)).startswith("add-container t2")
     assert str(rtamp.Change.remove_container("t2")) == "remove-container t2"
     assert str(rtamp.Change.add_region(rtamp.Region("r7", center=[0.5, 0, 0]))).startswith("add-region r7")
+    a = rtamp.Change.parse("add o9 cup r2")
+    assert (a.kind, a.subject, a.cls, a.location) == ("add", "o9", "cup", "r2")
+    assert rtamp.Change.take_from_gripper("r1").kind == "take-from-gripper"
+
+
+def test_one_change_type_for_planner_and_worlds(tray):
+    # An Intervention (a person's scripted action) is a Change: the planner takes it as it is.
+    iv = rtamp.Intervention("relocate", "o1", "r3", time=2.0)
+    assert isinstance(iv, rtamp.Change) and str(iv) == "move o1 r3"
+    p = rtamp.Planner(tray)
+    p.apply(iv)
+    q = rtamp.Planner(tray)
+    q.apply("move o1 r3")
+    assert p.plan().cost == pytest.approx(q.plan().cost)
+    # A change of a running robot's gripper is not one the planner can apply.
+    with pytest.raises(rtamp.Error, match="take-from-gripper"):
+        p.apply(rtamp.Change.take_from_gripper())
 
 
 def test_names_come_from_the_planners_registry(tray):

@@ -40,8 +40,8 @@ std::string csv_of(const std::vector<Trial>& trials) {
 
 std::vector<Trial> grid() {
   Grid g;
-  g.algorithms = {Algorithm::Dijkstra, Algorithm::AStarExperience, Algorithm::AStar};
-  g.changes = {Change::Add, Change::Relocate, Change::Remove};
+  g.algorithms = {rtamp::plan::Algorithm::Dijkstra, rtamp::plan::Algorithm::AStarExperience, rtamp::plan::Algorithm::AStar};
+  g.changes = {ChangeKind::Add, ChangeKind::Relocate, ChangeKind::Remove};
   g.bt_variants = {BtVariant::OnlineAction};
   g.trials = 4;
   g.base_seed = 11;
@@ -117,8 +117,8 @@ TEST(Merge, HeaderMismatchRejected) {
 
 TEST(Merge, DifferentSeedsRejected) {
   Grid g;
-  g.algorithms = {Algorithm::AStar};
-  g.changes = {Change::Relocate};
+  g.algorithms = {rtamp::plan::Algorithm::AStar};
+  g.changes = {ChangeKind::Relocate};
   g.bt_variants = {BtVariant::OnlineAction, BtVariant::Offline};
   g.trials = 2;
   g.base_seed = 1;

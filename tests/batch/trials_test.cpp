@@ -16,8 +16,8 @@ using namespace rtamp::batch;
 
 Grid full_grid(int trials) {
   Grid g;
-  g.algorithms = {Algorithm::AStarExperience, Algorithm::AStar, Algorithm::Dijkstra};
-  g.changes = {Change::Relocate, Change::Add, Change::Remove, Change::None};
+  g.algorithms = {rtamp::plan::Algorithm::AStarExperience, rtamp::plan::Algorithm::AStar, rtamp::plan::Algorithm::Dijkstra};
+  g.changes = {ChangeKind::Relocate, ChangeKind::Add, ChangeKind::Remove, ChangeKind::None};
   g.bt_variants = {BtVariant::OnlineAction, BtVariant::OnlineState, BtVariant::Offline};
   g.trials = trials;
   g.base_seed = 7;
@@ -55,7 +55,7 @@ TEST(Trials, SeedsArePairedAcrossAlgorithmsAndVariants) {
 
 TEST(Trials, DuplicatesDroppedAndEmptyRejected) {
   Grid g = full_grid(2);
-  g.algorithms = {Algorithm::AStar, Algorithm::AStar};
+  g.algorithms = {rtamp::plan::Algorithm::AStar, rtamp::plan::Algorithm::AStar};
   EXPECT_EQ(make_trials(g).size(), 1u * 4u * 3u * 2u);
   g.changes.clear();
   EXPECT_THROW(make_trials(g), rtamp::Error);
@@ -64,17 +64,17 @@ TEST(Trials, DuplicatesDroppedAndEmptyRejected) {
 }
 
 TEST(Trials, NamesRoundTrip) {
-  for (auto a : {Algorithm::AStarExperience, Algorithm::AStar, Algorithm::Dijkstra})
-    EXPECT_EQ(parse_algorithm(to_string(a)), a);
-  for (auto c : {Change::Relocate, Change::Remove, Change::Add, Change::None}) EXPECT_EQ(parse_change(to_string(c)), c);
+  for (auto c : {ChangeKind::Relocate, ChangeKind::Remove, ChangeKind::Add, ChangeKind::None}) EXPECT_EQ(parse_change_kind(to_string(c)), c);
   for (auto b : {BtVariant::OnlineAction, BtVariant::OnlineState, BtVariant::Offline})
     EXPECT_EQ(parse_bt_variant(to_string(b)), b);
-  EXPECT_THROW(parse_algorithm("bfs"), rtamp::Error);
-  EXPECT_THROW(parse_change("move"), rtamp::Error);
+  EXPECT_THROW(parse_change_kind("move"), rtamp::Error);
   EXPECT_THROW(parse_bt_variant("online"), rtamp::Error);
   EXPECT_LT(change_rank("relocate"), change_rank("remove"));
   EXPECT_LT(change_rank("remove"), change_rank("add"));
-  EXPECT_LT(algorithm_rank("astar-exp"), algorithm_rank("dijkstra"));
+  // Algorithms rank in the registry's order (Table I: astar-exp, astar, dijkstra).
+  EXPECT_LT(algorithm_rank("astar-exp"), algorithm_rank("astar"));
+  EXPECT_LT(algorithm_rank("astar"), algorithm_rank("dijkstra"));
+  EXPECT_GT(algorithm_rank("bfs"), algorithm_rank("dijkstra"));
   EXPECT_GT(bt_rank("unknown"), bt_rank("offline"));
 }
 

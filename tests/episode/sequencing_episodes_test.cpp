@@ -170,6 +170,7 @@ const char* kind_name(Kind k, bool with_location) {
     case Kind::AddContainer: return "add-container";
     case Kind::RemoveContainer: return "remove-container";
     case Kind::TakeFromGripper: return with_location ? "take-to" : "take-away";
+    case Kind::AddRegion: return "add-region";
   }
   return "?";
 }
@@ -258,6 +259,8 @@ std::optional<world::Intervention> aim(const Task& task, const std::vector<Windo
         if (with_location) iv.location = other_location(s, w);
         else if (phase != Phase::Approach && needed(w.thing)) continue;
         break;
+      case Kind::AddRegion:
+        continue;  // not a person's change
     }
     std::ostringstream d;
     d << task.name << " " << kind_name(kind, with_location) << " " << (iv.subject.empty() ? "" : iv.subject + " ")

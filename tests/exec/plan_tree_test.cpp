@@ -198,7 +198,7 @@ TEST(PlanTree, ActionAddedInTheMiddleIsOneInsert) {
   // 3-block + an added block: the new plan moves it as well.
   Fixture f("3-block", ConditionMode::Action);
   f.tree.set_plan(f.plan_from(f.world));
-  f.planner.apply(plan::Change::add_object("o4", "block", "r1"));
+  f.planner.apply(world::Change::add_object("o4", "block", "r1"));
   world::Placement now = f.world;
   now.set("o4", "r1", "block");
   const auto tuples = f.plan_from(now);

@@ -79,9 +79,9 @@ TEST(PlannerAllocations, ReplanAfterARelocationAllocatesAlmostNothing) {
   o.symmetry = false;
   Planner p(layout(6, 5), o);
   ASSERT_TRUE(p.plan().found);
-  p.apply(Change::relocate("o1", "r3"));
+  p.apply(world::Change::relocate("o1", "r3"));
   (void)p.plan();  // warm the new region of the graph
-  p.apply(Change::relocate("o1", "r1"));
+  p.apply(world::Change::relocate("o1", "r1"));
   const Count c = count_plan(p);
   ASSERT_TRUE(c.result.found);
   EXPECT_LT(c.allocations, 200) << c.result.stats.expanded << " expanded";

@@ -4,7 +4,7 @@
 #include <gtest/gtest.h>
 
 #include "plan_checks.hpp"
-#include "rtamp/plan/experience.hpp"
+#include "rtamp/plan/motion_cost_cache.hpp"
 #include "rtamp/plan/heuristic.hpp"
 #include "rtamp/plan/motion_cost.hpp"
 

@@ -83,7 +83,7 @@ TEST(Optimality, ReplansAfterChangesMatchBruteForce) {
       } else if (kind == 3 && cur.objects.size() > 1) {
         change = "remove " + cur.objects[rng() % cur.objects.size()].name;
       } else if (kind == 4 && cur.regions.size() < 4 && cur.objects.size() <= 3) {
-        // Far from the scenario's regions: regions must be disjoint (plan/change_check.hpp).
+        // Far from the scenario's regions: regions must be disjoint (world/change.hpp).
         change = "add-region x" + std::to_string(k) + " " + std::to_string(2.0 + k) + " -2.0 3";
       } else if (kind == 5 && !cur.containers.empty()) {
         change = "remove-container t1";
@@ -93,7 +93,7 @@ TEST(Optimality, ReplansAfterChangesMatchBruteForce) {
         continue;
       }
       SCOPED_TRACE(change);
-      p.apply(plan::Change::parse(change));
+      p.apply(world::Change::parse(change));
       const plan::PlanResult r = p.plan();
       const auto want = oracle::min_lasso(p.scenario(), p.placement(), p.hand(), p.automaton(), "euclid");
       ASSERT_EQ(r.found, want.has_value()) << r.message;
@@ -140,7 +140,7 @@ TEST(Optimality, ManyReplansOnOneGraphMatchBruteForce) {
         if (things.empty()) break;
         const std::string t = things[rng() % things.size()], l = locs[rng() % locs.size()];
         SCOPED_TRACE("move " + t + " " + l);
-        p.apply(plan::Change::relocate(t, l));
+        p.apply(world::Change::relocate(t, l));
       }
       r = p.plan();
       const auto want = oracle::min_lasso(p.scenario(), p.placement(), p.hand(), p.automaton(), model);

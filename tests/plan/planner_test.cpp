@@ -98,7 +98,7 @@ TEST(Planner, ReplanAfterEachChangeKindEqualsColdPlan) {
     p.execute(r.plan.prefix.front().action);  // the robot made progress
     for (const auto& c : changes) {
       SCOPED_TRACE(c);
-      p.apply(plan::Change::parse(c));
+      p.apply(world::Change::parse(c));
       r = p.plan();
       plan::PlannerOptions cold;
       cold.algorithm = plan::Algorithm::AStar;
@@ -122,8 +122,8 @@ TEST(Planner, ExperienceReusesTheGraphOnRelocation) {
   (void)exp.plan();
   (void)cold.plan();
   for (const char* c : {"move o2 r2", "move o1 r3", "move o2 r1"}) {
-    exp.apply(plan::Change::parse(c));
-    cold.apply(plan::Change::parse(c));
+    exp.apply(world::Change::parse(c));
+    cold.apply(world::Change::parse(c));
     const auto re = exp.plan(), rc = cold.plan();
     ASSERT_TRUE(re.found && rc.found);
     EXPECT_NEAR(re.plan.cost(), rc.plan.cost(), 1e-9);
@@ -193,11 +193,12 @@ TEST(Planner, PatrolFromAnAcceptingStartDoesNotSearchTheWholeGraph) {
     const plan::NodeId init = g.find_or_add(astar.system().canonical(astar.state()), astar.automaton().initial);
     ASSERT_TRUE(g.accepting(init));
     plan::LassoSearch ls;
+    plan::Experience x;
     plan::SearchStats st;
     plan::SearchLimits one;
     one.max_nodes = 2000;  // the first cycle search would need ~30k nodes without the bound
-    (void)ls.run(g, init, h, true, false, one, 0, st);
-    EXPECT_EQ(g.cycle(init).lower, plan::kInf) << "the start's cycle search did not see that none exists";
+    (void)ls.run(g, x, init, h, true, false, one, 0, st);
+    EXPECT_EQ(x.cycle(init).lower, plan::kInf) << "the start's cycle search did not see that none exists";
   }
   o.algorithm = plan::Algorithm::Dijkstra;
   plan::Planner dijkstra(sc, o);
@@ -318,15 +319,15 @@ TEST(Planner, QuotedAtomsAreProposionExpressions) {
 
 TEST(Planner, BadChangesAreErrors) {
   plan::Planner p(world::load_scenario("3-block-tray"));
-  EXPECT_THROW(p.apply(plan::Change::parse("move nobody r1")), Error);
-  EXPECT_THROW(p.apply(plan::Change::parse("move o1 nowhere")), Error);
-  EXPECT_THROW(p.apply(plan::Change::parse("move r3 r3")), Error);
-  EXPECT_THROW(p.apply(plan::Change::parse("add o1 block r1")), Error);
-  EXPECT_THROW(p.apply(plan::Change::parse("remove r3")), Error);
-  EXPECT_THROW(plan::Change::parse("jump o1"), Error);
-  EXPECT_THROW(plan::Change::parse("add-region x a b"), Error);
-  EXPECT_THROW(plan::Change::parse(""), Error);
-  EXPECT_EQ(plan::Change::parse("add o9 cup r2").to_string(), "add o9 cup r2");
+  EXPECT_THROW(p.apply(world::Change::parse("move nobody r1")), Error);
+  EXPECT_THROW(p.apply(world::Change::parse("move o1 nowhere")), Error);
+  EXPECT_THROW(p.apply(world::Change::parse("move r3 r3")), Error);
+  EXPECT_THROW(p.apply(world::Change::parse("add o1 block r1")), Error);
+  EXPECT_THROW(p.apply(world::Change::parse("remove r3")), Error);
+  EXPECT_THROW(world::Change::parse("jump o1"), Error);
+  EXPECT_THROW(world::Change::parse("add-region x a b"), Error);
+  EXPECT_THROW(world::Change::parse(""), Error);
+  EXPECT_EQ(world::Change::parse("add o9 cup r2").to_string(), "add o9 cup r2");
 }
 
 TEST(Planner, ActionTuples) {

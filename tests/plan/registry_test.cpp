@@ -2,8 +2,7 @@
 // through parse_algorithm and plan::to_string, unknown names get a
 // did-you-mean, cost models are built by name (ik once the robot layer
 // registered it), registering a name again replaces it, and the planner
-// resolves PlannerOptions::cost through the registry; the batch grid's names
-// agree with it.
+// resolves PlannerOptions::cost through the registry.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -11,7 +10,6 @@
 #include <limits>
 #include <set>
 
-#include "rtamp/batch/trials.hpp"
 #include "rtamp/plan/planner.hpp"
 #include "rtamp/plan/registry.hpp"
 #include "rtamp/robot/ik_motion_cost.hpp"
@@ -40,12 +38,6 @@ TEST(Registry, AlgorithmNamesRoundTrip) {
     EXPECT_TRUE(names.insert(a.name).second) << a.name;
   }
   EXPECT_EQ(algorithm_names(), (std::vector<std::string>{"astar-exp", "astar", "dijkstra"}));
-  // The batch grid's vocabulary (batch/trials.hpp, which links no planner) is the same, in the same order.
-  for (std::size_t i = 0; i < algorithms().size(); ++i) {
-    const std::string n = algorithms()[i].name;
-    EXPECT_EQ(batch::to_string(batch::parse_algorithm(n)), n);
-    EXPECT_EQ(batch::algorithm_rank(n), static_cast<int>(i));
-  }
   EXPECT_TRUE(algorithm_info(Algorithm::AStarExperience).keeps_experience);
   EXPECT_FALSE(algorithm_info(Algorithm::AStar).keeps_experience);
 }

@@ -125,9 +125,9 @@ TEST(Ties, TrayScenarioPlansHaveTheFewestMovesAmongCheapest) {
       plan::Planner p(world::load_scenario("3-block-tray"), opt);
       check_ties(p, p.plan(), model);
       // From other states too: the tray carrying a block, blocks spread.
-      p.apply(plan::Change::relocate("o1", "r3"));  // into the tray
+      p.apply(world::Change::relocate("o1", "r3"));  // into the tray
       check_ties(p, p.plan(), model);
-      p.apply(plan::Change::relocate("o2", "r2"));
+      p.apply(world::Change::relocate("o2", "r2"));
       check_ties(p, p.plan(), model);
     }
 }
@@ -178,7 +178,7 @@ TEST(Ties, ExperienceReplans) {
         std::vector<std::string> locs;
         for (const auto& reg : cur.regions) locs.push_back(reg.name);
         for (const auto& c : cur.containers) locs.push_back(c.name);
-        p.apply(plan::Change::relocate(cur.objects[rng() % cur.objects.size()].name, locs[rng() % locs.size()]));
+        p.apply(world::Change::relocate(cur.objects[rng() % cur.objects.size()].name, locs[rng() % locs.size()]));
       }
       SCOPED_TRACE("query " + std::to_string(k));
       r = p.plan();

@@ -259,9 +259,9 @@ std::vector<EpisodeRecord> read_csv(const std::string& text, const std::string& 
     r.bt = f[kBt];
     r.change = f[kChange];
     try {
-      parse_algorithm(r.algorithm);
+      plan::parse_algorithm(r.algorithm);
       parse_bt_variant(r.bt);
-      parse_change(r.change);
+      parse_change_kind(r.change);
     } catch (const Error& e) {
       throw Error(e.message(), SourceLocation{file, line, 0});
     }

@@ -14,11 +14,7 @@ namespace rtamp::batch {
 episode::EpisodeOptions episode_options(const Trial& t, const BatchOptions& o) {
   episode::EpisodeOptions e;
   e.world = o.world;
-  switch (t.algorithm) {
-    case Algorithm::AStarExperience: e.algorithm = plan::Algorithm::AStarExperience; break;
-    case Algorithm::AStar: e.algorithm = plan::Algorithm::AStar; break;
-    case Algorithm::Dijkstra: e.algorithm = plan::Algorithm::Dijkstra; break;
-  }
+  e.algorithm = t.algorithm;
   // The paper's three BT variants: online reconfiguration with action or
   // state conditions, and offline reconstruction with action conditions.
   switch (t.bt) {
@@ -36,10 +32,10 @@ episode::EpisodeOptions episode_options(const Trial& t, const BatchOptions& o) {
       break;
   }
   switch (t.change) {
-    case Change::Relocate: e.random_change = world::Intervention::Kind::Relocate; break;
-    case Change::Add: e.random_change = world::Intervention::Kind::Add; break;
-    case Change::Remove: e.random_change = world::Intervention::Kind::Remove; break;
-    case Change::None: e.random_change.reset(); break;
+    case ChangeKind::Relocate: e.random_change = world::Intervention::Kind::Relocate; break;
+    case ChangeKind::Add: e.random_change = world::Intervention::Kind::Add; break;
+    case ChangeKind::Remove: e.random_change = world::Intervention::Kind::Remove; break;
+    case ChangeKind::None: e.random_change.reset(); break;
   }
   e.cost = o.cost;
   e.seed = t.seed;

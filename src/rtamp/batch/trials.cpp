@@ -9,7 +9,6 @@ namespace rtamp::batch {
 
 namespace {
 
-constexpr std::string_view kAlgorithms[] = {"astar-exp", "astar", "dijkstra"};
 constexpr std::string_view kChanges[] = {"relocate", "remove", "add", "none"};
 constexpr std::string_view kBtVariants[] = {"online-action", "online-state", "offline"};
 
@@ -63,15 +62,18 @@ int parse_int(std::string_view s, std::string_view whole) {
 
 }  // namespace
 
-const char* to_string(Algorithm a) { return kAlgorithms[static_cast<int>(a)].data(); }
-const char* to_string(Change c) { return kChanges[static_cast<int>(c)].data(); }
+const char* to_string(ChangeKind c) { return kChanges[static_cast<int>(c)].data(); }
 const char* to_string(BtVariant v) { return kBtVariants[static_cast<int>(v)].data(); }
 
-Algorithm parse_algorithm(std::string_view s) { return parse_in<Algorithm>(kAlgorithms, s, "algorithm"); }
-Change parse_change(std::string_view s) { return parse_in<Change>(kChanges, s, "change kind"); }
+ChangeKind parse_change_kind(std::string_view s) { return parse_in<ChangeKind>(kChanges, s, "change kind"); }
 BtVariant parse_bt_variant(std::string_view s) { return parse_in<BtVariant>(kBtVariants, s, "BT variant"); }
 
-int algorithm_rank(std::string_view name) { return rank_in(kAlgorithms, name); }
+int algorithm_rank(std::string_view name) {
+  const auto& all = plan::algorithms();
+  for (std::size_t i = 0; i < all.size(); ++i)
+    if (all[i].name == name) return static_cast<int>(i);
+  return static_cast<int>(all.size());
+}
 int change_rank(std::string_view name) { return rank_in(kChanges, name); }
 int bt_rank(std::string_view name) { return rank_in(kBtVariants, name); }
 
@@ -94,8 +96,8 @@ std::vector<Trial> make_trials(const Grid& grid) {
   out.reserve(static_cast<std::size_t>(grid.trials) * algos.size() * changes.size() * bts.size());
   for (int t = 1; t <= grid.trials; ++t) {
     const std::uint64_t seed = trial_seed(t, grid.base_seed);
-    for (Change c : changes)
-      for (Algorithm a : algos)
+    for (ChangeKind c : changes)
+      for (plan::Algorithm a : algos)
         for (BtVariant b : bts) out.push_back(Trial{a, c, b, t, seed});
   }
   return out;

@@ -23,32 +23,36 @@
 #include <string_view>
 #include <vector>
 
+#include "rtamp/plan/registry.hpp"
+
 namespace rtamp::batch {
 
-// The names used on the command line and in the CSV.
-enum class Algorithm { AStarExperience, AStar, Dijkstra };          // astar-exp | astar | dijkstra
-enum class Change { Relocate, Remove, Add, None };                  // relocate | remove | add | none
-enum class BtVariant { OnlineAction, OnlineState, Offline };        // online-action | online-state | offline
+// The names used on the command line and in the CSV. Algorithms are the
+// planner's (plan::Algorithm; names, parsing and order from plan/registry.hpp).
+// A ChangeKind is the kind of random change a trial makes (or none), a grid
+// axis: which change, where and when is drawn from the trial's seed when the
+// episode runs (episode::EpisodeOptions::random_change), so it is a choice and
+// not a change of the world (world::Change).
+enum class ChangeKind { Relocate, Remove, Add, None };          // relocate | remove | add | none
+enum class BtVariant { OnlineAction, OnlineState, Offline };    // online-action | online-state | offline
 
-const char* to_string(Algorithm a);
-const char* to_string(Change c);
+const char* to_string(ChangeKind c);
 const char* to_string(BtVariant v);
 // Parsing; throws rtamp::Error naming the accepted values.
-Algorithm parse_algorithm(std::string_view s);
-Change parse_change(std::string_view s);
+ChangeKind parse_change_kind(std::string_view s);
 BtVariant parse_bt_variant(std::string_view s);
 
 // Canonical order of a name inside its kind (the paper's Table I order:
-// relocate, remove, add; astar-exp, astar, dijkstra; online-action,
-// online-state, offline). Unknown names rank after all known ones.
+// relocate, remove, add; astar-exp, astar, dijkstra as in plan::algorithms();
+// online-action, online-state, offline). Unknown names rank after all known ones.
 int algorithm_rank(std::string_view name);
 int change_rank(std::string_view name);
 int bt_rank(std::string_view name);
 
 // One episode to run.
 struct Trial {
-  Algorithm algorithm = Algorithm::AStarExperience;
-  Change change = Change::Relocate;
+  plan::Algorithm algorithm = plan::Algorithm::AStarExperience;
+  ChangeKind change = ChangeKind::Relocate;
   BtVariant bt = BtVariant::OnlineAction;
   int index = 1;           // 1-based trial number within its cell
   std::uint64_t seed = 0;  // trial_seed(index, base seed)
@@ -58,8 +62,8 @@ struct Trial {
 std::uint64_t trial_seed(int index, std::uint64_t base);
 
 struct Grid {
-  std::vector<Algorithm> algorithms;
-  std::vector<Change> changes;
+  std::vector<plan::Algorithm> algorithms;
+  std::vector<ChangeKind> changes;
   std::vector<BtVariant> bt_variants;
   int trials = 30;
   std::uint64_t base_seed = 1;

@@ -148,15 +148,15 @@ void ReactiveLoop::apply_thing_changes(const std::vector<std::string>& added,
         int capacity = 4;
         for (const auto& k : planner_->scenario().containers)
           if (k.cls == thing.cls) capacity = k.capacity;
-        planner_->apply(plan::Change::add_container(name, thing.cls, thing.location, capacity));
+        planner_->apply(world::Change::add_container(name, thing.cls, thing.location, capacity));
       } else {
-        planner_->apply(plan::Change::add_object(name, thing.cls, thing.location));
+        planner_->apply(world::Change::add_object(name, thing.cls, thing.location));
       }
     }
   };
   for (const std::string& name : removed) {
     const bool container = planner_->placement().things.at(name).container;
-    planner_->apply(container ? plan::Change::remove_container(name) : plan::Change::remove_object(name));
+    planner_->apply(container ? world::Change::remove_container(name) : world::Change::remove_object(name));
   }
   add(true);
   add(false);

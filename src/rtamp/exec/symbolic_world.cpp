@@ -674,6 +674,8 @@ WorldEvent SymbolicWorld::apply_now(world::Intervention iv) {
       lose_held("taken from the gripper");
       return done(true, h + " taken from the gripper to " + to);
     }
+    case Kind::AddRegion:
+      return done(false, "a region cannot be added to a running world (add-region is a change for the planner)");
   }
   return done(false, "unknown intervention");
 }
@@ -737,6 +739,8 @@ world::Intervention SymbolicWorld::random_intervention() {
     case Kind::TakeFromGripper:
       if (next_u64(iv_rng_) % 2) iv.location = random_target(held(), body_of(held()), is_container(held()));
       break;
+    case Kind::AddRegion:
+      break;  // refused by apply
   }
   return iv;
 }

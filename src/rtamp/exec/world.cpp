@@ -12,16 +12,4 @@ const char* to_string(MoveStatus s) {
   return "?";
 }
 
-const char* to_string(world::Intervention::Kind k) {
-  switch (k) {
-    case world::Intervention::Kind::Relocate: return "relocate";
-    case world::Intervention::Kind::Add: return "add";
-    case world::Intervention::Kind::Remove: return "remove";
-    case world::Intervention::Kind::AddContainer: return "add-container";
-    case world::Intervention::Kind::RemoveContainer: return "remove-container";
-    case world::Intervention::Kind::TakeFromGripper: return "take-from-gripper";
-  }
-  return "?";
-}
-
 }  // namespace rtamp::exec

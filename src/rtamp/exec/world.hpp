@@ -49,9 +49,6 @@ struct Move {
 enum class MoveStatus { Idle, Running, Succeeded, Failed };
 const char* to_string(MoveStatus s);
 
-// "relocate", "add", "remove", "add-container", "remove-container", "take-from-gripper".
-const char* to_string(world::Intervention::Kind k);
-
 // An intervention of a person, as the world applied (or refused) it.
 struct WorldEvent {
   double time = 0;

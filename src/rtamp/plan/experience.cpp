@@ -1,84 +1,77 @@
 #include "rtamp/plan/experience.hpp"
 
-#include <cmath>
+#include <algorithm>
 
 namespace rtamp::plan {
 
 namespace {
-std::int32_t quantise(double x) { return static_cast<std::int32_t>(std::lround(x * 1e4)); }
+// Makes v[n] exist, growing geometrically (new entries = fill).
+template <class T>
+void reach(std::vector<T>& v, std::uint32_t n, const T& fill) {
+  if (n < v.size()) return;
+  v.resize(std::max<std::size_t>(std::size_t{n} + 1, v.size() * 2), fill);
+}
+template <class T>
+void release(std::vector<T>& v) {
+  std::vector<T>().swap(v);
+}
 }  // namespace
 
-MotionCostCache::Key MotionCostCache::make_key(const MotionQuery& q) const {
-  Key k;
-  if (depends_ & kDependsThing) k.thing = q.thing;
-  for (int i = 0; i < 3; ++i) {
-    if (depends_ & kDependsHand) k.c[i] = quantise(q.hand[static_cast<unsigned>(i)]);
-    if (depends_ & kDependsFrom) k.c[3 + i] = quantise(q.from[static_cast<unsigned>(i)]);
-    if (depends_ & kDependsTo) k.c[6 + i] = quantise(q.to[static_cast<unsigned>(i)]);
-  }
-  return k;
+void Experience::forget_graph() {  // memory is released, as the graph's is
+  release(learned_);
+  release(cycles_);
+  release(hcache_);
+  release(via_);
+  release(solved_moves_);
+  release(cycle_at_);
+  release(cycle_store_);
 }
 
-std::uint64_t MotionCostCache::hash(const Key& k) {
-  std::uint64_t h = k.thing * 0x9e3779b97f4a7c15ull;
-  for (std::int32_t c : k.c) {
-    h ^= static_cast<std::uint32_t>(c) + 0x9e3779b97f4a7c15ull + (h << 6) + (h >> 2);
-    h *= 0xbf58476d1ce4e5b9ull;
-  }
-  return h ^ (h >> 31);
+void Experience::learn(Node n, double v) {
+  reach(learned_, n, 0.0);
+  learned_[n] = std::max(learned_[n], v);
 }
 
-void MotionCostCache::grow() {
-  std::vector<Slot> old = std::move(slots_);
-  slots_.assign(old.empty() ? 1024 : old.size() * 2, Slot{});
-  size_ = 0;
-  const std::size_t mask = slots_.size() - 1;
-  for (const Slot& s : old) {
-    if (!s.used) continue;
-    std::size_t i = hash(s.key) & mask;
-    while (slots_[i].used) i = (i + 1) & mask;
-    slots_[i] = s;
-    ++size_;
-  }
+void Experience::set_cycle(Node n, Cycle c) {
+  reach(cycles_, n, Cycle{});
+  cycles_[n] = c;
 }
 
-double MotionCostCache::lookup(const MotionQuery& q, const MotionCostModel& model) {
-  if ((size_ + 1) * 2 > slots_.size()) grow();
-  const Key k = make_key(q);
-  const std::size_t mask = slots_.size() - 1;
-  std::size_t i = hash(k) & mask;
-  while (slots_[i].used) {
-    if (slots_[i].key == k) {
-      ++hits_;
-      return slots_[i].cost;
-    }
-    i = (i + 1) & mask;
-  }
-  ++misses_;
-  const double c = model.cost(q);
-  slots_[i] = Slot{k, c, true};
-  ++size_;
-  return c;
+bool Experience::cycle_path(Node n, std::vector<std::uint32_t>& out) const {
+  if (n >= cycle_at_.size() || cycle_at_[n] == 0) return false;
+  const std::size_t at = cycle_at_[n] - 1;
+  const std::uint32_t len = cycle_store_[at];
+  out.insert(out.end(), cycle_store_.begin() + static_cast<std::ptrdiff_t>(at + 1),
+             cycle_store_.begin() + static_cast<std::ptrdiff_t>(at + 1 + len));
+  return true;
 }
 
-void MotionCostCache::forget_thing(std::uint64_t thing_uid) {
-  if (!(depends_ & kDependsThing)) return;  // entries do not depend on the thing
-  std::vector<Slot> old = std::move(slots_);
-  slots_.assign(old.size(), Slot{});
-  size_ = 0;
-  const std::size_t mask = slots_.size() - 1;
-  for (const Slot& s : old) {
-    if (!s.used || s.key.thing == thing_uid) continue;
-    std::size_t i = hash(s.key) & mask;
-    while (slots_[i].used) i = (i + 1) & mask;
-    slots_[i] = s;
-    ++size_;
-  }
+void Experience::set_cycle_path(Node n, const std::vector<std::uint32_t>& edges) {
+  reach(cycle_at_, n, std::uint32_t{0});
+  if (cycle_at_[n] != 0) return;  // recorded once; costs never change
+  cycle_at_[n] = static_cast<std::uint32_t>(cycle_store_.size() + 1);
+  cycle_store_.push_back(static_cast<std::uint32_t>(edges.size()));
+  cycle_store_.insert(cycle_store_.end(), edges.begin(), edges.end());
 }
 
-void MotionCostCache::clear() {
-  slots_.clear();
-  size_ = 0;
+void Experience::set_solved(Node n, double value, std::uint32_t moves, std::uint32_t via) {
+  reach(learned_, n, 0.0);
+  reach(via_, n, kNoVia);
+  reach(solved_moves_, n, std::uint32_t{0});
+  learned_[n] = value;
+  via_[n] = via;
+  solved_moves_[n] = moves;
+}
+
+void Experience::cache_h(Node n, double v) {
+  reach(hcache_, n, kUnknownH);
+  hcache_[n] = v;
+}
+
+std::size_t Experience::memory_bytes() const {
+  return learned_.capacity() * sizeof(double) + cycles_.capacity() * sizeof(Cycle) +
+         hcache_.capacity() * sizeof(double) + via_.capacity() * 4 + solved_moves_.capacity() * 4 +
+         cycle_at_.capacity() * 4 + cycle_store_.capacity() * 4;
 }
 
 }  // namespace rtamp::plan

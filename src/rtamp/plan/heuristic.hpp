@@ -33,7 +33,8 @@
 // Admissible by the arguments above; consistent when lower_bound is (the
 // search re-opens nodes anyway, so admissibility is all optimality needs).
 //
-// ExperienceHeuristic = max(GuardHeuristic, the graph's learned bounds).
+// ExperienceHeuristic = max(GuardHeuristic, the learned bounds of the
+// graph's experience, plan/experience.hpp).
 #pragma once
 
 #include <memory>
@@ -41,6 +42,7 @@
 #include <vector>
 
 #include "rtamp/plan/chain_bound.hpp"
+#include "rtamp/plan/experience.hpp"
 #include "rtamp/plan/product_graph.hpp"
 
 namespace rtamp::plan {
@@ -126,26 +128,28 @@ class GuardHeuristic : public Heuristic {
 
 class ExperienceHeuristic final : public Heuristic {
  public:
-  explicit ExperienceHeuristic(const ProductGraph& g) : guard_(g) {}
+  // `x` must be the experience of `g` and outlive the heuristic.
+  ExperienceHeuristic(const ProductGraph& g, Experience& x) : guard_(g), x_(&x) {}
   std::string name() const override { return "guard+experience"; }
-  // The guard bound is cached per node in the graph (it does not depend on
-  // the start), so replans on the same graph never recompute it.
+  // The guard bound is cached per node in the experience (it does not depend
+  // on the start), so replans on the same graph never recompute it.
   double walk_bound(const ProductGraph& g, NodeId n, std::uint32_t target) override {
     return guard_.walk_bound(g, n, target);
   }
   double cycle_bound(const ProductGraph& g, NodeId n) override { return guard_.cycle_bound(g, n); }
   double estimate(const ProductGraph& g, NodeId n) override {
-    double h = g.cached_h(n);
+    double h = x_->cached_h(n);
     if (h < 0) {
       h = guard_.estimate(g, n);
-      const_cast<ProductGraph&>(g).cache_h(n, h);
+      x_->cache_h(n, h);
     }
-    const double l = g.learned(n);
+    const double l = x_->learned(n);
     return h > l ? h : l;
   }
 
  private:
   GuardHeuristic guard_;
+  Experience* x_;
 };
 
 // Lower bound on the cost of going from state s to exactly the state `target`

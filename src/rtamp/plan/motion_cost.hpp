@@ -7,9 +7,9 @@
 // stable id, class and whether it is a container), the hand's point before
 // the action, the thing's point, and the destination's point (points are
 // defined in task/transition_system.hpp: centres of locations; the hand starts
-// at the robot's home point, base + (0, 0, 0.5 m)). The experience cache
-// (experience.hpp) keys on the query, masked by depends(), so a model must not
-// read anything else. `stay` always costs 0 and is never asked.
+// at the robot's home point, base + (0, 0, 0.5 m)). The motion-cost cache
+// (motion_cost_cache.hpp) keys on the query, masked by depends(), so a model
+// must not read anything else. `stay` always costs 0 and is never asked.
 //
 // Built-in models, for move(o, l) with the hand at point h, o at point p and
 // l at point t (Euclidean norms |.|, metres):

@@ -4,7 +4,7 @@
 #include <sstream>
 
 #include "rtamp/automata/translate.hpp"
-#include "rtamp/plan/change_check.hpp"
+#include "rtamp/world/change.hpp"
 #include "rtamp/task/validate.hpp"
 #include "rtamp/ltl/parser.hpp"
 #include "rtamp/util/error.hpp"
@@ -22,70 +22,6 @@ std::optional<world::PropExpr> parse_atom(const std::string& atom) {
   }
 }
 }  // namespace
-
-// ---- Change ----------------------------------------------------------------
-
-Change Change::relocate(std::string thing, std::string location) {
-  Change c;
-  c.kind = Kind::Relocate;
-  c.name = std::move(thing);
-  c.location = std::move(location);
-  return c;
-}
-Change Change::add_object(std::string object, std::string cls, std::string location) {
-  Change c;
-  c.kind = Kind::AddObject;
-  c.name = std::move(object);
-  c.cls = std::move(cls);
-  c.location = std::move(location);
-  return c;
-}
-Change Change::remove_object(std::string object) {
-  Change c;
-  c.kind = Kind::RemoveObject;
-  c.name = std::move(object);
-  return c;
-}
-Change Change::add_container(std::string container, std::string cls, std::string region, int capacity) {
-  Change c;
-  c.kind = Kind::AddContainer;
-  c.name = std::move(container);
-  c.cls = std::move(cls);
-  c.location = std::move(region);
-  c.capacity = capacity;
-  return c;
-}
-Change Change::remove_container(std::string container) {
-  Change c;
-  c.kind = Kind::RemoveContainer;
-  c.name = std::move(container);
-  return c;
-}
-Change Change::add_region(world::Region region) {
-  Change c;
-  c.kind = Kind::AddRegion;
-  c.name = region.name;
-  c.region = std::move(region);
-  return c;
-}
-
-Change Change::parse(const std::string& text) { return parse_change(text); }
-
-std::string Change::to_string() const {
-  switch (kind) {
-    case Kind::Relocate: return "move " + name + " " + location;
-    case Kind::AddObject: return "add " + name + " " + cls + " " + location;
-    case Kind::RemoveObject: return "remove " + name;
-    case Kind::AddContainer: return "add-container " + name + " " + cls + " " + location + " " + std::to_string(capacity);
-    case Kind::RemoveContainer: return "remove-container " + name;
-    case Kind::AddRegion: {
-      std::ostringstream o;
-      o << "add-region " << name << " " << region.center[0] << " " << region.center[1] << " " << region.capacity;
-      return o.str();
-    }
-  }
-  return "?";
-}
 
 // ---- Planner ---------------------------------------------------------------
 
@@ -108,7 +44,7 @@ Planner::~Planner() = default;
 void Planner::init() {
   ba_starts_.assign(1, ba_.initial);
   model_ = options_.model ? options_.model : make_cost_model(options_.cost, scenario_);
-  cache_.set_depends(model_->depends());
+  experience_.costs().set_depends(model_->depends());
   placement_ = world::initial_placement(scenario_);
   hand_.clear();
   rebuild();
@@ -117,6 +53,7 @@ void Planner::init() {
 void Planner::rebuild() {
   exp_heuristic_.reset();
   graph_.reset();
+  experience_.forget_graph();
   lab_.reset();
   ts_ = std::make_unique<task::System>(scenario_, placement_, hand_);
   ts_->forbid_moves(forbidden_);
@@ -184,14 +121,15 @@ void Planner::execute(const task::Action& a) {
   if (hand_ == "home") hand_.clear();
 }
 
-void Planner::apply(const Change& c) {
-  check_change(c, scenario_);
-  if (c.kind == Change::Kind::RemoveObject || c.kind == Change::Kind::RemoveContainer)
+void Planner::apply(const world::Change& c) {
+  using Kind = world::Change::Kind;
+  world::check_change(c, scenario_);
+  if (c.kind == Kind::Remove || c.kind == Kind::RemoveContainer)
     if (ts_)
-      if (int t = ts_->find_thing(c.name); t >= 0) cache_.forget_thing(ts_->thing_uid(static_cast<unsigned>(t)));
-  apply_change(c, scenario_, placement_, hand_);
+      if (int t = ts_->find_thing(c.subject); t >= 0) experience_.costs().forget_thing(ts_->thing_uid(static_cast<unsigned>(t)));
+  world::apply_change(c, scenario_, placement_, hand_);
   // A relocation leaves the TS unchanged: the product graph and all experience stay valid.
-  if (c.kind != Change::Kind::Relocate) dirty_ = true;
+  if (c.kind != Kind::Relocate) dirty_ = true;
 }
 
 PlanResult Planner::plan() {
@@ -218,21 +156,27 @@ PlanResult Planner::search(task::System& ts, task::Labeling& lab, bool allow_dia
                                                  "', which is neither a proposition of the scenario nor a "
                                                  "proposition expression");
   std::unique_ptr<ProductGraph> cold_graph;
+  std::unique_ptr<Experience> cold_experience;
   std::unique_ptr<LassoSearch> cold_search;
   ProductGraph* g = nullptr;
+  Experience* x = nullptr;
   LassoSearch* ls = nullptr;
+  MotionCostCache& cache = experience_.costs();
   if (exp) {
     if (!graph_) {
-      graph_ = std::make_unique<ProductGraph>(ts, lab, ba_, *model_, model_->expensive() ? &cache_ : nullptr);
-      exp_heuristic_ = std::make_unique<ExperienceHeuristic>(*graph_);
+      graph_ = std::make_unique<ProductGraph>(ts, lab, ba_, *model_, model_->expensive() ? &cache : nullptr);
+      exp_heuristic_ = algorithm_info(options_.algorithm).make_heuristic(*graph_, experience_);
     }
     g = graph_.get();
+    x = &experience_;
     ls = &search_;
-    cache_.reset_counters();
+    cache.reset_counters();
   } else {
     cold_graph = std::make_unique<ProductGraph>(ts, lab, ba_, *model_, nullptr);
+    cold_experience = std::make_unique<Experience>();
     cold_search = std::make_unique<LassoSearch>();
     g = cold_graph.get();
+    x = cold_experience.get();
     ls = cold_search.get();
   }
   if (ba_.num_states() == 0 || !g->useful(ba_.initial))
@@ -279,7 +223,7 @@ PlanResult Planner::search(task::System& ts, task::Labeling& lab, bool allow_dia
     if (exp) {
       hp = exp_heuristic_.get();
     } else {
-      h = algorithm_info(options_.algorithm).make_heuristic(*g);
+      h = algorithm_info(options_.algorithm).make_heuristic(*g, *x);
       hp = h.get();
     }
     const bool astar = options_.algorithm != Algorithm::Dijkstra;
@@ -291,7 +235,7 @@ PlanResult Planner::search(task::System& ts, task::Labeling& lab, bool allow_dia
         options_.limits.on_progress(p);
       };
     }
-    r = ls->run(*g, starts, *hp, astar, exp, limits, deadline, res.stats);
+    r = ls->run(*g, *x, starts, *hp, astar, exp, limits, deadline, res.stats);
     hit_node = r.hit_node_limit;
     hit_time = r.hit_time_limit;
   }
@@ -303,10 +247,11 @@ PlanResult Planner::search(task::System& ts, task::Labeling& lab, bool allow_dia
   res.stats.hit_time_limit = hit_time;
   if (exp && model_->expensive()) {
     res.stats.cache_used = true;
-    res.stats.cache_hits = cache_.hits();
-    res.stats.cache_misses = cache_.misses();
+    res.stats.cache_hits = cache.hits();
+    res.stats.cache_misses = cache.misses();
   }
-  res.stats.memory_bytes = g->memory_bytes() + ls->memory_bytes() + (res.stats.cache_used ? cache_.bytes() : 0);
+  res.stats.memory_bytes =
+      g->memory_bytes() + x->memory_bytes() + ls->memory_bytes() + (res.stats.cache_used ? cache.bytes() : 0);
   if (r.found) {
     res.found = true;
     Plan& p = res.plan;

@@ -4,7 +4,7 @@
 //
 //   rtamp::plan::Planner planner(rtamp::world::load_scenario("3-block-tray"));
 //   auto r = planner.plan();                       // first plan
-//   planner.apply(Change::relocate("b1", "r3"));   // a person moved b1
+//   planner.apply(world::Change::relocate("b1", "r3"));  // a person moved b1
 //   auto r2 = planner.plan();                      // replan from the observed state
 //   auto tuples = planner.action_tuples(r2.plan);  // for the behavior tree
 //
@@ -12,9 +12,9 @@
 // and the hand are), the Büchi automaton of the task (translated once: the
 // formula never changes during an episode), the TS and labeling (rebuilt when
 // things or regions are added or removed; names stay the identity), and the
-// experience: the motion-cost cache (for models whose costs are expensive(),
-// e.g. ik) and, while the TS is unchanged, the product graph with its learned
-// bounds, solved paths and cycle costs. Each plan() starts the product at the
+// experience (plan/experience.hpp): the motion-cost cache (for models whose
+// costs are expensive(), e.g. ik) and, while the TS is unchanged, the product
+// graph with its learned bounds, solved paths and cycle table. Each plan() starts the product at the
 // current state and every automaton state of automaton_states() (default:
 // the initial state, i.e. (s, q_b0) of Algorithm 1 line 12; the executor sets
 // the states consistent with the run so far, plan/task_progress.hpp) and
@@ -35,6 +35,7 @@
 #include "rtamp/plan/action_tuple.hpp"
 #include "rtamp/plan/experience.hpp"
 #include "rtamp/plan/motion_cost.hpp"
+#include "rtamp/plan/motion_cost_cache.hpp"
 #include "rtamp/plan/plan.hpp"
 #include "rtamp/plan/product_graph.hpp"
 #include "rtamp/plan/registry.hpp"
@@ -57,28 +58,6 @@ struct PlannerOptions {
                                                // (task::System::set_symmetry; costs are unchanged)
 };
 
-// A change of the world observed between plans (paper Section III.A).
-struct Change {
-  enum class Kind { Relocate, AddObject, RemoveObject, AddContainer, RemoveContainer, AddRegion };
-  Kind kind = Kind::Relocate;
-  std::string name;      // object / container / region
-  std::string cls;       // AddObject / AddContainer
-  std::string location;  // Relocate / AddObject: a region or container; AddContainer: a region
-  int capacity = 4;      // AddContainer
-  world::Region region;  // AddRegion
-
-  static Change relocate(std::string thing, std::string location);
-  static Change add_object(std::string object, std::string cls, std::string location);
-  static Change remove_object(std::string object);
-  static Change add_container(std::string container, std::string cls, std::string region, int capacity = 4);
-  static Change remove_container(std::string container);
-  static Change add_region(world::Region region);
-  // "move OBJ LOC", "add OBJ CLASS LOC", "remove OBJ", "add-container NAME CLASS REGION [CAPACITY]",
-  // "remove-container NAME", "add-region NAME X Y [CAPACITY]". Throws rtamp::Error.
-  static Change parse(const std::string& text);
-  std::string to_string() const;
-};
-
 class Planner {
  public:
   // Parses and translates scenario.task. Throws rtamp::Error on a bad task or
@@ -91,7 +70,12 @@ class Planner {
   Planner& operator=(const Planner&) = delete;
 
   PlanResult plan();
-  void apply(const Change& change);
+  // A change of the world observed between plans (world/change.hpp: checked
+  // against the current scenario, rtamp::Error if it does not fit; then
+  // applied). A relocation keeps the product graph and all experience; other
+  // kinds rebuild the TS (the motion-cost cache is kept, minus a removed
+  // thing's entries).
+  void apply(const world::Change& change);
   // The robot executed `a` (the state advances; experience is kept).
   void execute(const task::Action& a);
   // Replace the current state (e.g. from perception).
@@ -130,7 +114,9 @@ class Planner {
   std::vector<ActionTuple> action_tuples(const Plan& p) { return to_action_tuples(system(), p); }
   // "move(o1, r2)" etc.
   std::string describe(const task::Action& a) { return system().action_name(a); }
-  const MotionCostCache& cache() const { return cache_; }
+  // What astar-exp reuses across plans (plan/experience.hpp); its cost cache is cache().
+  const Experience& experience() const { return experience_; }
+  const MotionCostCache& cache() const { return experience_.costs(); }
 
  private:
   void init();
@@ -150,8 +136,8 @@ class Planner {
   std::unique_ptr<task::System> ts_;
   std::unique_ptr<task::Labeling> lab_;
   std::unique_ptr<ProductGraph> graph_;  // astar-exp: kept while the TS is unchanged
+  Experience experience_;                // astar-exp: the cost cache, and what is known about graph_
   std::unique_ptr<Heuristic> exp_heuristic_;  // astar-exp: lives with graph_
-  MotionCostCache cache_;
   LassoSearch search_;
 };
 

@@ -168,48 +168,10 @@ bool ProductGraph::expand_all(const std::vector<NodeId>& from, std::size_t max_n
   return true;
 }
 
-void ProductGraph::learn(NodeId n, double v) {
-  if (learned_.size() <= n) learned_.resize(std::max<std::size_t>(size(), n + 1), 0.0);
-  learned_[n] = std::max(learned_[n], v);
-}
-
-void ProductGraph::set_solved(NodeId n, double value, std::uint32_t moves, std::uint32_t via) {
-  if (learned_.size() <= n) learned_.resize(std::max<std::size_t>(size(), n + 1), 0.0);
-  if (via_.size() <= n) via_.resize(std::max<std::size_t>(size(), n + 1), kNoVia);
-  if (solved_moves_.size() <= n) solved_moves_.resize(std::max<std::size_t>(size(), n + 1), 0);
-  learned_[n] = value;
-  via_[n] = via;
-  solved_moves_[n] = moves;
-}
-
-bool ProductGraph::cycle_path(NodeId n, std::vector<std::uint32_t>& out) const {
-  if (n >= cycle_at_.size() || cycle_at_[n] == 0) return false;
-  const std::size_t at = cycle_at_[n] - 1;
-  const std::uint32_t len = cycle_store_[at];
-  out.insert(out.end(), cycle_store_.begin() + static_cast<std::ptrdiff_t>(at + 1),
-             cycle_store_.begin() + static_cast<std::ptrdiff_t>(at + 1 + len));
-  return true;
-}
-
-void ProductGraph::set_cycle_path(NodeId n, const std::vector<std::uint32_t>& edges) {
-  if (cycle_at_.size() <= n) cycle_at_.resize(std::max<std::size_t>(size(), n + 1), 0);
-  if (cycle_at_[n] != 0) return;  // recorded once; costs never change
-  cycle_at_[n] = static_cast<std::uint32_t>(cycle_store_.size() + 1);
-  cycle_store_.push_back(static_cast<std::uint32_t>(edges.size()));
-  cycle_store_.insert(cycle_store_.end(), edges.begin(), edges.end());
-}
-
-void ProductGraph::set_cycle(NodeId n, Cycle c) {
-  if (cycles_.size() <= n) cycles_.resize(std::max<std::size_t>(size(), n + 1));
-  cycles_[n] = c;
-}
-
 std::size_t ProductGraph::memory_bytes() const {
   return states_.capacity() * sizeof(std::uint64_t) + q_.capacity() * 4 + edge_begin_.capacity() * 4 +
          edge_end_.capacity() * 4 + labels_.capacity() * sizeof(automata::Letter) +
-         edges_.capacity() * sizeof(ProductEdge) + table_.capacity() * 4 + learned_.capacity() * sizeof(double) +
-         cycles_.capacity() * sizeof(Cycle) + hcache_.capacity() * sizeof(double) + via_.capacity() * 4 +
-         cycle_at_.capacity() * 4 + cycle_store_.capacity() * 4 + solved_moves_.capacity() * 4;
+         edges_.capacity() * sizeof(ProductEdge) + table_.capacity() * 4;
 }
 
 }  // namespace rtamp::plan

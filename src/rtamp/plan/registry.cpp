@@ -10,10 +10,12 @@ namespace rtamp::plan {
 
 namespace {
 
-std::unique_ptr<Heuristic> zero_heuristic(const ProductGraph&) { return std::make_unique<ZeroHeuristic>(); }
-std::unique_ptr<Heuristic> guard_heuristic(const ProductGraph& g) { return std::make_unique<GuardHeuristic>(g); }
-std::unique_ptr<Heuristic> experience_heuristic(const ProductGraph& g) {
-  return std::make_unique<ExperienceHeuristic>(g);
+std::unique_ptr<Heuristic> zero_heuristic(const ProductGraph&, Experience&) { return std::make_unique<ZeroHeuristic>(); }
+std::unique_ptr<Heuristic> guard_heuristic(const ProductGraph& g, Experience&) {
+  return std::make_unique<GuardHeuristic>(g);
+}
+std::unique_ptr<Heuristic> experience_heuristic(const ProductGraph& g, Experience& x) {
+  return std::make_unique<ExperienceHeuristic>(g, x);
 }
 
 const std::vector<AlgorithmInfo> kAlgorithms = {

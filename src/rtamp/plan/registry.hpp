@@ -23,6 +23,7 @@
 #include <string_view>
 #include <vector>
 
+#include "rtamp/plan/experience.hpp"
 #include "rtamp/plan/heuristic.hpp"
 #include "rtamp/plan/motion_cost.hpp"
 #include "rtamp/plan/search.hpp"
@@ -37,8 +38,9 @@ struct AlgorithmInfo {
   // The planner keeps the product graph, learned bounds and the cost cache
   // between plans (else every plan starts cold).
   bool keeps_experience;
-  // The search's heuristic on a fresh graph (a cold search).
-  std::unique_ptr<Heuristic> (*make_heuristic)(const ProductGraph& g);
+  // The search's heuristic for graph `g`, whose experience is `x` (both must
+  // outlive it; only astar-exp's heuristic reads x).
+  std::unique_ptr<Heuristic> (*make_heuristic)(const ProductGraph& g, Experience& x);
 };
 
 // Every algorithm, in the paper's Table I order (astar-exp, astar, dijkstra).

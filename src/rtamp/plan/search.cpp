@@ -181,7 +181,7 @@ int LassoSearch::on_accepting_cycle(ProductGraph& g, NodeId n, const SearchLimit
     const bool yes = acc && edge;
     for (auto it = first; it != scc_stack_.end(); ++it) {
       scc_state_[*it] = yes ? 3 : 2;
-      if (!yes) g.set_cycle(*it, {kInf, kManyMoves, false});
+      if (!yes) x_->set_cycle(*it, {kInf, kManyMoves, false});
     }
     scc_stack_.erase(first, scc_stack_.end());
   }
@@ -191,7 +191,7 @@ int LassoSearch::on_accepting_cycle(ProductGraph& g, NodeId n, const SearchLimit
 LassoSearch::Cost LassoSearch::cycle(ProductGraph& g, NodeId n, Cost bound, Heuristic* h,
                                      const SearchLimits& limits, std::int64_t deadline_ns, SearchStats& stats,
                                      LassoResult& r) {
-  const ProductGraph::Cycle known = g.cycle(n);
+  const Experience::Cycle known = x_->cycle(n);
   if (known.exact)
     return lex_less(known.lower, known.moves, bound.c, bound.m) ? Cost{known.lower, known.moves} : kNoCost;
   if (!lex_less(known.lower, known.moves, bound.c, bound.m)) return kNoCost;
@@ -261,7 +261,7 @@ LassoSearch::Cost LassoSearch::cycle(ProductGraph& g, NodeId n, Cost bound, Heur
     if (out_of_budget(g, limits, deadline_ns, stats, r)) return kNoCost;
   }
   if (found) {
-    g.set_cycle(n, {best.c, best.m, true});
+    x_->set_cycle(n, {best.c, best.m, true});
     cycle_path_.clear();
     NodeId cur = goal;
     do {
@@ -271,7 +271,7 @@ LassoSearch::Cost LassoSearch::cycle(ProductGraph& g, NodeId n, Cost bound, Heur
     std::reverse(cycle_path_.begin(), cycle_path_.end());
     return best;
   }
-  g.set_cycle(n, {bound.c, bound.m, false});  // bound is above `known` (checked on entry)
+  x_->set_cycle(n, {bound.c, bound.m, false});  // bound is above `known` (checked on entry)
   // No cycle at all through n (no incumbent bounded the search): n's SCC has
   // none, and neither may many nodes reachable from it. Classify them all at
   // once, so that they get no unbounded cycle search of their own (a query
@@ -280,14 +280,16 @@ LassoSearch::Cost LassoSearch::cycle(ProductGraph& g, NodeId n, Cost bound, Heur
   return kNoCost;
 }
 
-LassoResult LassoSearch::run(ProductGraph& g, NodeId init, Heuristic& h, bool cycle_heuristic, bool learn,
-                             const SearchLimits& limits, std::int64_t deadline_ns, SearchStats& stats) {
+LassoResult LassoSearch::run(ProductGraph& g, Experience& x, NodeId init, Heuristic& h, bool cycle_heuristic,
+                             bool learn, const SearchLimits& limits, std::int64_t deadline_ns, SearchStats& stats) {
   starts_.assign(1, init);
-  return run(g, starts_, h, cycle_heuristic, learn, limits, deadline_ns, stats);
+  return run(g, x, starts_, h, cycle_heuristic, learn, limits, deadline_ns, stats);
 }
 
-LassoResult LassoSearch::run(ProductGraph& g, const std::vector<NodeId>& starts, Heuristic& h, bool cycle_heuristic,
-                             bool learn, const SearchLimits& limits, std::int64_t deadline_ns, SearchStats& stats) {
+LassoResult LassoSearch::run(ProductGraph& g, Experience& experience, const std::vector<NodeId>& starts, Heuristic& h,
+                             bool cycle_heuristic, bool learn, const SearchLimits& limits, std::int64_t deadline_ns,
+                             SearchStats& stats) {
+  x_ = &experience;
   LassoResult r;
   Heuristic* const cycle_h = cycle_heuristic ? &h : nullptr;
   start_ns_ = steady_now_ns();
@@ -333,9 +335,9 @@ LassoResult LassoSearch::run(ProductGraph& g, const std::vector<NodeId>& starts,
   Cost best_cycle = kNoCost;
   // Experience: a solved node m completes a lasso of cost g(m) + learned(m).
   auto offer_solved = [&](NodeId m, double gm, std::uint32_t mm) {
-    if (!learn || !g.solved(m)) return;
-    const double c = gm + g.learned(m);
-    const std::uint32_t cm = mm + g.solved_moves(m);
+    if (!learn || !x_->solved(m)) return;
+    const double c = gm + x_->learned(m);
+    const std::uint32_t cm = mm + x_->solved_moves(m);
     if (lex_less(c, cm, best, best_m)) {
       best = c;
       best_m = cm;
@@ -406,7 +408,7 @@ LassoResult LassoSearch::run(ProductGraph& g, const std::vector<NodeId>& starts,
     closed_list_.push_back(n);
     progress_bound_ = it.f;
     // Nothing through a solved node beats the lasso it already offered.
-    if (learn && g.solved(n)) continue;
+    if (learn && x_->solved(n)) continue;
     ++stats.expanded;
     if (g.accepting(n)) {
       if (!try_cycle(n)) {
@@ -416,7 +418,7 @@ LassoResult LassoSearch::run(ProductGraph& g, const std::vector<NodeId>& starts,
     } else if (on_acc_cycle_[g.ba_state(n)]) {
       // A join candidate: its cycle costs at least what the table knows and
       // at least the way to acceptance (h).
-      const ProductGraph::Cycle known = g.cycle(n);
+      const Experience::Cycle known = x_->cycle(n);
       if (known.exact) {
         if (!try_cycle(n)) {  // no search: the table has it
           complete = false;
@@ -472,45 +474,45 @@ LassoResult LassoSearch::run(ProductGraph& g, const std::vector<NodeId>& starts,
     NodeId acc = best_node;
     if (best_solved) {
       // Follow the solved path to its accepting node (terminates: see set_solved below).
-      for (std::uint32_t e = g.via(acc); e != ProductGraph::kViaCycle; e = g.via(acc)) {
+      for (std::uint32_t e = x_->via(acc); e != Experience::kViaCycle; e = x_->via(acc)) {
         r.prefix_edges.push_back(e);
         acc = g.edge(e).dst;
         if (++stats.reused_path_edges > g.size()) throw std::logic_error("LassoSearch: solved path loops");
       }
-      best_cycle = {g.cycle(acc).lower, g.cycle(acc).moves};  // exact for a solved accepting node
+      best_cycle = {x_->cycle(acc).lower, x_->cycle(acc).moves};  // exact for a solved accepting node
       drop_loops(g, init, r.prefix_edges);
     }
     r.cycle_start = acc;
     r.prefix_cost = 0;
     for (std::uint32_t e : r.prefix_edges) r.prefix_cost += g.edge(e).cost;
-    if (learn && g.cycle(acc).exact && g.cycle_path(acc, r.cycle_edges)) {
-      r.cycle_cost = g.cycle(acc).lower;  // recorded with the exact cost by an earlier query
+    if (learn && x_->cycle(acc).exact && x_->cycle_path(acc, r.cycle_edges)) {
+      r.cycle_cost = x_->cycle(acc).lower;  // recorded with the exact cost by an earlier query
     } else {
       // The cycle's path: search again through the (now exactly known) best
       // cycle: the least cycle below a bound just above its cost is it.
-      ProductGraph::Cycle saved = g.cycle(acc);
-      g.set_cycle(acc, {0, 0, false});
+      Experience::Cycle saved = x_->cycle(acc);
+      x_->set_cycle(acc, {0, 0, false});
       LassoResult scratch;
       SearchLimits unlimited;
       unlimited.max_nodes = ~std::size_t{0};
       const Cost c = cycle(g, acc, {best_cycle.c + 1e-7 * (1 + best_cycle.c), kManyMoves}, cycle_h, unlimited, 0,
                            stats, scratch);
-      g.set_cycle(acc, saved);
+      x_->set_cycle(acc, saved);
       r.cycle_edges = cycle_path_;
       r.cycle_cost = c.c;
       if (learn) {
         double sum = 0;
         for (std::uint32_t e : r.cycle_edges) sum += g.edge(e).cost;
         // Record the path only if it is the exact cheapest cycle the table holds.
-        if (g.cycle(acc).exact && std::abs(sum - g.cycle(acc).lower) <= 1e-9 * (1 + sum))
-          g.set_cycle_path(acc, r.cycle_edges);
+        if (x_->cycle(acc).exact && std::abs(sum - x_->cycle(acc).lower) <= 1e-9 * (1 + sum))
+          x_->set_cycle_path(acc, r.cycle_edges);
       }
     }
   }
   if (learn && complete && !r.hit_node_limit && !r.hit_time_limit) {
     const double total = r.found ? r.prefix_cost + r.cycle_cost : kInf;
     for (NodeId m : closed_list_)
-      if (!g.solved(m)) g.learn(m, total - S.g[m]);
+      if (!x_->solved(m)) x_->learn(m, total - S.g[m]);
     if (r.found) {
       // The lasso is optimal in (cost, moves), so every node x on its prefix
       // has V(x) exactly (total, total moves) - (cost, moves of the prefix up
@@ -526,12 +528,12 @@ LassoResult LassoSearch::run(ProductGraph& g, const std::vector<NodeId>& starts,
       std::uint32_t mx = 0;
       NodeId x = r.start;
       for (std::uint32_t e : r.prefix_edges) {
-        if (!g.solved(x)) g.set_solved(x, total - gx, total_m - mx, e);
+        if (!x_->solved(x)) x_->set_solved(x, total - gx, total_m - mx, e);
         gx += g.edge(e).cost;
         mx += g.edge(e).action != stay ? 1 : 0;
         x = g.edge(e).dst;
       }
-      if (!g.solved(x)) g.set_solved(x, r.cycle_cost, cycle_moves, ProductGraph::kViaCycle);
+      if (!x_->solved(x)) x_->set_solved(x, r.cycle_cost, cycle_moves, Experience::kViaCycle);
     }
   }
   return r;

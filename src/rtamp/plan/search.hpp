@@ -18,8 +18,9 @@
 //      cheapest cycle), pruned at best - g(J). Its heuristic is the max of
 //      state_distance_bound to J's state and Heuristic::walk_bound to J's
 //      automaton state (both bound every path back to J). U does not depend
-//      on the start, so it is kept in the graph (exact, or "none below b")
-//      and reused by later queries. When such a search is unbounded (no
+//      on the start, so it is kept in the cycle table of the graph's
+//      experience (exact, or "none below b"; plan/experience.hpp) and reused
+//      by later queries. When such a search is unbounded (no
 //      incumbent yet) and finds nothing, the SCCs reachable from J are
 //      classified at once (on_accepting_cycle): nodes whose SCC has no
 //      accepting cycle get "none" in the table and no search of their own.
@@ -57,8 +58,8 @@
 // old optimum is at most the lasso from s through m), so they are <= V(m),
 // whatever the starts of a later query.
 // Solved paths (experience, `learn`): the prefix nodes of an optimal lasso
-// found by a complete search are marked solved in the graph (their best lasso
-// cost is then known exactly, ProductGraph::set_solved; the join node's via
+// found by a complete search are marked solved in the experience (their best
+// lasso cost is then known exactly, Experience::set_solved; the join node's via
 // is kViaCycle and its U is exact in the cycle table). A later search on
 // the same graph that reaches a solved node m with cost g(m) has a lasso of
 // cost g(m) + V(m) at once (the path to m, then m's recorded lasso); it keeps
@@ -86,6 +87,7 @@
 #include <functional>
 #include <vector>
 
+#include "rtamp/plan/experience.hpp"
 #include "rtamp/plan/heuristic.hpp"
 #include "rtamp/plan/plan.hpp"
 #include "rtamp/plan/product_graph.hpp"
@@ -129,13 +131,16 @@ struct LassoResult {
 
 class LassoSearch {
  public:
-  // `learn`: use and store experience (learned bounds, solved paths) in the graph.
+  // `x`: the experience of `g` (plan/experience.hpp); its cycle table is read
+  // and written by every search (a cold query passes a fresh one).
+  // `learn`: also use and store learned bounds and solved paths in `x`.
   // `cycle_heuristic`: use state_distance_bound and h.walk_bound in cycle searches (else 0).
   // `starts`: the start nodes (kNoNode entries are skipped); the best lasso
   // from any of them.
-  LassoResult run(ProductGraph& g, const std::vector<NodeId>& starts, Heuristic& h, bool cycle_heuristic, bool learn,
-                  const SearchLimits& limits, std::int64_t deadline_ns, SearchStats& stats);
-  LassoResult run(ProductGraph& g, NodeId init, Heuristic& h, bool cycle_heuristic, bool learn,
+  LassoResult run(ProductGraph& g, Experience& x, const std::vector<NodeId>& starts, Heuristic& h,
+                  bool cycle_heuristic, bool learn, const SearchLimits& limits, std::int64_t deadline_ns,
+                  SearchStats& stats);
+  LassoResult run(ProductGraph& g, Experience& x, NodeId init, Heuristic& h, bool cycle_heuristic, bool learn,
                   const SearchLimits& limits, std::int64_t deadline_ns, SearchStats& stats);
   std::size_t memory_bytes() const { return prefix_.bytes() + cycle_.bytes(); }
 
@@ -204,6 +209,7 @@ class LassoSearch {
   bool out_of_budget(const ProductGraph& g, const SearchLimits& limits, std::int64_t deadline_ns,
                      const SearchStats& stats, LassoResult& r);
 
+  Experience* x_ = nullptr;  // the experience of the graph being searched (during run())
   Space prefix_, cycle_;
   std::vector<NodeId> closed_list_;
   std::vector<NodeId> starts_;

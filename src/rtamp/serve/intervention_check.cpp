@@ -11,17 +11,7 @@ namespace rtamp::serve {
 
 using K = world::Intervention::Kind;
 
-const char* kind_name(K k) {
-  switch (k) {
-    case K::Relocate: return "relocate";
-    case K::Add: return "add";
-    case K::Remove: return "remove";
-    case K::AddContainer: return "add-container";
-    case K::RemoveContainer: return "remove-container";
-    case K::TakeFromGripper: return "take-from-gripper";
-  }
-  return "?";
-}
+const char* kind_name(K k) { return world::to_string(k); }
 
 InterventionCheck::InterventionCheck(const world::Scenario& scenario) : scenario_(scenario) {
   const world::Vocabulary v(scenario, true);
@@ -136,6 +126,8 @@ std::string InterventionCheck::check(const world::Intervention& iv, const world:
       if (!iv.subject.empty())
         return owner + "names no subject (it takes whatever the gripper holds)";
       return target(false, false);
+    case K::AddRegion:
+      return owner + "a person cannot add a region (add-region is a change for the planner)";
   }
   return "";
 }

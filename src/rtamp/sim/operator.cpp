@@ -175,6 +175,7 @@ world::Intervention Operator::random_intervention() {
         if (t.container && t.present && !t.name.empty()) iv.subject = t.name;
       break;
     case Kind::TakeFromGripper:
+    case Kind::AddRegion:  // refused by apply
       break;
   }
   return iv;
@@ -304,6 +305,8 @@ OperatorEvent Operator::apply(const world::Intervention& iv) {
       }
       return done("took '" + t.name + "' to " + fmt(*to));
     }
+    case Kind::AddRegion:
+      return refuse("a region cannot be added to the simulated workspace (add-region is a change for the planner)");
   }
   return refuse("unknown intervention");
 }

@@ -1,7 +1,7 @@
 // The name rules of a scenario and the vocabulary it defines — the one set of
 // checks behind every input that names things: the scenario file
 // (validate.hpp), the atoms of the LTL task (task/validate.hpp), `plan
-// --change` (plan/change_check.hpp), `sim --do` (sim/action_check.hpp) and the
+// --change` (world/change.hpp), `sim --do` (sim/action_check.hpp) and the
 // Python module. Every check throws rtamp::Error at the offending word, with a
 // did-you-mean (suggest.hpp) where one fits, so that all entry points refuse
 // the same inputs with the same words.

@@ -91,8 +91,17 @@ struct Proposition {
   TextLayout layout;     // of a block scalar's text (| or >) in its file; empty otherwise
 };
 
-// A scripted operator action (the paper's "human intervention").
-struct Intervention {
+// A change of the world (paper Section III.A: the world changes between
+// plans; Section V: a person intervenes). The one vocabulary for every change:
+// the planner applies it (plan::Planner::apply; `rtamp plan --change`), a
+// world carries it out (the scripted and random interventions of
+// exec::SymbolicWorld and sim::Operator), and the reactive loop reports it.
+// Its text form, rules and effect on a scenario are in world/change.hpp.
+// Not every world can carry out every kind: the planner's symbolic state has
+// no held thing (TakeFromGripper is a change of a running robot), and a
+// simulated workspace gets no new region (AddRegion is a planning change);
+// those refuse it with a message.
+struct Change {
   enum class Kind {
     Relocate,         // move `subject` to `location` (a region or container); `position` optional
     Add,              // add object `subject` of class `cls` at `location` (or `position`)
@@ -100,14 +109,41 @@ struct Intervention {
     AddContainer,     // add container `subject` (class `cls`, e.g. tray) at `location` / `position`
     RemoveContainer,  // remove container `subject` (its contents fall to where it stood)
     TakeFromGripper,  // take whatever the gripper holds; put it at `location` if given, else remove it
+    AddRegion,        // add region `region` (its name is `subject`)
   };
-  double time = 0;  // seconds of simulated time from the start of the episode
   Kind kind = Kind::Relocate;
-  std::string subject;
-  std::string cls;
-  std::string location;
-  std::optional<Vec3> position;
-  SourceLocation where;
+  std::string subject;           // the object, container or region ("" for TakeFromGripper)
+  std::string cls;               // Add, AddContainer ("" = block / tray)
+  std::string location;          // a region or container name (AddContainer: a region)
+  std::optional<Vec3> position;  // an exact spot (worlds that place things; the planner uses `location`)
+  int capacity = 4;              // AddContainer
+  Region region;                 // AddRegion
+
+  static Change relocate(std::string thing, std::string location);
+  static Change add_object(std::string object, std::string cls, std::string location);
+  static Change remove_object(std::string object);
+  static Change add_container(std::string container, std::string cls, std::string region, int capacity = 4);
+  static Change remove_container(std::string container);
+  static Change add_region(Region region);
+  static Change take_from_gripper(std::string location = {});
+  // parse_change(text) (world/change.hpp). Throws rtamp::Error.
+  static Change parse(const std::string& text);
+  // "move OBJ LOC", "add OBJ CLASS LOC", "remove OBJ", "add-container NAME
+  // CLASS REGION [CAPACITY]", "remove-container NAME", "add-region NAME X Y
+  // [CAPACITY]" (world/change.hpp parses it; TakeFromGripper, which has no
+  // text form, prints as "take-from-gripper [LOC]").
+  std::string to_string() const;
+};
+
+// The kind's name in logs and the Python API: relocate, add, remove,
+// add-container, remove-container, take-from-gripper, add-region.
+const char* to_string(Change::Kind k);
+
+// A scripted change of the world at a time (the paper's "human
+// intervention"): the scenario's `interventions:`, a world's random ones.
+struct Intervention : Change {
+  double time = 0;       // seconds of simulated time from the start of the episode
+  SourceLocation where;  // where it was defined (for messages)
 };
 
 struct Scenario {

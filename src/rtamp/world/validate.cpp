@@ -48,6 +48,8 @@ const char* action_name(Intervention::Kind k) {
       return "remove_container";
     case Intervention::Kind::TakeFromGripper:
       return "take_from_gripper";
+    case Intervention::Kind::AddRegion:
+      return "add_region";
   }
   return "?";
 }
@@ -371,6 +373,8 @@ class Validator {
         case Intervention::Kind::TakeFromGripper:
           check_target(false);
           break;
+        case Intervention::Kind::AddRegion:
+          fail(iv.where, owner + "a person cannot add a region (add_region is a change for the planner)");
       }
     }
   }

@@ -1,17 +1,18 @@
-#include "rtamp/plan/change_check.hpp"
+#include "rtamp/world/change.hpp"
 
 #include <algorithm>
 #include <cctype>
 #include <charconv>
 #include <cmath>
 #include <limits>
+#include <sstream>
 
 #include "rtamp/world/geometry.hpp"
 #include "rtamp/world/names.hpp"
 #include "rtamp/world/suggest.hpp"
 #include "rtamp/world/validate.hpp"
 
-namespace rtamp::plan {
+namespace rtamp::world {
 
 namespace {
 
@@ -129,6 +130,93 @@ std::string a_kind(const world::Vocabulary& v, std::string_view n) {
 
 }  // namespace
 
+// ---- Change ----------------------------------------------------------------
+
+Change Change::relocate(std::string thing, std::string location) {
+  Change c;
+  c.kind = Kind::Relocate;
+  c.subject = std::move(thing);
+  c.location = std::move(location);
+  return c;
+}
+Change Change::add_object(std::string object, std::string cls, std::string location) {
+  Change c;
+  c.kind = Kind::Add;
+  c.subject = std::move(object);
+  c.cls = std::move(cls);
+  c.location = std::move(location);
+  return c;
+}
+Change Change::remove_object(std::string object) {
+  Change c;
+  c.kind = Kind::Remove;
+  c.subject = std::move(object);
+  return c;
+}
+Change Change::add_container(std::string container, std::string cls, std::string region, int capacity) {
+  Change c;
+  c.kind = Kind::AddContainer;
+  c.subject = std::move(container);
+  c.cls = std::move(cls);
+  c.location = std::move(region);
+  c.capacity = capacity;
+  return c;
+}
+Change Change::remove_container(std::string container) {
+  Change c;
+  c.kind = Kind::RemoveContainer;
+  c.subject = std::move(container);
+  return c;
+}
+Change Change::add_region(Region region) {
+  Change c;
+  c.kind = Kind::AddRegion;
+  c.subject = region.name;
+  c.region = std::move(region);
+  return c;
+}
+Change Change::take_from_gripper(std::string location) {
+  Change c;
+  c.kind = Kind::TakeFromGripper;
+  c.location = std::move(location);
+  return c;
+}
+
+Change Change::parse(const std::string& text) { return parse_change(text); }
+
+std::string Change::to_string() const {
+  switch (kind) {
+    case Kind::Relocate: return "move " + subject + " " + location;
+    case Kind::Add: return "add " + subject + " " + cls + " " + location;
+    case Kind::Remove: return "remove " + subject;
+    case Kind::AddContainer:
+      return "add-container " + subject + " " + cls + " " + location + " " + std::to_string(capacity);
+    case Kind::RemoveContainer: return "remove-container " + subject;
+    case Kind::TakeFromGripper: return location.empty() ? "take-from-gripper" : "take-from-gripper " + location;
+    case Kind::AddRegion: {
+      std::ostringstream o;
+      o << "add-region " << subject << " " << region.center[0] << " " << region.center[1] << " " << region.capacity;
+      return o.str();
+    }
+  }
+  return "?";
+}
+
+const char* to_string(Change::Kind k) {
+  switch (k) {
+    case Change::Kind::Relocate: return "relocate";
+    case Change::Kind::Add: return "add";
+    case Change::Kind::Remove: return "remove";
+    case Change::Kind::AddContainer: return "add-container";
+    case Change::Kind::RemoveContainer: return "remove-container";
+    case Change::Kind::TakeFromGripper: return "take-from-gripper";
+    case Change::Kind::AddRegion: return "add-region";
+  }
+  return "?";
+}
+
+// ---- Text, rules, effect -----------------------------------------------------
+
 Change parse_change(std::string_view text, const SourceLocation& where) {
   const Reporter r(text, where);
   const auto& w = r.words();
@@ -201,30 +289,30 @@ void check_change(const Change& c, const world::Scenario& s, const SourceLocatio
 
   switch (c.kind) {
     case Change::Kind::Relocate:
-      if (!v.is_thing(c.name)) {
-        if (v.is_region(c.name)) r.fail(1, shown(c.name) + " is a region; only objects and containers move");
-        r.fail(1, "unknown object or container " + shown(c.name) + world::suggestion(c.name, v.things()));
+      if (!v.is_thing(c.subject)) {
+        if (v.is_region(c.subject)) r.fail(1, shown(c.subject) + " is a region; only objects and containers move");
+        r.fail(1, "unknown object or container " + shown(c.subject) + world::suggestion(c.subject, v.things()));
       }
       location(c.location, 2);
-      if (c.name == c.location) r.fail(2, shown(c.name) + " cannot be placed in itself");
-      if (v.is_container(c.name) && !v.is_region(c.location))
-        r.fail(2, "container " + shown(c.name) + " can only be placed in a region, not in container " +
+      if (c.subject == c.location) r.fail(2, shown(c.subject) + " cannot be placed in itself");
+      if (v.is_container(c.subject) && !v.is_region(c.location))
+        r.fail(2, "container " + shown(c.subject) + " can only be placed in a region, not in container " +
                       shown(c.location) + " (containers do not nest)");
       return;
-    case Change::Kind::AddObject:
-      new_name(c.name, "object");
-      class_of(c.cls, "object " + shown(c.name), false);
+    case Change::Kind::Add:
+      new_name(c.subject, "object");
+      class_of(c.cls, "object " + shown(c.subject), false);
       location(c.location, 3);
       return;
-    case Change::Kind::RemoveObject:
-      if (!v.is_object(c.name)) {
-        if (v.is_container(c.name)) r.fail(1, shown(c.name) + " is a container: use remove-container");
-        r.fail(1, "unknown object " + shown(c.name) + world::suggestion(c.name, v.objects));
+    case Change::Kind::Remove:
+      if (!v.is_object(c.subject)) {
+        if (v.is_container(c.subject)) r.fail(1, shown(c.subject) + " is a container: use remove-container");
+        r.fail(1, "unknown object " + shown(c.subject) + world::suggestion(c.subject, v.objects));
       }
       return;
     case Change::Kind::AddContainer:
-      new_name(c.name, "container");
-      class_of(c.cls, "container " + shown(c.name), true);
+      new_name(c.subject, "container");
+      class_of(c.cls, "container " + shown(c.subject), true);
       if (!v.is_region(c.location)) {
         if (v.is_container(c.location))
           r.fail(3, shown(c.location) + " is a container; a container stands in a region (containers do not nest)");
@@ -234,14 +322,16 @@ void check_change(const Change& c, const world::Scenario& s, const SourceLocatio
       if (c.capacity < 1) r.fail(4, "capacity must be at least 1 (got " + std::to_string(c.capacity) + ")");
       return;
     case Change::Kind::RemoveContainer:
-      if (!v.is_container(c.name)) {
-        if (v.is_object(c.name)) r.fail(1, shown(c.name) + " is an object: use remove");
-        r.fail(1, "unknown container " + shown(c.name) + world::suggestion(c.name, v.containers));
+      if (!v.is_container(c.subject)) {
+        if (v.is_object(c.subject)) r.fail(1, shown(c.subject) + " is an object: use remove");
+        r.fail(1, "unknown container " + shown(c.subject) + world::suggestion(c.subject, v.containers));
       }
       return;
+    case Change::Kind::TakeFromGripper:
+      r.fail(0, "take-from-gripper is a change of a running robot (the planner's state holds nothing in the gripper)");
     case Change::Kind::AddRegion: {
       const world::Region& g = c.region;
-      if (g.name != c.name) r.fail(1, "the region's name " + shown(g.name) + " is not the change's " + shown(c.name));
+      if (g.name != c.subject) r.fail(1, "the region's name " + shown(g.name) + " is not the change's " + shown(c.subject));
       new_name(g.name, "region");
       for (int i = 0; i < 2; ++i)
         if (!std::isfinite(g.center[i]) || std::abs(g.center[i]) > world::kMaxCoordinate)
@@ -274,24 +364,24 @@ void apply_change(const Change& c, world::Scenario& s, world::Placement& p, std:
   };
   switch (c.kind) {
     case Change::Kind::Relocate:
-      p.things[c.name].location = c.location;
+      p.things[c.subject].location = c.location;
       return;
-    case Change::Kind::AddObject: {
+    case Change::Kind::Add: {
       world::Object o;
-      o.name = c.name;
+      o.name = c.subject;
       o.cls = c.cls.empty() ? "block" : c.cls;
       o.position = point_of(c.location);
       s.objects.push_back(o);
       p.set(o.name, c.location, o.cls, false);
       return;
     }
-    case Change::Kind::RemoveObject:
-      erase_named(s.objects, c.name);
-      p.things.erase(c.name);
+    case Change::Kind::Remove:
+      erase_named(s.objects, c.subject);
+      p.things.erase(c.subject);
       return;
     case Change::Kind::AddContainer: {
       world::Container k;
-      k.name = c.name;
+      k.name = c.subject;
       k.cls = c.cls.empty() ? "tray" : c.cls;
       if (const auto* r = s.find_region(c.location)) k.position = r->center;
       k.capacity = c.capacity;
@@ -300,17 +390,19 @@ void apply_change(const Change& c, world::Scenario& s, world::Placement& p, std:
       return;
     }
     case Change::Kind::RemoveContainer: {
-      const std::string region = p.things[c.name].location;
+      const std::string region = p.things[c.subject].location;
       for (auto& [name, thing] : p.things)
-        if (thing.location == c.name) thing.location = region;  // contents fall where it stood
-      if (hand == c.name) hand = region;
-      erase_named(s.containers, c.name);
-      p.things.erase(c.name);
+        if (thing.location == c.subject) thing.location = region;  // contents fall where it stood
+      if (hand == c.subject) hand = region;
+      erase_named(s.containers, c.subject);
+      p.things.erase(c.subject);
       return;
     }
     case Change::Kind::AddRegion:
       s.regions.push_back(c.region);
       return;
+    case Change::Kind::TakeFromGripper:
+      return;  // refused by check_change
   }
 }
 
@@ -330,4 +422,4 @@ std::vector<Change> parse_changes(const world::Scenario& scenario, const std::ve
   return out;
 }
 
-}  // namespace rtamp::plan
+}  // namespace rtamp::world
