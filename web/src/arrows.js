@@ -1,7 +1,7 @@
 // The planned next moves as arrows in the scene: for the latest `plan` log record, each
 // action "move(THING, TO)" not yet finished becomes an arrow from THING's current place
 // to TO (a region's centre, or a container's current position), the next one drawn
-// strongest. Invariant: arrows are recomputed from the scene every frame, so they follow
+// strongest. Invariant: arrows are recomputed from the scene every drawn frame, so they follow
 // the things as they move; at most `max` arrows are shown.
 import * as THREE from 'three';
 
@@ -23,6 +23,7 @@ export class PlanArrows {
   // The remaining moves of the current plan (strings from the plan record).
   setMoves(actions) {
     this.moves = actions.map(parseMove).filter(Boolean);
+    this.scene.invalidate();
   }
 
   target(to) {

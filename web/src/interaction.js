@@ -58,6 +58,7 @@ export class DragInteraction {
     const p = this.tablePoint(e);
     const entry = this.scene.things.get(this.drag.name);
     if (p && entry) entry.mesh.position.set(p.x, p.y, this.drag.z + 0.03);
+    this.scene.invalidate();
   }
 
   up(e) {
@@ -67,6 +68,7 @@ export class DragInteraction {
     this.scene.controls.enabled = true;
     this.scene.dragging = null;
     const entry = this.scene.things.get(d.name);
+    this.scene.invalidate();
     if (!d.moved) {
       if (entry) entry.mesh.position.copy(d.start);
       this.onSelect(d.name);

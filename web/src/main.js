@@ -1,8 +1,11 @@
 // The page's entry point: connects to the server (ws://<this host>/ws), builds the scene
 // and the panels from `hello`, and routes every server message to them; the person's
-// actions (drag, add, delete, take, controls) become requests. The render loop draws
-// the scene every animation frame. Invariant: after every `hello` (connect, seek) the
-// page's state is rebuilt from it alone (scene, tree, history).
+// actions (drag, add, delete, take, controls) become requests. Messages update the 3-D
+// scene's objects at once and mark it for drawing; the panels that change per message
+// (log-driven panels, tree statuses, clock, gripper) are updated at most once per
+// animation frame, from the latest data; the scene is drawn on demand (scene.js).
+// Invariant: after every `hello` (connect, seek) the page's state is rebuilt from it
+// alone (scene, tree, history).
 import { Connection } from './connection.js';
 import { Scene } from './scene.js';
 import { Robot } from './robot.js';
@@ -26,7 +29,8 @@ const app = {
   t: 0,
   state: null,
   held: null,
-  framesRendered: 0,
+  framesRendered: 0, // scene draws
+  pending: { log: false, status: null, frame: null }, // panel updates for the next animation frame
   framesReceived: 0,
   latencies: [],
   drops: [], // {subject, at}: drops waiting for their intervention record
@@ -69,10 +73,14 @@ new DragInteraction(app.scene, {
     if (location) body.location = location;
     intervene(`move ${subject}${location ? ' to ' + location : ''}`, body).then((r) => {
       drop.replyMs = performance.now() - drop.at;
+      drop.serverMs = r.server_ms ?? null; // the server's receipt -> applied
       if (!r.ok) app.drops.splice(app.drops.indexOf(drop), 1);
       // Refused: the thing goes back to where the server last put it.
       const e = app.scene.things.get(subject);
-      if (!r.ok && e && app.scene.dragging !== subject) e.mesh.position.set(...e.pos);
+      if (!r.ok && e && app.scene.dragging !== subject) {
+        e.mesh.position.set(...e.pos);
+        app.scene.invalidate();
+      }
     });
   },
 });
@@ -92,6 +100,7 @@ function onHello(h) {
   app.episode.reset();
   for (const r of h.history || []) app.episode.add(r);
   app.tree.setTree(h.tree);
+  app.pending = { log: false, status: null, frame: null };
   refreshLog();
   app.controls.setState(h);
   $('#controls').dataset.mode = h.mode;
@@ -115,9 +124,27 @@ function onFrame(f) {
   app.tool = f.tool;
   app.scene.applyThings(f.things);
   app.robot?.update(f);
-  app.person.setHeld(app.held);
-  app.controls.setTime(f.t);
-  app.timeline.setTime(f.t);
+  app.scene.invalidate();
+  app.pending.frame = f;
+}
+
+// The panels' per-message updates, once per animation frame.
+function updatePanels() {
+  const p = app.pending;
+  if (p.frame) {
+    app.person.setHeld(p.frame.held ?? null);
+    app.controls.setTime(p.frame.t);
+    app.timeline.setTime(p.frame.t);
+    p.frame = null;
+  }
+  if (p.status != null) {
+    app.tree.setStatus(p.status);
+    p.status = null;
+  }
+  if (p.log) {
+    refreshLog();
+    p.log = false;
+  }
 }
 
 function onLog(r) {
@@ -127,12 +154,12 @@ function onLog(r) {
     if (i >= 0) {
       // ms: drop -> the intervention record (applied in the episode); replyMs: drop -> the
       // server's reply (accepted).
-      app.latencies.push({ subject: r.subject, ms: performance.now() - app.drops[i].at, replyMs: app.drops[i].replyMs, applied: r.applied, t: r.t });
+      app.latencies.push({ subject: r.subject, ms: performance.now() - app.drops[i].at, replyMs: app.drops[i].replyMs, serverMs: app.drops[i].serverMs, applied: r.applied, t: r.t });
       app.drops.splice(i, 1);
     }
   }
   // Ticks (50 a second with MuJoCo), percepts and frame records change no panel.
-  if (r.ev !== 'tick' && r.ev !== 'perceived' && r.ev !== 'frame') refreshLog();
+  if (r.ev !== 'tick' && r.ev !== 'perceived' && r.ev !== 'frame') app.pending.log = true;
 }
 
 function onMessage(m) {
@@ -148,9 +175,10 @@ function onMessage(m) {
       break;
     case 'tree':
       app.tree.setTree(m);
+      app.pending.status = null; // older than this tree
       break;
     case 'status':
-      app.tree.setStatus(m.s);
+      app.pending.status = m.s;
       break;
     case 'state':
       app.state = m;
@@ -170,10 +198,9 @@ app.conn = new Connection(wsUrl, onMessage, (s) => {
   $('#connection').dataset.state = s;
 });
 
-function loop() {
-  app.framesRendered++;
-  app.arrows.update();
-  app.scene.render();
+function loop(now) {
+  updatePanels();
+  if (app.scene.draw(now, () => app.arrows.update())) app.framesRendered++;
   requestAnimationFrame(loop);
 }
 requestAnimationFrame(loop);

@@ -3,12 +3,25 @@
 // the table top at z = tableTop). Things are kept by name and moved by `frame` messages
 // (pos = the centre of the thing's base, quat = [w, x, y, z]); a thing missing from a
 // frame is gone. Meshes have their origin at the base centre.
+// Drawing is on demand (issue 14's bar: 30 frames a second, also with software WebGL):
+// draw() renders only after invalidate() (a frame moved things or the arm, the camera
+// moved, a drag, a resize), at most once per animation frame. While things keep
+// changing, the canvas's drawing-buffer scale adapts to what a frame costs (the time
+// from a drawing animation frame to the next one): over the 30-frames budget for five
+// frames running it steps down by 0.25 (to 0.5 at least), well under it for 30 frames it
+// steps back up; once the scene has been still for SETTLE_MS one frame is drawn at full
+// resolution. Labels are DOM (CSS2D) and stay sharp at any scale.
 // Invariants: `things` holds exactly the things of the last frame (or of hello before
-// the first frame); every thing mesh has userData.thing = its name.
+// the first frame); every thing mesh has userData.thing = its name; a still scene is
+// shown at scale 1.
 import * as THREE from 'three';
 import { OrbitControls } from 'three/examples/jsm/controls/OrbitControls.js';
 import { CSS2DRenderer, CSS2DObject } from 'three/examples/jsm/renderers/CSS2DRenderer.js';
 import { litMaterial } from './material.js';
+
+const BUDGET_MS = 1000 / 30;
+const MIN_SCALE = 0.5;
+const SETTLE_MS = 250;
 
 function label(text, cls) {
   const div = document.createElement('div');
@@ -33,6 +46,12 @@ export class Scene {
     this.camera.up.set(0, 0, 1);
     this.controls = new OrbitControls(this.camera, this.renderer.domElement);
     this.controls.enableDamping = false;
+    this.controls.addEventListener('change', () => this.invalidate());
+    this.dirty = true;
+    this.changedAt = 0;
+    this.motionScale = 1; // the drawing-buffer scale while the scene changes
+    this.cost = { ema: 0, n: 0 };
+    this.lastDraw = null; // {at, scale} of the last drawn animation frame, until the next one
     // No three.js lights: the lit materials (material.js) carry the light rig themselves.
 
     this.things = new Map(); // name -> {mesh, info}
@@ -52,6 +71,13 @@ export class Scene {
     this.labels.setSize(w, h);
     this.camera.aspect = w / h;
     this.camera.updateProjectionMatrix();
+    this.invalidate();
+  }
+
+  // Something shown changed: draw at the next animation frame.
+  invalidate() {
+    this.dirty = true;
+    this.changedAt = performance.now();
   }
 
   // Builds the static scene from hello.scene and shows the things present at start.
@@ -104,6 +130,7 @@ export class Scene {
     this.camera.position.set(c[0] + dir.x * reach * 1.05, c[1] + dir.y * reach * 1.05, this.tableTop + reach * 0.8);
     this.controls.target.set(c[0] - dir.x * 0.05, c[1] - dir.y * 0.05, this.tableTop + 0.1);
     this.controls.update();
+    this.invalidate();
   }
 
   // A mesh for a thing: a block is a box, a tray a floor with four rims.
@@ -156,6 +183,7 @@ export class Scene {
 
   // Applies a frame's things: moves, creates the new ones, removes the vanished ones.
   applyThings(list) {
+    this.invalidate();
     const seen = new Set();
     for (const th of list) {
       if (th.class && !this.infos.has(th.name)) this.infos.set(th.name, { ...th, kind: th.kind || this.classes?.get(th.class)?.kind });
@@ -185,8 +213,39 @@ export class Scene {
     return { x: rect.left + ((v.x + 1) / 2) * rect.width, y: rect.top + ((1 - v.y) / 2) * rect.height };
   }
 
-  render() {
+  // Called every animation frame (now: its timestamp, ms); draws when needed (see the
+  // header). Returns whether it drew; beforeDraw() runs just before a draw.
+  draw(now, beforeDraw) {
+    if (this.lastDraw) {
+      this.adapt(now - this.lastDraw.at, this.lastDraw.scale);
+      this.lastDraw = null;
+    }
+    let scale = this.motionScale;
+    if (!this.dirty) {
+      if (this.renderer.getPixelRatio() === 1 || performance.now() - this.changedAt < SETTLE_MS) return false;
+      scale = 1; // still: one sharp frame
+    }
+    this.dirty = false;
+    if (this.renderer.getPixelRatio() !== scale) this.renderer.setPixelRatio(scale);
+    beforeDraw?.();
     this.renderer.render(this.scene, this.camera);
     this.labels.render(this.scene, this.camera);
+    this.lastDraw = { at: now, scale };
+    return true;
+  }
+
+  // A drawn frame cost `ms` at drawing-buffer scale `scale`: adapt the motion scale.
+  adapt(ms, scale) {
+    if (scale !== this.motionScale) return; // the still frame does not count
+    const c = this.cost;
+    c.ema = c.n ? 0.8 * c.ema + 0.2 * ms : ms;
+    c.n++;
+    let next = this.motionScale;
+    if (c.n >= 5 && c.ema > BUDGET_MS * 1.1 && next > MIN_SCALE) next = Math.max(MIN_SCALE, next - 0.25);
+    else if (c.n >= 30 && c.ema < BUDGET_MS * 0.6 && next < 1) next = Math.min(1, next + 0.25);
+    if (next !== this.motionScale) {
+      this.motionScale = next;
+      this.cost = { ema: 0, n: 0 };
+    }
   }
 }

@@ -1,6 +1,6 @@
 // The page's read-only test hook, window.rtamp: what the scene shows (things with their
 // class, kind, position, location), where a world point or a thing is on the screen
-// (page pixels, for real mouse drags), the messages and replies seen, the frame counter
+// (page pixels, for real mouse drags), the messages and replies seen, the draw counter and scale
 // and the drop → intervention latencies. Nothing here changes the page.
 
 export function installTestHook(app) {
@@ -27,8 +27,14 @@ export function installTestHook(app) {
     get tracked() {
       return app.episode.tracked;
     },
+    // Scene draws (on demand: not every animation frame draws).
     get frames() {
       return app.framesRendered;
+    },
+    // The canvas's drawing-buffer scale now (1 when still; lower while moving if frames
+    // are too slow to draw at full resolution).
+    get drawScale() {
+      return scene.renderer.getPixelRatio();
     },
     get framesReceived() {
       return app.framesReceived;

@@ -1,91 +1,123 @@
-// Issue 14's bars for the page, measured (docs/benchmarks.md "The page"):
-//   node tests/measure.mjs RTAMP_BIN SCENARIO [DRAGS]
-// 1. frame rate: requestAnimationFrame callbacks of the page counted over 6 s while the
-//    episode runs at real-time speed (headless Chromium, --disable-gpu: software WebGL);
-// 2. drag → intervention: for each of DRAGS real mouse drags of a block onto a region,
-//    the page's time from the drop (pointerup) to the server's reply and to the
-//    `intervention` record for it arriving back (window.rtamp.latencies), at speed 1;
-// 3. the same path without the page: a WebSocket client's relocations (reply, record).
-// Prints one JSON object. Not a test: it asserts nothing about the figures.
+// Issue 14's bars for the page, measured (docs/benchmarks.md "The page of `rtamp serve`"):
+//   node tests/measure.mjs RTAMP_BIN SCENARIO [DRAGS] [--world mujoco|symbolic]
+//        [--seconds S] [--web-root DIR]...
+// Each --web-root is a built page (e.g. an older one built from git, and this tree's
+// build/share/rtamp/web); every page gets the same run, one after the other, each with
+// two runs of `rtamp serve SCENARIO --world W --speed 1 --no-operator --paused --port 0`,
+// resumed by the page's pause button once the page is up (so the arm moves from t = 0;
+// 3-block-tray with MuJoCo ends at about t = 19 s), one per part:
+// 1. frame rate while the episode runs at real-time speed (headless Chromium with
+//    --disable-gpu: software WebGL): scene draws (window.rtamp.frames) and `frame`
+//    messages received, per second over S seconds (default 10); the cost of a drawn
+//    frame = the time from the animation-frame callback that drew to the next
+//    animation-frame callback (it includes the WebGL raster and the canvas readback,
+//    which block the page's main thread), median and p95, timed by a wrapper around
+//    requestAnimationFrame installed before the page loads (the same for every page);
+// 2. drag → intervention: DRAGS real mouse drags of a block onto a region, the page's
+//    times from the drop (pointerup) to the server's reply and to the `intervention`
+//    record arriving back (window.rtamp.latencies), and the server's own receipt →
+//    applied (the reply's server_ms; the summary `rtamp serve` prints on stderr at exit).
+// Prints one JSON object per page. Not a test: it asserts nothing about the figures.
 import { drag, launch, openPage, startServer, waitFor } from './harness.mjs';
 
-const [bin, scenarioArg, dragsArg] = process.argv.slice(2);
+const args = process.argv.slice(2);
+const opt = (name, dflt) => {
+  const out = [];
+  for (let i = args.indexOf(name); i >= 0; i = args.indexOf(name)) out.push(args.splice(i, 2)[1]);
+  return out.length ? out : dflt;
+};
+const world = opt('--world', ['mujoco'])[0];
+const seconds = Number(opt('--seconds', ['10'])[0]);
+const roots = opt('--web-root', [null]);
+const [bin, scenarioArg, dragsArg] = args;
 process.env.RTAMP_BIN = bin;
-const drags = Number(dragsArg || 8);
-const server = await startServer([scenarioArg, '--world', 'symbolic', '--speed', '1']);
-const { context } = await launch();
-try {
-  const { page } = await openPage(context, server.url);
-  const f0 = await page.evaluate(() => [window.rtamp.frames, performance.now()]);
-  await page.waitForTimeout(6000);
-  const f1 = await page.evaluate(() => [window.rtamp.frames, performance.now()]);
-  const fps = ((f1[0] - f0[0]) * 1000) / (f1[1] - f0[1]);
-  for (let k = 0; k < drags; k++) {
-    const things = await page.evaluate(() => window.rtamp.things());
-    const regions = await page.evaluate(() => window.rtamp.regions());
-    const names = regions.map((r) => r.name);
-    // Keep the robot busy: move a block back to the first region (r1) when one is
-    // elsewhere, else one of r1's blocks to another region.
-    const free = things.filter((t) => t.kind === 'object' && names.includes(t.at));
-    if (!free.length) break;
-    const away = free.filter((t) => t.at !== names[0]);
-    const th = away.length ? away[k % away.length] : free[k % free.length];
-    const target = away.length ? regions[0] : regions.find((r) => r.name !== th.at);
-    const from = await page.evaluate((n) => window.rtamp.project(n), th.name);
-    const to = await page.evaluate((g) => window.rtamp.projectPoint([g.center[0] + 0.12, g.center[1] - 0.12, 0]), target);
-    const before = await page.evaluate(() => [window.rtamp.latencies.length, window.rtamp.notices.length]);
-    await drag(page, from, to);
-    await waitFor(() => page.evaluate(([n, m]) => window.rtamp.latencies.length > n || window.rtamp.notices.slice(m).some((x) => x.kind === 'error'), before), 'the intervention record', 30000);
-    const refused = await page.evaluate((m) => window.rtamp.notices.slice(m).filter((x) => x.kind === 'error'), before[1]);
-    if (refused.length) console.error(`drag of ${th.name} refused: ${refused[0].text}`);
-    await page.waitForTimeout(1500);
+const drags = Number(dragsArg ?? 4);
+const round = (x) => (x == null ? null : Math.round(x * 10) / 10);
+const quantile = (xs, q) => {
+  const s = [...xs].sort((a, b) => a - b);
+  return s.length ? s[Math.min(s.length - 1, Math.floor(q * s.length))] : null;
+};
+
+// Starts a paused episode, opens the page and resumes it from the page; calls body(page).
+async function session(root, body) {
+  const server = await startServer([scenarioArg, '--world', world, '--speed', '1', '--no-operator', '--paused', ...(root ? ['--web-root', root] : [])]);
+  const { context } = await launch();
+  await context.addInitScript(() => {
+    const raf = window.requestAnimationFrame.bind(window);
+    window.__rafs = []; // [start ms, drew]
+    window.requestAnimationFrame = (f) =>
+      raf((ts) => {
+        const at = performance.now(), n = window.rtamp ? window.rtamp.frames : 0;
+        f(ts);
+        window.__rafs.push([at, (window.rtamp ? window.rtamp.frames : 0) > n]);
+      });
+  });
+  try {
+    const { page } = await openPage(context, server.url);
+    await page.click('#pause');
+    await waitFor(() => page.evaluate(() => window.rtamp.state && window.rtamp.state.paused === false), 'the resumed episode', 30000);
+    await body(page);
+  } finally {
+    await context.close();
+    const exited = new Promise((r) => server.proc.once('exit', r));
+    server.proc.kill('SIGTERM');
+    await exited;
   }
-  const lat = await page.evaluate(() => window.rtamp.latencies);
-  const med = (xs) => xs.sort((a, b) => a - b)[Math.floor(xs.length / 2)];
-  console.log(JSON.stringify({
-    fps: Number(fps.toFixed(1)),
-    seconds: Number(((f1[1] - f0[1]) / 1000).toFixed(2)),
-    drags: lat.map((l) => ({ ...l, ms: Math.round(l.ms * 10) / 10, replyMs: Math.round(l.replyMs * 10) / 10 })),
-    median_applied_ms: med(lat.map((l) => l.ms)),
-    max_applied_ms: Math.max(...lat.map((l) => l.ms)),
-    median_reply_ms: med(lat.map((l) => l.replyMs)),
-  }, null, 1));
-} finally {
-  await context.close();
-  server.proc.kill('SIGTERM');
+  return server.stderr();
 }
 
-// 3. The same relocations without the page (no rendering on the path): a WebSocket
-//    client sends `intervene relocate` and times the reply and the intervention record.
-{
-  const { default: WebSocket } = await import('ws');
-  const server2 = await startServer([scenarioArg, '--world', 'symbolic', '--speed', '1', '--no-operator']);
-  const ws = new WebSocket(server2.url.replace(/^http/, 'ws') + 'ws');
-  const out = [];
-  let hello = null, pending = null, id = 0;
-  const t0 = performance.now();
-  ws.on('message', (d) => {
-    const m = JSON.parse(d);
-    if (m.type === 'hello') hello = m;
-    if (!pending) return;
-    if (m.type === 'reply' && m.id === pending.id) pending.reply = performance.now() - pending.at;
-    if (m.type === 'log' && m.record.ev === 'intervention' && m.record.subject === pending.subject) {
-      out.push({ subject: pending.subject, replyMs: pending.reply, appliedMs: performance.now() - pending.at, t: m.record.t, applied: m.record.applied });
-      pending = null;
-    }
+async function measure(root) {
+  const out = { web_root: root ?? '(default)', world, scenario: scenarioArg };
+  await session(root, async (page) => {
+    await page.waitForTimeout(500); // the arm is moving
+    const snap = () => page.evaluate(() => [window.rtamp.frames, window.rtamp.framesReceived, performance.now(), window.__rafs.length]);
+    const s0 = await snap();
+    await page.waitForTimeout(seconds * 1000);
+    const s1 = await snap();
+    const rafs = await page.evaluate(([a, b]) => window.__rafs.slice(a, b + 1), [s0[3], s1[3]]);
+    const costs = [];
+    for (let i = 0; i + 1 < rafs.length; i++) if (rafs[i][1]) costs.push(rafs[i + 1][0] - rafs[i][0]);
+    const dt = (s1[2] - s0[2]) / 1000;
+    Object.assign(out, {
+      seconds: round(dt),
+      drawn_per_s: round((s1[0] - s0[0]) / dt),
+      frames_received_per_s: round((s1[1] - s0[1]) / dt),
+      draw_cost_ms: { n: costs.length, median: round(quantile(costs, 0.5)), p95: round(quantile(costs, 0.95)) },
+      draw_scale: await page.evaluate(() => window.rtamp.drawScale ?? 1),
+    });
   });
-  await waitFor(() => hello, 'hello');
-  const regions = hello.scene.regions.map((r) => r.name);
-  for (let k = 0; k < drags && performance.now() - t0 < 120000; k++) {
-    await new Promise((r) => setTimeout(r, 1500));
-    const subject = ['o1', 'o2', 'o3'][k % 3];
-    pending = { id: ++id, subject, at: performance.now() };
-    ws.send(JSON.stringify({ type: 'intervene', id, kind: 'relocate', subject, location: regions[0] }));
-    await waitFor(() => !pending || (pending.reply !== undefined && performance.now() - pending.at > 10000), 'the record', 30000).catch(() => {});
-    pending = null;
-  }
-  ws.close();
-  server2.proc.kill('SIGTERM');
-  const med = (xs) => xs.sort((a, b) => a - b)[Math.floor(xs.length / 2)];
-  console.log(JSON.stringify({ websocket_client: out.map((o) => ({ ...o, replyMs: Math.round(o.replyMs * 10) / 10, appliedMs: Math.round(o.appliedMs * 10) / 10 })), median_reply_ms: med(out.map((o) => o.replyMs)), median_applied_ms: med(out.map((o) => o.appliedMs)) }));
+  const stderr = await session(root, async (page) => {
+    await page.waitForTimeout(1000);
+    for (let k = 0; k < drags; k++) {
+      const things = await page.evaluate(() => window.rtamp.things());
+      const regions = await page.evaluate(() => window.rtamp.regions());
+      const names = regions.map((r) => r.name);
+      // Keep the robot busy: a block not in the first region goes there, else to the second.
+      const blocks = things.filter((t) => t.kind === 'object' && t.at);
+      if (!blocks.length || names.length < 2) break;
+      const th = blocks[k % blocks.length];
+      const target = th.at === names[0] ? regions[1] : regions[0];
+      const from = await page.evaluate((n) => window.rtamp.project(n), th.name);
+      const [dx, dy] = [[0, 0], [-0.08, 0.08], [0.08, 0.08], [-0.08, -0.08], [0.08, -0.08]][k % 5];
+      const to = await page.evaluate(([g, x, y]) => window.rtamp.projectPoint([g.center[0] + x, g.center[1] + y, 0]), [target, dx, dy]);
+      const before = await page.evaluate(() => [window.rtamp.latencies.length, window.rtamp.notices.length]);
+      await drag(page, from, to);
+      await waitFor(() => page.evaluate(([n, m]) => window.rtamp.latencies.length > n || window.rtamp.notices.slice(m).some((x) => x.kind === 'error'), before), 'the intervention record', 30000);
+      const refused = await page.evaluate((m) => window.rtamp.notices.slice(m).filter((x) => x.kind === 'error'), before[1]);
+      if (refused.length) console.error(`drag of ${th.name} refused: ${refused[0].text}`);
+      await page.waitForTimeout(1500);
+    }
+    const lat = await page.evaluate(() => window.rtamp.latencies);
+    Object.assign(out, {
+      drags: lat.map((l) => ({ subject: l.subject, t: l.t, applied: l.applied, drop_to_record_ms: round(l.ms), drop_to_reply_ms: round(l.replyMs), server_ms: round(l.serverMs) })),
+      median_drop_to_record_ms: round(quantile(lat.map((l) => l.ms), 0.5)),
+      max_drop_to_record_ms: round(Math.max(...lat.map((l) => l.ms))),
+      median_drop_to_reply_ms: round(quantile(lat.map((l) => l.replyMs), 0.5)),
+    });
+  });
+  out.server_stderr = stderr.split('\n').find((l) => l.includes('receipt to applied')) ?? null;
+  return out;
 }
+
+for (const root of roots) console.log(JSON.stringify(await measure(root), null, 1));
+process.exit(0);
