@@ -102,7 +102,9 @@ async function measure(root) {
       const to = await page.evaluate(([g, x, y]) => window.rtamp.projectPoint([g.center[0] + x, g.center[1] + y, 0]), [target, dx, dy]);
       const before = await page.evaluate(() => [window.rtamp.latencies.length, window.rtamp.notices.length]);
       await drag(page, from, to);
-      await waitFor(() => page.evaluate(([n, m]) => window.rtamp.latencies.length > n || window.rtamp.notices.slice(m).some((x) => x.kind === 'error'), before), 'the intervention record', 30000);
+      await waitFor(() => page.evaluate(([n, m]) => window.rtamp.latencies.length > n || window.rtamp.notices.slice(m).some((x) => x.kind === 'error'), before), 'the intervention record', 15000).catch(() =>
+        console.error(`drag of ${th.name}: no intervention record or refusal in 15 s (the drop missed?)`),
+      );
       const refused = await page.evaluate((m) => window.rtamp.notices.slice(m).filter((x) => x.kind === 'error'), before[1]);
       if (refused.length) console.error(`drag of ${th.name} refused: ${refused[0].text}`);
       await page.waitForTimeout(1500);
