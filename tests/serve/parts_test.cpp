@@ -4,6 +4,10 @@
 // the hub's ordering (hub.hpp).
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <optional>
+#include <vector>
+
 #include <nlohmann/json.hpp>
 
 #include "rtamp/serve/hub.hpp"
@@ -11,7 +15,9 @@
 #include "rtamp/serve/request.hpp"
 #include "rtamp/serve/thing_layout.hpp"
 #include "rtamp/world/geometry.hpp"
+#include "rtamp/world/intervention_rules.hpp"
 #include "rtamp/world/scenario_io.hpp"
+#include "rtamp/world/validate.hpp"
 
 namespace rtamp::serve {
 namespace {
@@ -66,6 +72,82 @@ TEST(ServeRequest, RefusesWhatIsNotARequest) {
   EXPECT_EQ(reply["ok"], false);
 }
 
+// Issue 13: a page's intervention and the same intervention scripted in the
+// scenario file (validate.cpp) are refused with the same words — the part of
+// the message after its owner ("intervention 'add': " / "operator action
+// 'add' at t=0: "), kind names spelled each input's way.
+TEST(ServeInterventionCheck, RefusesAsTheScenarioFileDoes) {
+  const world::Scenario s = world::load_scenario("3-block-tray");
+  InterventionCheck check(s);
+  const world::Placement now = world::initial_placement(s);
+  struct Case {
+    K kind;
+    std::string subject, location, cls;
+    std::optional<world::Vec3> position;
+    std::string expected;  // a part of the message
+  };
+  const std::vector<Case> cases = {
+      {K::Relocate, "o7", "r2", "", {}, "unknown object or container 'o7' at this time (did you mean"},
+      {K::Relocate, "o1", "r5", "", {}, "unknown location 'r5' at this time (did you mean"},
+      {K::Relocate, "o1", "r2", "", world::Vec3{50, 50, 0}, "is not inside region 'r2'"},
+      {K::Relocate, "r3", "r3", "", {}, "containers do not nest"},
+      {K::Remove, "o9", "", "", {}, "unknown object 'o9' at this time"},
+      {K::Remove, "r3", "", "", {}, "it is a container: use remove"},
+      {K::RemoveContainer, "o1", "", "", {}, "it is an object: use remove"},
+      {K::Add, "none", "r2", "block", {}, "reserved word"},
+      {K::Add, "in", "r2", "block", {}, "reserved word"},
+      {K::Add, "9x", "r2", "block", {}, "is not an identifier"},
+      {K::Add, "o1", "r2", "block", {}, "'o1' already exists at this time"},
+      {K::Add, "r1", "r2", "block", {}, "'r1' already exists at this time"},
+      {K::Add, "o9", "r2", "object", {}, "class 'object' is reserved"},
+      {K::Add, "o9", "r2", "tray", {}, "class 'tray' is already the class of containers"},
+      {K::AddContainer, "t9", "r2", "block", {}, "class 'block' is already the class of objects"},
+      {K::AddContainer, "o1", "r2", "tray", {}, "'o1' already exists at this time"},
+      {K::Remove, "o1", "", "block", {}, "a class is only given to add and add"},
+      {K::TakeFromGripper, "o1", "", "", {}, "names no object"},
+      {K::Add, "o9", "", "block", {}, "needs a target"},
+  };
+  auto kinds_as_page = [](std::string m) {
+    for (const char* k : {"add_container", "remove_container", "take_from_gripper"}) {
+      std::string dashed = k;
+      std::replace(dashed.begin(), dashed.end(), '_', '-');
+      for (auto p = m.find(k); p != std::string::npos; p = m.find(k)) m.replace(p, dashed.size(), dashed);
+    }
+    return m;
+  };
+  for (const Case& c : cases) {
+    world::Intervention v;
+    v.kind = c.kind;
+    v.subject = c.subject;
+    v.location = c.location;
+    v.cls = c.cls;
+    v.position = c.position;
+    const std::string page = check.check(v, now);
+    world::Scenario scripted = s;
+    scripted.interventions = {v};
+    std::string file;
+    try {
+      world::validate(scripted);
+    } catch (const Error& e) {
+      file = e.message();
+    }
+    const std::string page_owner = std::string("intervention '") + kind_name(c.kind) + "': ";
+    const std::string file_owner = std::string("operator action '") +
+                                   world::intervention_kind_name(c.kind, world::InterventionSyntax::Scenario) +
+                                   "' at t=0: ";
+    ASSERT_EQ(page.rfind(page_owner, 0), 0u) << page;
+    ASSERT_EQ(file.rfind(file_owner, 0), 0u) << file;
+    EXPECT_NE(page.find(c.expected), std::string::npos) << page;
+    if (c.expected == "needs a target") continue;  // each names its own input's fields
+    EXPECT_EQ(page.substr(page_owner.size()), kinds_as_page(file.substr(file_owner.size()))) << page << " | " << file;
+  }
+  // Taking from an empty gripper passes the check in both; the world refuses it
+  // with its own reason (exec's apply, the same for a scripted one).
+  world::Intervention take;
+  take.kind = K::TakeFromGripper;
+  EXPECT_EQ(check.check(take, now), "");
+}
+
 TEST(ServeInterventionCheck, FollowsTheScenarioRules) {
   const world::Scenario s = world::load_scenario("3-block-tray");
   InterventionCheck check(s);
@@ -98,13 +180,13 @@ TEST(ServeInterventionCheck, FollowsTheScenarioRules) {
   refused(iv(K::Add, "all_in_r2", "r2", "block"), "proposition");
   refused(iv(K::Add, "none", "r2", "block"), "reserved word");
   refused(iv(K::Add, "o9", "r2", "object"), "class 'object' is reserved");
-  refused(iv(K::Add, "o9", "r2", "tray"), "is the class of containers");
-  refused(iv(K::AddContainer, "t9", "r2", "block"), "is the class of objects");
+  refused(iv(K::Add, "o9", "r2", "tray"), "is already the class of containers");
+  refused(iv(K::AddContainer, "t9", "r2", "block"), "is already the class of objects");
   refused(iv(K::AddContainer, "t9", "r3", "tray"), "containers do not nest");
   refused(iv(K::Remove, "r3", ""), "it is a container");
   refused(iv(K::RemoveContainer, "o1", ""), "it is an object");
   refused(iv(K::Remove, "o1", "", "block"), "a class is only given");
-  refused(iv(K::TakeFromGripper, "o1", ""), "names no subject");
+  refused(iv(K::TakeFromGripper, "o1", ""), "names no object");
   // Fresh names skip every name in use.
   EXPECT_EQ(check.fresh_name(false), "o4");
   EXPECT_EQ(check.fresh_name(true), "t1");

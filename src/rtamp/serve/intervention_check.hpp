@@ -1,18 +1,14 @@
 // The check a page's intervention passes before it reaches the world: the
-// rules world/validate.cpp applies to a scenario's scripted operator actions
-// (through the same name rules and did-you-mean, world/names.hpp and
-// world/suggest.hpp), applied to the world as it is now instead of as the
-// script has made it so far. The world then applies the intervention or
-// refuses it with its own reason (no room, nothing held), exactly as for a
-// scripted one.
+// one rule set of scripted operator actions (world/intervention_rules.hpp,
+// which world/validate.cpp applies to a scenario's script) applied to the
+// world as it is now, so that a page and a scenario file refuse the same
+// mistake with the same words (issue 13). The world then applies the
+// intervention or refuses it with its own reason (no room, nothing held),
+// exactly as for a scripted one.
 //
-// Rules: relocate names a present thing and a target; add / add-container a
-// new valid name (not a region, present thing, proposition, nor a name that
-// was ever a thing of the other kind) and a class that is valid and not the
-// class of the other kind; remove a present object; remove-container a present
-// container; a class only for add and add-container; a target is a region or
-// a present container (a container only into a region) or a position; a
-// position given with a region lies inside it.
+// State kept here: every thing name and class ever seen, with its kind (names
+// keep their kind for the whole episode), and the fresh names for adds that
+// name no subject.
 #pragma once
 
 #include <map>

@@ -9,6 +9,7 @@
 
 #include "rtamp/world/fit.hpp"
 #include "rtamp/world/geometry.hpp"
+#include "rtamp/world/intervention_rules.hpp"
 #include "rtamp/world/names.hpp"
 #include "rtamp/world/propositions.hpp"
 #include "rtamp/world/suggest.hpp"
@@ -34,26 +35,6 @@ std::string fmt(double v) {
 
 std::string fmt(const Vec3& v) { return "[" + fmt(v[0]) + ", " + fmt(v[1]) + ", " + fmt(v[2]) + "]"; }
 
-const char* action_name(Intervention::Kind k) {
-  switch (k) {
-    case Intervention::Kind::Relocate:
-      return "relocate";
-    case Intervention::Kind::Add:
-      return "add";
-    case Intervention::Kind::Remove:
-      return "remove";
-    case Intervention::Kind::AddContainer:
-      return "add_container";
-    case Intervention::Kind::RemoveContainer:
-      return "remove_container";
-    case Intervention::Kind::TakeFromGripper:
-      return "take_from_gripper";
-    case Intervention::Kind::AddRegion:
-      return "add_region";
-  }
-  return "?";
-}
-
 class Validator {
  public:
   Validator(const Scenario& s, const detail::FieldLocator& locate) : s_(s), locate_(locate) {}
@@ -67,7 +48,6 @@ class Validator {
     check_unique_names();
     check_classes();
     check_geometry();
-    collect_intervention_names();
     check_propositions();
     if (std::all_of(s_.task.begin(), s_.task.end(), [](char c) { return std::isspace(static_cast<unsigned char>(c)); }))
       fail(s_.task_where, "the task is empty (write an LTL formula over the propositions, e.g. \"F G all_in_r2\")");
@@ -234,20 +214,6 @@ class Validator {
     }
   }
 
-  // Names that interventions add (an intervention may only add a name that is
-  // not of the other kind earlier or later).
-  void collect_intervention_names() {
-    for (const Intervention& iv : s_.interventions) {
-      if (iv.kind == Intervention::Kind::Add) {
-        added_objects_.insert(iv.subject);
-        added_object_classes_.insert(iv.cls);
-      } else if (iv.kind == Intervention::Kind::AddContainer) {
-        added_containers_.insert(iv.subject);
-        added_container_classes_.insert(iv.cls);
-      }
-    }
-  }
-
   void check_propositions() const {
     std::set<std::string> seen;
     const Vocabulary vocabulary(s_);
@@ -264,131 +230,44 @@ class Validator {
   }
 
   void check_interventions() const {
-    std::map<std::string, std::string> objects, containers;  // name -> class, at the current time
-    for (const Object& o : s_.objects) objects[o.name] = o.cls;
-    for (const Container& c : s_.containers) containers[c.name] = c.cls;
-    std::set<std::string> ever;  // every thing name used so far
-    for (const auto& [n, d] : defined_) ever.insert(n);
+    InterventionWorld w;  // the world as the script has made it so far
+    for (const Object& o : s_.objects) {
+      w.objects[o.name] = o.cls;
+      w.ever.emplace(o.name, false);
+      w.classes.emplace(o.cls, false);
+    }
+    for (const Container& c : s_.containers) {
+      w.containers[c.name] = c.cls;
+      w.ever.emplace(c.name, true);
+      w.classes.emplace(c.cls, true);
+    }
+    // A name or class the script adds later is of its kind from the start.
+    for (const Intervention& iv : s_.interventions)
+      if (iv.kind == Intervention::Kind::Add || iv.kind == Intervention::Kind::AddContainer) {
+        const bool cont = iv.kind == Intervention::Kind::AddContainer;
+        if (!iv.cls.empty()) w.classes.emplace(iv.cls, cont);
+      }
     double prev_time = 0;
-    const Geometry g(s_);
     for (const Intervention& iv : s_.interventions) {
-      const std::string owner = std::string("operator action '") + action_name(iv.kind) + "' at t=" + fmt(iv.time) + ": ";
+      const std::string owner = std::string("operator action '") +
+                                intervention_kind_name(iv.kind, InterventionSyntax::Scenario) + "' at t=" +
+                                fmt(iv.time) + ": ";
       if (!std::isfinite(iv.time) || iv.time < 0)
         fail(at(iv.where, "time"), owner + "time must be a finite number of seconds >= 0");
       if (iv.time < prev_time)
         fail(at(iv.where, "time"), owner + "operator actions must be sorted by time (previous one at t=" + fmt(prev_time) + ")");
       prev_time = iv.time;
       if (iv.position) check_vec(*iv.position, owner.substr(0, owner.size() - 2), "position", iv.where);
-
-      const bool adds = iv.kind == Intervention::Kind::Add || iv.kind == Intervention::Kind::AddContainer;
-      if (!adds && !iv.cls.empty()) fail(iv.where, owner + "a class is only given to add and add_container");
-      if (iv.kind == Intervention::Kind::TakeFromGripper && !iv.subject.empty())
-        fail(iv.where, owner + "take_from_gripper names no object (it takes whatever the gripper holds)");
-      auto need_object = [&](const char* field) {
-        if (iv.subject.empty()) fail(iv.where, owner + "names no object (give " + field + ": NAME)");
-      };
-      auto check_target = [&](bool subject_is_container) {
-        if (iv.location.empty()) {
-          if (!iv.position && iv.kind != Intervention::Kind::TakeFromGripper)
-            fail(iv.where, owner + "needs a target: 'to: LOCATION' or 'position: [x, y, z]'");
-          return;
-        }
-        const SourceLocation loc = at(iv.where, "to");
-        const Region* region = s_.find_region(iv.location);
-        if (!region) {
-          if (containers.count(iv.location)) {
-            if (subject_is_container)
-              fail(loc, owner + "cannot put container " + quote(iv.subject) + " into container " + quote(iv.location) +
-                            " (containers do not nest)");
-            return;
-          }
-          std::vector<std::string> locs;
-          for (const Region& r : s_.regions) locs.push_back(r.name);
-          for (const auto& [n, c] : containers) locs.push_back(n);
-          fail(loc, owner + "unknown location " + quote(iv.location) + " at this time" + suggestion(iv.location, locs));
-        }
-        if (iv.position && !footprint(*region).contains_point((*iv.position)[0], (*iv.position)[1]))
-          fail(at(iv.where, "position"), owner + "position " + fmt(*iv.position) + " is not inside region " +
-                                             quote(iv.location));
-      };
-      auto names_of = [](const std::map<std::string, std::string>& m) {
-        std::vector<std::string> v;
-        for (const auto& [n, c] : m) v.push_back(n);
-        return v;
-      };
-
-      switch (iv.kind) {
-        case Intervention::Kind::Relocate: {
-          need_object("object");
-          const bool is_obj = objects.count(iv.subject) > 0, is_cont = containers.count(iv.subject) > 0;
-          if (!is_obj && !is_cont) {
-            std::vector<std::string> all = names_of(objects);
-            for (const auto& n : names_of(containers)) all.push_back(n);
-            fail(at(iv.where, "object"), owner + "unknown object or container " + quote(iv.subject) + " at this time" +
-                                             suggestion(iv.subject, all));
-          }
-          check_target(is_cont);
-          break;
-        }
-        case Intervention::Kind::Add:
-        case Intervention::Kind::AddContainer: {
-          const bool cont = iv.kind == Intervention::Kind::AddContainer;
-          const char* field = cont ? "container" : "object";
-          need_object(field);
-          check_new_name(iv.subject, owner + field, at(iv.where, field));
-          if (s_.find_region(iv.subject) || objects.count(iv.subject) || containers.count(iv.subject))
-            fail(at(iv.where, field), owner + quote(iv.subject) + " already exists at this time");
-          if (ever.count(iv.subject) && (cont ? !containers_were(iv.subject) : !objects_were(iv.subject)))
-            fail(at(iv.where, field), owner + quote(iv.subject) + " was a " + (cont ? "an object" : "a container") +
-                                          " earlier; use a new name");
-          check_class(iv.cls, owner.substr(0, owner.size() - 2), iv.where);
-          const bool cls_clash = cont ? (object_classes_.count(iv.cls) || added_object_classes_.count(iv.cls))
-                                      : (container_classes_.count(iv.cls) || added_container_classes_.count(iv.cls));
-          if (cls_clash)
-            fail(at(iv.where, "class"), owner + "class " + quote(iv.cls) + " is already the class of " +
-                                            (cont ? "objects" : "containers"));
-          check_target(cont);
-          (cont ? containers : objects)[iv.subject] = iv.cls;
-          ever.insert(iv.subject);
-          break;
-        }
-        case Intervention::Kind::Remove:
-          need_object("object");
-          if (!objects.count(iv.subject)) {
-            const std::string hint = containers.count(iv.subject) ? " (it is a container: use remove_container)"
-                                                                  : suggestion(iv.subject, names_of(objects));
-            fail(at(iv.where, "object"), owner + "unknown object " + quote(iv.subject) + " at this time" + hint);
-          }
-          objects.erase(iv.subject);
-          break;
-        case Intervention::Kind::RemoveContainer:
-          need_object("container");
-          if (!containers.count(iv.subject)) {
-            const std::string hint = objects.count(iv.subject) ? " (it is an object: use remove)"
-                                                               : suggestion(iv.subject, names_of(containers));
-            fail(at(iv.where, "container"), owner + "unknown container " + quote(iv.subject) + " at this time" + hint);
-          }
-          containers.erase(iv.subject);
-          break;
-        case Intervention::Kind::TakeFromGripper:
-          check_target(false);
-          break;
-        case Intervention::Kind::AddRegion:
-          fail(iv.where, owner + "a person cannot add a region (add_region is a change for the planner)");
-      }
+      check_intervention(iv, s_, w, InterventionSyntax::Scenario, owner,
+                         [&](std::string_view field) { return field.empty() ? iv.where : at(iv.where, field); });
+      note_intervention(iv, w);
     }
   }
-
-  bool containers_were(const std::string& n) const {
-    return s_.find_container(n) != nullptr || added_containers_.count(n) > 0;
-  }
-  bool objects_were(const std::string& n) const { return s_.find_object(n) != nullptr || added_objects_.count(n) > 0; }
 
   const Scenario& s_;
   const detail::FieldLocator& locate_;
   std::map<std::string, std::pair<std::string, SourceLocation>> defined_;  // name -> (kind, where)
   std::set<std::string> object_classes_, container_classes_;
-  std::set<std::string> added_objects_, added_containers_, added_object_classes_, added_container_classes_;
 };
 
 }  // namespace
