@@ -247,7 +247,9 @@ void LiveEpisode::service() {
 
 void LiveEpisode::after_slice() {
   const double t = episode_->world().time();
-  if (options_.frame_record_period > 0 && t >= next_frame_record_) {
+  // Frame records are for a replay of the log file; without --log (the
+  // episode's own in-memory log, whose sink skips them) none is built.
+  if (options_.frame_record_period > 0 && !own_log_ && t >= next_frame_record_) {
     log_->record(t, frame_record(frames_->frame()));
     next_frame_record_ = t + options_.frame_record_period;
   }
