@@ -3,6 +3,8 @@
 // z = table top) — and release: over a tray the thing is relocated onto that tray, over
 // a region into that region, elsewhere the drop point alone is sent (the server maps it
 // or refuses with its reason). A press and release without moving selects the thing.
+// Picking and the follow run on the main thread against view.js's copy of the things;
+// the drawing worker is told (view.hold / view.showAt).
 // Invariants: while a drag is on, the camera controls are off and frames do not move
 // the dragged thing; every drop sends exactly one `relocate`.
 import * as THREE from 'three';
@@ -21,16 +23,14 @@ export class DragInteraction {
   }
 
   ndc(e) {
-    const r = this.scene.renderer.domElement.getBoundingClientRect();
+    const r = this.scene.canvas.getBoundingClientRect();
     return new THREE.Vector2(((e.clientX - r.left) / r.width) * 2 - 1, -((e.clientY - r.top) / r.height) * 2 + 1);
   }
 
   // The nearest thing under the pointer (its name), skipping `except`.
   thingAt(e, except) {
     this.raycaster.setFromCamera(this.ndc(e), this.scene.camera);
-    const meshes = [...this.scene.things.values()].filter((t) => t.mesh.visible && t.mesh.userData.thing !== except).map((t) => t.mesh);
-    const hit = this.raycaster.intersectObjects(meshes, true)[0];
-    return hit ? hit.object.userData.thing : null;
+    return this.scene.thingHit(this.raycaster, except);
   }
 
   tablePoint(e) {
@@ -48,17 +48,15 @@ export class DragInteraction {
     e.preventDefault();
     this.scene.controls.enabled = false;
     const entry = this.scene.things.get(name);
-    this.drag = { name, x: e.clientX, y: e.clientY, moved: false, z: entry.mesh.position.z, start: entry.mesh.position.clone() };
-    this.scene.dragging = name;
+    this.drag = { name, x: e.clientX, y: e.clientY, moved: false, z: entry.mesh.position.z, start: entry.mesh.position.toArray() };
+    this.scene.hold(name);
   }
 
   move(e) {
     if (!this.drag) return;
     if (Math.hypot(e.clientX - this.drag.x, e.clientY - this.drag.y) > 4) this.drag.moved = true;
     const p = this.tablePoint(e);
-    const entry = this.scene.things.get(this.drag.name);
-    if (p && entry) entry.mesh.position.set(p.x, p.y, this.drag.z + 0.03);
-    this.scene.invalidate();
+    if (p) this.scene.showAt(this.drag.name, [p.x, p.y, this.drag.z + 0.03]);
   }
 
   up(e) {
@@ -66,24 +64,22 @@ export class DragInteraction {
     const d = this.drag;
     this.drag = null;
     this.scene.controls.enabled = true;
-    this.scene.dragging = null;
-    const entry = this.scene.things.get(d.name);
-    this.scene.invalidate();
+    this.scene.hold(null);
     if (!d.moved) {
-      if (entry) entry.mesh.position.copy(d.start);
+      this.scene.showAt(d.name, d.start);
       this.onSelect(d.name);
       return;
     }
     const p = this.tablePoint(e);
     if (!p) {
-      if (entry) entry.mesh.position.copy(d.start);
+      this.scene.showAt(d.name, d.start);
       return;
     }
     const onto = this.thingAt(e, d.name);
     const ontoKind = onto && this.scene.things.get(onto)?.info?.kind;
     const location = ontoKind === 'container' ? onto : this.scene.regionAt(p.x, p.y);
     const position = [p.x, p.y, this.scene.tableTop];
-    if (entry) entry.mesh.position.set(p.x, p.y, d.z);
+    this.scene.showAt(d.name, [p.x, p.y, d.z]);
     this.onDrop({ subject: d.name, location, position, start: d.start });
   }
 }

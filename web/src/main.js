@@ -1,15 +1,15 @@
 // The page's entry point: connects to the server (ws://<this host>/ws), builds the scene
 // and the panels from `hello`, and routes every server message to them; the person's
-// actions (drag, add, delete, take, controls) become requests. Messages update the 3-D
-// scene's objects at once and mark it for drawing; the panels that change per message
-// (log-driven panels, tree statuses, clock, gripper) are updated at most once per
-// animation frame, from the latest data; the scene is drawn on demand (scene.js).
+// actions (drag, add, delete, take, controls) become requests. The 3-D scene is drawn by
+// a worker (view.js, render/): a frame message updates the main thread's copy of the
+// things (labels, picking) and is passed on to it; the panels that change per message
+// (log-driven panels, tree statuses, clock, gripper) and the labels are updated at most
+// once per animation frame, from the latest data.
 // Invariant: after every `hello` (connect, seek) the page's state is rebuilt from it
 // alone (scene, tree, history).
 import { Connection } from './connection.js';
-import { Scene } from './scene.js';
-import { Robot } from './robot.js';
-import { PlanArrows } from './arrows.js';
+import { SceneView } from './view.js';
+import { ArmPose } from './arm.js';
 import { Episode } from './episode.js';
 import { DragInteraction } from './interaction.js';
 import { Notice } from './notice.js';
@@ -22,6 +22,8 @@ import { PersonPanel } from './panels/person.js';
 import { installTestHook } from './testhook.js';
 
 const $ = (s) => document.querySelector(s);
+// The drawing bundle, beside this one (assets/render.js).
+const renderUrl = new URL('render.js', document.currentScript?.src || new URL('assets/', location.href)).href;
 
 const app = {
   ready: false,
@@ -29,7 +31,6 @@ const app = {
   t: 0,
   state: null,
   held: null,
-  framesRendered: 0, // scene draws
   pending: { log: false, status: null, frame: null }, // panel updates for the next animation frame
   framesReceived: 0,
   latencies: [],
@@ -37,14 +38,13 @@ const app = {
   episode: new Episode(),
 };
 
-app.scene = new Scene($('#scene'));
+app.scene = new SceneView($('#scene'), renderUrl);
 app.notice = new Notice($('#notice'));
 app.tree = new TreePanel($('#tree'));
 app.plan = new PlanPanel($('#plan'));
 app.automaton = new AutomatonPanel($('#automaton'));
 app.timeline = new TimelinePanel($('#timeline'), $('#scrub'), (t) => control('seek', t));
 app.controls = new ControlsPanel($('#controls'), (a, v) => control(a, v));
-app.arrows = new PlanArrows(app.scene);
 
 function control(action, value) {
   return app.conn.control(action, value).then((r) => (r.ok ? r : app.notice.reply(action, r)));
@@ -77,10 +77,7 @@ new DragInteraction(app.scene, {
       if (!r.ok) app.drops.splice(app.drops.indexOf(drop), 1);
       // Refused: the thing goes back to where the server last put it.
       const e = app.scene.things.get(subject);
-      if (!r.ok && e && app.scene.dragging !== subject) {
-        e.mesh.position.set(...e.pos);
-        app.scene.invalidate();
-      }
+      if (!r.ok && e && app.scene.dragging !== subject) app.scene.showAt(subject, e.pos);
     });
   },
 });
@@ -89,8 +86,7 @@ function onHello(h) {
   app.hello = h;
   app.t = h.t ?? 0;
   app.scene.build(h.scene);
-  if (app.robot) app.robot.group.removeFromParent();
-  app.robot = new Robot(app.scene.world, h.scene.robot);
+  app.arm = new ArmPose(h.scene.robot);
   app.person.setScene(h.scene);
   $('#task').textContent = h.task;
   $('#mode').textContent = `${h.mode} · ${h.world}`;
@@ -111,7 +107,7 @@ function onHello(h) {
 function refreshLog() {
   const ep = app.episode;
   app.plan.update(ep.plan);
-  app.arrows.setMoves(ep.end ? [] : ep.remaining());
+  app.scene.setMoves(ep.end ? [] : ep.remaining());
   app.automaton.highlight(ep.tracked);
   app.timeline.update(ep.timeline);
   $('#result').textContent = ep.end ? `${ep.end.success ? 'succeeded' : 'failed'}: ${ep.end.end}` : '';
@@ -122,9 +118,7 @@ function onFrame(f) {
   app.t = f.t;
   app.held = f.held ?? null;
   app.tool = f.tool;
-  app.scene.applyThings(f.things);
-  app.robot?.update(f);
-  app.scene.invalidate();
+  app.scene.frame(f, app.arm ? app.arm.update(f) : null);
   app.pending.frame = f;
 }
 
@@ -198,9 +192,9 @@ app.conn = new Connection(wsUrl, onMessage, (s) => {
   $('#connection').dataset.state = s;
 });
 
-function loop(now) {
+function loop() {
   updatePanels();
-  if (app.scene.draw(now, () => app.arrows.update())) app.framesRendered++;
+  app.scene.updateLabels();
   requestAnimationFrame(loop);
 }
 requestAnimationFrame(loop);

@@ -1,13 +1,15 @@
 // The page's read-only test hook, window.rtamp: what the scene shows (things with their
 // class, kind, position, location), where a world point or a thing is on the screen
-// (page pixels, for real mouse drags), the messages and replies seen, the draw counter and scale
-// and the drop → intervention latencies. Nothing here changes the page.
+// (page pixels, for real mouse drags), the messages and replies seen, the draw counter,
+// scale and costs (as the drawing worker reports them), where the scene is drawn, and the
+// drop → intervention latencies. Nothing here changes the page.
 
 export function installTestHook(app) {
   const { scene } = app;
   window.rtamp = {
+    // The page has shown its latest hello: panels filled, the scene built and drawn once.
     get ready() {
-      return app.ready;
+      return app.ready && scene.drawnSeq === scene.seq;
     },
     get hello() {
       return app.hello;
@@ -29,12 +31,25 @@ export function installTestHook(app) {
     },
     // Scene draws (on demand: not every animation frame draws).
     get frames() {
-      return app.framesRendered;
+      return scene.drawn;
     },
-    // The canvas's drawing-buffer scale now (1 when still; lower while moving if frames
-    // are too slow to draw at full resolution).
+    // The canvas's drawing-buffer scale of the last draw (1 when still; lower while moving
+    // if frames are too slow to draw at full resolution).
     get drawScale() {
-      return scene.renderer.getPixelRatio();
+      return scene.drawScale;
+    },
+    // What each drawn frame cost (ms, from the animation frame that drew to the next one,
+    // in the thread that draws), oldest first.
+    get drawCosts() {
+      return scene.costs;
+    },
+    // Where the scene is drawn: 'worker' (OffscreenCanvas), 'main' (the fallback, with
+    // `renderWhy` saying why) or 'starting'.
+    get renderer() {
+      return scene.link.mode;
+    },
+    get renderWhy() {
+      return scene.link.why;
     },
     get framesReceived() {
       return app.framesReceived;
@@ -44,7 +59,7 @@ export function installTestHook(app) {
     },
     // The tool point of the arm as drawn (forward kinematics of the angles shown).
     get tool() {
-      return app.robot?.toolPoint ?? null;
+      return app.arm?.toolPoint ?? null;
     },
     get streamedTool() {
       return app.tool;

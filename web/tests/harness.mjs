@@ -52,7 +52,12 @@ export function startServer(args) {
   });
 }
 
-export async function launch() {
+// Chromium's flags for GPU compositing on SwiftShader (measure.mjs --gpu; not the tests').
+export const GPU_SWIFTSHADER_ARGS = ['--use-angle=swiftshader', '--enable-unsafe-swiftshader', '--ignore-gpu-blocklist'];
+
+// The browser tests' Chromium: --disable-gpu (software WebGL, software compositing);
+// gpu: true drops it for GPU_SWIFTSHADER_ARGS.
+export async function launch({ gpu = false } = {}) {
   const { chromium } = await import('playwright-core');
   const profile = scratchDir('chromium-profile');
   const context = await chromium.launchPersistentContext(profile, {
@@ -62,7 +67,7 @@ export async function launch() {
     args: [
       '--headless',
       '--no-sandbox',
-      '--disable-gpu',
+      ...(gpu ? GPU_SWIFTSHADER_ARGS : ['--disable-gpu']),
       '--disable-quic',
       '--no-first-run',
       '--disable-background-networking',

@@ -1,18 +1,25 @@
 // Issue 14's bars for the page, measured (docs/benchmarks.md "The page of `rtamp serve`"):
 //   node tests/measure.mjs RTAMP_BIN SCENARIO [DRAGS] [--world mujoco|symbolic]
-//        [--seconds S] [--web-root DIR]...
+//        [--seconds S] [--gpu] [--web-root DIR[?QUERY]]...
 // Each --web-root is a built page (e.g. an older one built from git, and this tree's
-// build/share/rtamp/web); every page gets the same run, one after the other, each with
+// build/share/rtamp/web), optionally with a query for the page's URL (`?render=main`:
+// the page draws on its main thread, its fallback); every page gets the same run, one
+// after the other, each with
 // two runs of `rtamp serve SCENARIO --world W --speed 1 --no-operator --paused --port 0`,
 // resumed by the page's pause button once the page is up (so the arm moves from t = 0;
 // 3-block-tray with MuJoCo ends at about t = 19 s), one per part:
 // 1. frame rate while the episode runs at real-time speed (headless Chromium with
-//    --disable-gpu: software WebGL): scene draws (window.rtamp.frames) and `frame`
-//    messages received, per second over S seconds (default 10); the cost of a drawn
-//    frame = the time from the animation-frame callback that drew to the next
-//    animation-frame callback (it includes the WebGL raster and the canvas readback,
-//    which block the page's main thread), median and p95, timed by a wrapper around
-//    requestAnimationFrame installed before the page loads (the same for every page);
+//    --disable-gpu: software WebGL and software compositing; with --gpu: GPU compositing
+//    on SwiftShader, harness.mjs GPU_SWIFTSHADER_ARGS): scene draws (window.rtamp.frames)
+//    and `frame` messages received, per second over S seconds (default 10); the cost of
+//    a drawn frame = the time from the animation-frame callback that drew to the next
+//    animation-frame callback in the thread that draws (it includes the WebGL raster and
+//    the canvas readback, which block that thread), median and p95: a page that reports
+//    window.rtamp.drawCosts (the drawing worker's own timing) is taken at its word, an
+//    older page is timed by a wrapper around the main thread's requestAnimationFrame
+//    installed before the page loads; the same wrapper gives the main thread's
+//    animation-frame interval (median, p95, max: how long the page's main thread was
+//    busy between two chances to handle input and messages), for every page;
 // 2. drag → intervention: DRAGS real mouse drags of a block onto a region, the page's
 //    times from the drop (pointerup) to the server's reply and to the `intervention`
 //    record arriving back (window.rtamp.latencies), and the server's own receipt →
@@ -26,6 +33,8 @@ const opt = (name, dflt) => {
   for (let i = args.indexOf(name); i >= 0; i = args.indexOf(name)) out.push(args.splice(i, 2)[1]);
   return out.length ? out : dflt;
 };
+const gpu = args.includes('--gpu');
+if (gpu) args.splice(args.indexOf('--gpu'), 1);
 const world = opt('--world', ['mujoco'])[0];
 const seconds = Number(opt('--seconds', ['10'])[0]);
 const roots = opt('--web-root', [null]);
@@ -39,9 +48,10 @@ const quantile = (xs, q) => {
 };
 
 // Starts a paused episode, opens the page and resumes it from the page; calls body(page).
-async function session(root, body) {
+async function session(rootArg, body) {
+  const [root, query] = rootArg ? rootArg.split('?') : [null, null];
   const server = await startServer([scenarioArg, '--world', world, '--speed', '1', '--no-operator', '--paused', ...(root ? ['--web-root', root] : [])]);
-  const { context } = await launch();
+  const { context } = await launch({ gpu });
   await context.addInitScript(() => {
     const raf = window.requestAnimationFrame.bind(window);
     window.__rafs = []; // [start ms, drew]
@@ -53,7 +63,7 @@ async function session(root, body) {
       });
   });
   try {
-    const { page } = await openPage(context, server.url);
+    const { page } = await openPage(context, query ? `${server.url}?${query}` : server.url);
     await page.click('#pause');
     await waitFor(() => page.evaluate(() => window.rtamp.state && window.rtamp.state.paused === false), 'the resumed episode', 30000);
     await body(page);
@@ -67,22 +77,30 @@ async function session(root, body) {
 }
 
 async function measure(root) {
-  const out = { web_root: root ?? '(default)', world, scenario: scenarioArg };
+  const out = { web_root: root ?? '(default)', world, scenario: scenarioArg, browser: gpu ? 'gpu compositing (SwiftShader)' : '--disable-gpu' };
   await session(root, async (page) => {
     await page.waitForTimeout(500); // the arm is moving
-    const snap = () => page.evaluate(() => [window.rtamp.frames, window.rtamp.framesReceived, performance.now(), window.__rafs.length]);
+    const snap = () =>
+      page.evaluate(() => [window.rtamp.frames, window.rtamp.framesReceived, performance.now(), window.__rafs.length, window.rtamp.drawCosts?.length ?? null]);
     const s0 = await snap();
     await page.waitForTimeout(seconds * 1000);
     const s1 = await snap();
     const rafs = await page.evaluate(([a, b]) => window.__rafs.slice(a, b + 1), [s0[3], s1[3]]);
-    const costs = [];
-    for (let i = 0; i + 1 < rafs.length; i++) if (rafs[i][1]) costs.push(rafs[i + 1][0] - rafs[i][0]);
+    let costs = [];
+    const gaps = [];
+    for (let i = 0; i + 1 < rafs.length; i++) {
+      gaps.push(rafs[i + 1][0] - rafs[i][0]);
+      if (rafs[i][1]) costs.push(rafs[i + 1][0] - rafs[i][0]);
+    }
+    if (s0[4] != null) costs = await page.evaluate(([a, b]) => window.rtamp.drawCosts.slice(a, b), [s0[4], s1[4]]);
     const dt = (s1[2] - s0[2]) / 1000;
     Object.assign(out, {
+      renderer: await page.evaluate(() => window.rtamp.renderer ?? 'main (page without a worker)'),
       seconds: round(dt),
       drawn_per_s: round((s1[0] - s0[0]) / dt),
       frames_received_per_s: round((s1[1] - s0[1]) / dt),
       draw_cost_ms: { n: costs.length, median: round(quantile(costs, 0.5)), p95: round(quantile(costs, 0.95)) },
+      main_frame_interval_ms: { n: gaps.length, median: round(quantile(gaps, 0.5)), p95: round(quantile(gaps, 0.95)), max: round(Math.max(...gaps)) },
       draw_scale: await page.evaluate(() => window.rtamp.drawScale ?? 1),
     });
   });

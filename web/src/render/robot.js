@@ -1,11 +1,11 @@
-// The UR5 drawn from its kinematics (kinematics.js): a sphere at every joint frame's
-// origin, a cylinder between consecutive origins, and a two-finger gripper along the
-// tool axis. With streamed joint angles the arm shows them; in the symbolic world
-// (q = null) it reaches the streamed tool point (reachTool) pointing down, or rests at
-// home when that point is out of such reach (the symbolic world's parked hand).
+// The UR5 drawn from its kinematics (../kinematics.js), in the drawing worker: a sphere
+// at every joint frame's origin, a cylinder between consecutive origins, and a
+// two-finger gripper along the tool axis (closed while it holds a thing). The joint
+// angles to show come from the main thread (../arm.js: streamed, or solved for the
+// symbolic world's tool point).
 // Invariant: the drawn tool point is linkFrames(robot, q)[7]'s origin for the q shown.
 import * as THREE from 'three';
-import { linkFrames, origin, reachTool } from './kinematics.js';
+import { linkFrames, origin } from '../kinematics.js';
 import { litMaterial } from './material.js';
 
 const up = new THREE.Vector3(0, 1, 0);
@@ -54,8 +54,10 @@ export class Robot {
     mesh.quaternion.setFromUnitVectors(up, d.normalize());
   }
 
-  show(q) {
+  // Shows the joint angles q; held: whether the gripper holds a thing.
+  show(q, held = this.held) {
     this.q = q;
+    this.held = held;
     const F = linkFrames(this.robot, q);
     const pts = F.map(origin);
     pts.forEach((p, i) => this.joints[i].position.set(...p));
@@ -70,19 +72,5 @@ export class Robot {
       f.quaternion.setFromRotationMatrix(new THREE.Matrix4().set(T[0], T[1], T[2], 0, T[4], T[5], T[6], 0, T[8], T[9], T[10], 0, 0, 0, 0, 1));
     });
     this.toolPoint = pts[7];
-  }
-
-  // A frame: its joint angles, or (symbolic world) its tool point.
-  update(frame) {
-    this.held = frame.held;
-    if (Array.isArray(frame.q)) this.show(frame.q);
-    else if (Array.isArray(frame.tool)) {
-      // A tool point the arm cannot reach pointing down (the server parks the symbolic
-      // hand above the base) leaves the arm at home.
-      const q = reachTool(this.robot, frame.tool, this.reached ? this.q : this.robot.home);
-      const p = origin(linkFrames(this.robot, q)[7]);
-      this.reached = Math.hypot(p[0] - frame.tool[0], p[1] - frame.tool[1], p[2] - frame.tool[2]) < 0.005;
-      this.show(this.reached ? q : this.robot.home);
-    } else this.show(this.robot.home);
   }
 }

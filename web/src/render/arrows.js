@@ -1,8 +1,9 @@
 // The planned next moves as arrows in the scene: for the latest `plan` log record, each
 // action "move(THING, TO)" not yet finished becomes an arrow from THING's current place
 // to TO (a region's centre, or a container's current position), the next one drawn
-// strongest. Invariant: arrows are recomputed from the scene every drawn frame, so they follow
-// the things as they move; at most `max` arrows are shown.
+// strongest. Part of the drawing (renderer.js, in the drawing worker): `scene` is the
+// Renderer. Invariant: arrows are recomputed from the scene every drawn frame, so they
+// follow the things as they move; at most `max` arrows are shown.
 import * as THREE from 'three';
 
 export function parseMove(action) {
