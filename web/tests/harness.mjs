@@ -31,14 +31,22 @@ export function scratchDir(name) {
   return mkdtempSync(join(base, `${name}-`));
 }
 
+const servers = new Set(); // started and not exited
+let killOnExit = false;
+
 // Starts `rtamp serve ARGS --port 0`; resolves {url, proc, stderr()} after its first stdout line.
 export function startServer(args) {
   const proc = spawn(process.env.RTAMP_BIN, ['serve', ...args, '--port', '0'], { stdio: ['ignore', 'pipe', 'pipe'] });
   let err = '';
   proc.stderr.on('data', (d) => (err += d));
   // The server never outlives the test (a failed assertion, a ctest timeout's SIGTERM).
-  process.on('exit', () => proc.kill('SIGTERM'));
-  for (const sig of ['SIGTERM', 'SIGINT']) process.once(sig, () => process.exit(1));
+  servers.add(proc);
+  proc.once('exit', () => servers.delete(proc));
+  if (!killOnExit) {
+    killOnExit = true;
+    process.on('exit', () => servers.forEach((p) => p.kill('SIGTERM')));
+    for (const sig of ['SIGTERM', 'SIGINT']) process.once(sig, () => process.exit(1));
+  }
   const lines = createInterface({ input: proc.stdout });
   return new Promise((resolve, reject) => {
     const timer = setTimeout(() => reject(new Error(`rtamp serve printed no URL in 60 s; stderr:\n${err}`)), 60000);

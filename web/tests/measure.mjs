@@ -1,14 +1,14 @@
 // Issue 14's bars for the page, measured (docs/benchmarks.md "The page of `rtamp serve`"):
 //   node tests/measure.mjs RTAMP_BIN SCENARIO [DRAGS] [--world mujoco|symbolic]
-//        [--seconds S] [--gpu] [--web-root DIR[?QUERY]]...
+//        [--seconds S] [--speed X] [--gpu] [--web-root DIR[?QUERY]]...
 // Each --web-root is a built page (e.g. an older one built from git, and this tree's
 // build/share/rtamp/web), optionally with a query for the page's URL (`?render=main`:
 // the page draws on its main thread, its fallback); every page gets the same run, one
-// after the other, each with
-// two runs of `rtamp serve SCENARIO --world W --speed 1 --no-operator --paused --port 0`,
-// resumed by the page's pause button once the page is up (so the arm moves from t = 0;
-// 3-block-tray with MuJoCo ends at about t = 19 s), one per part:
-// 1. frame rate while the episode runs at real-time speed (headless Chromium with
+// after the other, each with two runs of `rtamp serve SCENARIO --world W --speed X
+// --no-operator --paused --port 0` (X: 1, real time, unless --speed), resumed by the
+// page's pause button once the page is up (so the arm moves from t = 0; 3-block-tray
+// with MuJoCo ends at about t = 19 s), one per part:
+// 1. frame rate while the episode runs (headless Chromium with
 //    --disable-gpu: software WebGL and software compositing; with --gpu: GPU compositing
 //    on SwiftShader, harness.mjs GPU_SWIFTSHADER_ARGS): scene draws (window.rtamp.frames)
 //    and `frame` messages received, per second over S seconds (default 10); the cost of
@@ -37,6 +37,7 @@ const gpu = args.includes('--gpu');
 if (gpu) args.splice(args.indexOf('--gpu'), 1);
 const world = opt('--world', ['mujoco'])[0];
 const seconds = Number(opt('--seconds', ['10'])[0]);
+const speed = opt('--speed', ['1'])[0];
 const roots = opt('--web-root', [null]);
 const [bin, scenarioArg, dragsArg] = args;
 process.env.RTAMP_BIN = bin;
@@ -50,7 +51,7 @@ const quantile = (xs, q) => {
 // Starts a paused episode, opens the page and resumes it from the page; calls body(page).
 async function session(rootArg, body) {
   const [root, query] = rootArg ? rootArg.split('?') : [null, null];
-  const server = await startServer([scenarioArg, '--world', world, '--speed', '1', '--no-operator', '--paused', ...(root ? ['--web-root', root] : [])]);
+  const server = await startServer([scenarioArg, '--world', world, '--speed', speed, '--no-operator', '--paused', ...(root ? ['--web-root', root] : [])]);
   const { context } = await launch({ gpu });
   await context.addInitScript(() => {
     const raf = window.requestAnimationFrame.bind(window);
@@ -77,7 +78,7 @@ async function session(rootArg, body) {
 }
 
 async function measure(root) {
-  const out = { web_root: root ?? '(default)', world, scenario: scenarioArg, browser: gpu ? 'gpu compositing (SwiftShader)' : '--disable-gpu' };
+  const out = { web_root: root ?? '(default)', world, speed: Number(speed), scenario: scenarioArg, browser: gpu ? 'gpu compositing (SwiftShader)' : '--disable-gpu' };
   await session(root, async (page) => {
     await page.waitForTimeout(500); // the arm is moving
     const snap = () =>
