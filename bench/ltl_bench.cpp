@@ -14,6 +14,7 @@
 #include "rtamp/ltl/printer.hpp"
 #include "rtamp/ltl/random.hpp"
 #include "rtamp/ltl/simplify.hpp"
+#include "rtamp_source_dir.hpp"
 
 namespace {
 

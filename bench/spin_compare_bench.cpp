@@ -22,6 +22,7 @@
 #include "rtamp/automata/translate.hpp"
 #include "rtamp/ltl/parser.hpp"
 #include "rtamp/ltl/printer.hpp"
+#include "rtamp_source_dir.hpp"
 
 namespace {
 

@@ -7,6 +7,7 @@
 #include <iostream>
 
 #include "command.hpp"
+#include "episode_args.hpp"
 #include "options.hpp"
 #include "rtamp/episode/episode.hpp"
 #include "rtamp/exec/episode_log.hpp"
@@ -24,13 +25,9 @@ rtamp::cli::Registrar reg{
     "run",
     "Run one episode: plan, execute through a behavior tree (MuJoCo UR5 or symbolic world), react to the operator",
     [](CLI::App& app) -> rtamp::cli::Action {
-      struct Opts {
-        std::string scenario, algo = "astar-exp", bt = "online-action", cost = "euclid", log, trees, video, change,
-                              world = "mujoco", planning;
-        std::uint64_t seed = 1;
-        double max_time = 900, rate = 0, failures = 0;
-        int cycles = 0;
-        bool json = false, quiet = false, random_initial = false, no_operator = false;
+      struct Opts : rtamp::cli::EpisodeArgs {
+        std::string video;
+        bool json = false, quiet = false;
       };
       auto o = std::make_shared<Opts>();
       app.description(
@@ -42,32 +39,7 @@ rtamp::cli::Registrar reg{
           "time) unless --quiet; --json prints only the metrics as JSON on stdout (the timeline then goes to\n"
           "stderr). Exit code 0 if the task was done, 1 if the episode ended otherwise, 2 on bad input,\n"
           "130 / 143 when interrupted by SIGINT / SIGTERM.");
-      rtamp::cli::add_scenario(app, o->scenario)->required();
-      app.add_option("--world", o->world, "World: mujoco (simulated UR5) | symbolic (no physics)")
-          ->check(CLI::IsMember({"mujoco", "symbolic"}));
-      rtamp::cli::add_choice(app, "--algo", o->algo, rtamp::cli::algorithm_choices(), "Search algorithm:");
-      app.add_option("--bt", o->bt,
-                     "Tree variant: online-action (Algorithm 2, action conditions) | online-state (state "
-                     "conditions) | offline (rebuild from scratch)")
-          ->check(CLI::IsMember({"online-action", "online-state", "offline"}));
-      rtamp::cli::add_choice(app, "--cost", o->cost, rtamp::cli::cost_model_choices(), "Planner motion-cost model:");
-      app.add_option("--planning", o->planning,
-                     "worker: plan on a thread, charging its time to world time (default for mujoco) | inline: "
-                     "plan synchronously, charged nothing, deterministic (default for symbolic)")
-          ->check(CLI::IsMember({"worker", "inline"}));
-      rtamp::cli::add_seed(app, "--seed", o->seed, "Seed of the episode (operator, perception, random initial layout)");
-      app.add_option("--change", o->change, "Add one random intervention: relocate | add | remove")
-          ->check(CLI::IsMember({"relocate", "add", "remove"}));
-      rtamp::cli::add_real(app, "--rate", o->rate, {0, 100}, "Random interventions per second of world time, of every kind");
-      rtamp::cli::add_real(app, "--failures", o->failures, {0, 1}, "Symbolic world: probability that a move fails");
-      rtamp::cli::add_integer(app, "--cycles", o->cycles, 0, 1000000,
-                              "Recurring tasks (plans that cycle through moves): succeed after K completed cycles "
-                              "(0: run until --max-time)");
-      app.add_flag("--random-initial", o->random_initial, "Shuffle objects inside their initial locations");
-      app.add_flag("--no-operator", o->no_operator, "Ignore the scenario's scripted operator");
-      rtamp::cli::add_real(app, "--max-time", o->max_time, {0, 1e7, true}, "Give up after this many seconds of world time");
-      app.add_option("--log", o->log, "Write the episode as JSON Lines to FILE");
-      app.add_option("--trees", o->trees, "Write the tree as BehaviorTree.CPP XML after each change into DIR");
+      rtamp::cli::add_episode_options(app, *o, "Write the episode as JSON Lines to FILE");
       app.add_option("--video", o->video, "Record the run to FILE.mp4 (offscreen rendering; mujoco only)");
       app.add_flag("--json", o->json, "Print only the episode's metrics, as one JSON object, on stdout");
       app.add_flag("--quiet", o->quiet, "No timeline");
@@ -79,27 +51,7 @@ rtamp::cli::Registrar reg{
         if (!o->video.empty()) rtamp::cli::check_output_file("--video", o->video);
         if (!o->log.empty()) rtamp::cli::check_output_file("--log", o->log);
         if (!o->trees.empty()) rtamp::cli::check_output_dir("--trees", o->trees);
-        episode::EpisodeOptions opt;
-        opt.world = o->world == "symbolic" ? episode::WorldKind::Symbolic : episode::WorldKind::MuJoCo;
-        opt.algorithm = plan::parse_algorithm(o->algo);
-        opt.conditions = o->bt == "online-state" ? exec::ConditionMode::State : exec::ConditionMode::Action;
-        opt.reconfiguration = o->bt == "offline" ? exec::Reconfiguration::Offline : exec::Reconfiguration::Online;
-        const std::string planning =
-            !o->planning.empty() ? o->planning : (opt.world == episode::WorldKind::Symbolic ? "inline" : "worker");
-        opt.planning = planning == "inline" ? exec::PlanningMode::Inline : exec::PlanningMode::Worker;
-        opt.cost = o->cost;
-        opt.seed = o->seed;
-        opt.max_time = o->max_time;
-        opt.cycles = o->cycles;
-        opt.random_rate = o->rate;
-        opt.failure_probability = o->failures;
-        opt.randomize_initial = o->random_initial;
-        opt.scripted_operator = !o->no_operator;
-        if (o->change == "relocate") opt.random_change = world::Intervention::Kind::Relocate;
-        if (o->change == "add") opt.random_change = world::Intervention::Kind::Add;
-        if (o->change == "remove") opt.random_change = world::Intervention::Kind::Remove;
-        opt.log_path = o->log;
-        opt.tree_dir = o->trees;
+        episode::EpisodeOptions opt = rtamp::cli::to_episode_options(*o);
         opt.video_path = o->video;
         if (!o->quiet) {
           std::FILE* to = o->json ? stderr : stdout;

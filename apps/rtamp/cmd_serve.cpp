@@ -12,6 +12,7 @@
 #include <thread>
 
 #include "command.hpp"
+#include "episode_args.hpp"
 #include "options.hpp"
 #include "rtamp/serve/live_episode.hpp"
 #include "rtamp/serve/replay.hpp"
@@ -44,13 +45,11 @@ rtamp::cli::Registrar reg{
     "serve",
     "Serve a running episode (or an episode log, --replay) to a web page: watch it and intervene as the person in the loop",
     [](CLI::App& app) -> rtamp::cli::Action {
-      struct Opts {
-        std::string scenario, algo = "astar-exp", bt = "online-action", cost = "euclid", log, trees, change,
-                              world = "mujoco", planning, host = "127.0.0.1", replay, web_root;
-        std::uint64_t seed = 1;
-        double max_time = 900, rate = 0, failures = 0, speed = 1;
-        int cycles = 0, port = 8080;
-        bool quiet = false, random_initial = false, no_operator = false, paused = false, exit_at_end = false;
+      struct Opts : rtamp::cli::EpisodeArgs {
+        std::string host = "127.0.0.1", replay, web_root;
+        double speed = 1;
+        int port = 8080;
+        bool quiet = false, paused = false, exit_at_end = false;
       };
       auto o = std::make_shared<Opts>();
       app.description(
@@ -61,28 +60,7 @@ rtamp::cli::Registrar reg{
           "episode, checked like a scripted one, and appears in the log. --replay LOG serves a finished\n"
           "episode's JSON Lines log instead (scrub with seek). Listens on 127.0.0.1 only unless --host says\n"
           "otherwise; prints the URL as the first line. docs/serve.md.");
-      rtamp::cli::add_scenario(app, o->scenario)->required();
-      app.add_option("--world", o->world, "World: mujoco (simulated UR5) | symbolic (no physics)")
-          ->check(CLI::IsMember({"mujoco", "symbolic"}));
-      rtamp::cli::add_choice(app, "--algo", o->algo, rtamp::cli::algorithm_choices(), "Search algorithm:");
-      app.add_option("--bt", o->bt, "Tree variant: online-action | online-state | offline")
-          ->check(CLI::IsMember({"online-action", "online-state", "offline"}));
-      rtamp::cli::add_choice(app, "--cost", o->cost, rtamp::cli::cost_model_choices(), "Planner motion-cost model:");
-      app.add_option("--planning", o->planning,
-                     "worker (default for mujoco) | inline (default for symbolic; deterministic)")
-          ->check(CLI::IsMember({"worker", "inline"}));
-      rtamp::cli::add_seed(app, "--seed", o->seed, "Seed of the episode (operator, perception, random initial layout)");
-      app.add_option("--change", o->change, "Add one random intervention: relocate | add | remove")
-          ->check(CLI::IsMember({"relocate", "add", "remove"}));
-      rtamp::cli::add_real(app, "--rate", o->rate, {0, 100}, "Random interventions per second of world time, of every kind");
-      rtamp::cli::add_real(app, "--failures", o->failures, {0, 1}, "Symbolic world: probability that a move fails");
-      rtamp::cli::add_integer(app, "--cycles", o->cycles, 0, 1000000,
-                              "Recurring tasks: succeed after K completed cycles (0: run until --max-time)");
-      app.add_flag("--random-initial", o->random_initial, "Shuffle objects inside their initial locations");
-      app.add_flag("--no-operator", o->no_operator, "Ignore the scenario's scripted operator");
-      rtamp::cli::add_real(app, "--max-time", o->max_time, {0, 1e7, true}, "Give up after this many seconds of world time");
-      app.add_option("--log", o->log, "Write the episode as JSON Lines to FILE (with `frame` records for replays)");
-      app.add_option("--trees", o->trees, "Write the tree as BehaviorTree.CPP XML after each change into DIR");
+      rtamp::cli::add_episode_options(app, *o, "Write the episode as JSON Lines to FILE (with `frame` records for replays)");
       app.add_option("--host", o->host, "Address to listen on (default 127.0.0.1: this machine only)");
       rtamp::cli::add_integer(app, "--port", o->port, 0, 65535, "Port to listen on (0: any free port)");
       rtamp::cli::add_real(app, "--speed", o->speed, {0, 1000},
@@ -120,27 +98,8 @@ rtamp::cli::Registrar reg{
           handler = replay.get();
         } else {
           serve::LiveOptions lo;
+          lo.episode = rtamp::cli::to_episode_options(*o);
           episode::EpisodeOptions& opt = lo.episode;
-          opt.world = o->world == "symbolic" ? episode::WorldKind::Symbolic : episode::WorldKind::MuJoCo;
-          opt.algorithm = plan::parse_algorithm(o->algo);
-          opt.conditions = o->bt == "online-state" ? exec::ConditionMode::State : exec::ConditionMode::Action;
-          opt.reconfiguration = o->bt == "offline" ? exec::Reconfiguration::Offline : exec::Reconfiguration::Online;
-          const std::string planning =
-              !o->planning.empty() ? o->planning : (opt.world == episode::WorldKind::Symbolic ? "inline" : "worker");
-          opt.planning = planning == "inline" ? exec::PlanningMode::Inline : exec::PlanningMode::Worker;
-          opt.cost = o->cost;
-          opt.seed = o->seed;
-          opt.max_time = o->max_time;
-          opt.cycles = o->cycles;
-          opt.random_rate = o->rate;
-          opt.failure_probability = o->failures;
-          opt.randomize_initial = o->random_initial;
-          opt.scripted_operator = !o->no_operator;
-          if (o->change == "relocate") opt.random_change = world::Intervention::Kind::Relocate;
-          if (o->change == "add") opt.random_change = world::Intervention::Kind::Add;
-          if (o->change == "remove") opt.random_change = world::Intervention::Kind::Remove;
-          opt.log_path = o->log;
-          opt.tree_dir = o->trees;
           if (!o->quiet)
             opt.timeline = [](const std::string& line) {
               std::fputs(line.c_str(), stdout);

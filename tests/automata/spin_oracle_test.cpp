@@ -22,6 +22,7 @@
 #include "rtamp/ltl/printer.hpp"
 #include "rtamp/ltl/random.hpp"
 #include "rtamp/util/error.hpp"
+#include "rtamp_source_dir.hpp"
 
 using namespace rtamp;
 using namespace rtamp::automata;

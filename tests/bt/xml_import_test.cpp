@@ -17,6 +17,7 @@
 #include "rtamp/bt/bt.hpp"
 #include "rtamp/bt/xml_import.hpp"
 #include "sample_trees.hpp"
+#include "rtamp_source_dir.hpp"
 
 namespace rtamp::bt {
 namespace {

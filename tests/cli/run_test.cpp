@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "run_cli.hpp"
+#include "rtamp_source_dir.hpp"
 
 namespace rtamp::cli::testing {
 namespace {

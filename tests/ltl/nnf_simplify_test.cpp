@@ -12,6 +12,7 @@
 #include "rtamp/ltl/printer.hpp"
 #include "rtamp/ltl/random.hpp"
 #include "rtamp/ltl/simplify.hpp"
+#include "rtamp_source_dir.hpp"
 
 namespace rtamp::ltl {
 namespace {

@@ -9,6 +9,7 @@
 #include <string>
 
 #include "rtamp/ltl/printer.hpp"
+#include "rtamp_source_dir.hpp"
 
 namespace rtamp::ltl {
 namespace {

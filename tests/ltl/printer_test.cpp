@@ -14,6 +14,7 @@
 #include "rtamp/ltl/lasso.hpp"
 #include "rtamp/ltl/parser.hpp"
 #include "rtamp/ltl/random.hpp"
+#include "rtamp_source_dir.hpp"
 
 namespace rtamp::ltl {
 namespace {

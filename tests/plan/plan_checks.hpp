@@ -16,6 +16,7 @@
 #include "rtamp/ltl/lasso.hpp"
 #include "rtamp/ltl/parser.hpp"
 #include "rtamp/plan/planner.hpp"
+#include "rtamp_source_dir.hpp"
 
 namespace plantest {
 

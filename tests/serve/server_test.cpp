@@ -149,6 +149,19 @@ TEST(ServeServer, HelloDescribesTheSceneAndTheApiServesIt) {
   EXPECT_EQ(res3.result(), http::status::method_not_allowed);
 }
 
+// A non-loopback address of this machine (the source address of a route out), or "".
+std::string non_loopback_address() {
+  try {
+    test::net::io_context ioc;
+    test::net::ip::udp::socket u(ioc);
+    u.connect(test::net::ip::udp::endpoint(test::net::ip::make_address("192.0.2.1"), 9));  // sends nothing
+    const auto a = u.local_endpoint().address();
+    if (!a.is_loopback() && !a.is_unspecified()) return a.to_string();
+  } catch (const std::exception&) {
+  }
+  return "";
+}
+
 TEST(ServeServer, OnlyLoopbackIsBoundByDefault) {
   const world::Scenario s = world::load_scenario("3-block-tray");
   LiveOptions o;
@@ -156,22 +169,31 @@ TEST(ServeServer, OnlyLoopbackIsBoundByDefault) {
   o.paused = true;
   Served sv(s, o);
   EXPECT_EQ(sv.server.address(), "127.0.0.1");
-  // A non-loopback address of this machine (the source address of a route out, if there is one).
-  std::string other;
-  try {
-    test::net::io_context ioc;
-    test::net::ip::udp::socket u(ioc);
-    u.connect(test::net::ip::udp::endpoint(test::net::ip::make_address("192.0.2.1"), 9));  // sends nothing
-    const auto a = u.local_endpoint().address();
-    if (!a.is_loopback() && !a.is_unspecified()) other = a.to_string();
-  } catch (const std::exception&) {
-  }
+  const std::string other = non_loopback_address();
   if (other.empty()) GTEST_SKIP() << "this machine has no non-loopback address to try";
   test::net::io_context ioc;
   test::tcp::socket sock(ioc);
   boost::system::error_code ec;
   sock.connect(test::tcp::endpoint(test::net::ip::make_address(other), sv.port()), ec);
   EXPECT_TRUE(ec) << "connected to " << other << ":" << sv.port();
+}
+
+// --host 0.0.0.0 (asked for): the page is served on the machine's other addresses too.
+TEST(ServeServer, TheNetworkIsServedWhenAsked) {
+  const std::string other = non_loopback_address();
+  if (other.empty()) GTEST_SKIP() << "this machine has no non-loopback address to try";
+  const world::Scenario s = world::load_scenario("3-block-tray");
+  LiveOptions o;
+  o.episode = symbolic_options();
+  o.paused = true;
+  ServerOptions so;
+  so.host = "0.0.0.0";
+  Served sv(s, o, so);
+  EXPECT_EQ(sv.server.address(), "0.0.0.0");
+  WsClient c(sv.port(), other);
+  const auto hello = c.read();
+  ASSERT_TRUE(hello);
+  EXPECT_EQ(hello->at("type"), "hello");
 }
 
 // Hostile clients: they connect and disconnect, send malformed JSON, unknown

@@ -13,6 +13,7 @@
 #include "rtamp/world/geometry.hpp"
 #include "rtamp/world/propositions.hpp"
 #include "rtamp/world/scenario_io.hpp"
+#include "rtamp_source_dir.hpp"
 
 namespace rtamp::world {
 namespace {

@@ -16,6 +16,7 @@
 #include "rtamp/world/propositions.hpp"
 #include "rtamp/world/scenario_io.hpp"
 #include "rtamp/world/validate.hpp"
+#include "rtamp_source_dir.hpp"
 
 namespace rtamp::world {
 namespace {

@@ -9,6 +9,7 @@
 #   <numeric name="ur5:velocity_limit" data="v1 .. v6"
 # and fails the build naming what it did not find. Numbers are copied as written, so the
 # C++ constants are the doubles MuJoCo reads from the same text.
+include(${CMAKE_CURRENT_LIST_DIR}/../../../cmake/GeneratedSource.cmake)
 file(READ "${MODEL}" xml)
 set(d "")
 set(a "")
@@ -49,10 +50,4 @@ inline constexpr double kUr5Upper[6] = {${upper}};
 inline constexpr double kUr5VelocityLimit[6] = {${vel}};
 }  // namespace rtamp::robot::detail
 ")
-if(EXISTS "${OUTPUT}")
-  file(READ "${OUTPUT}" old)
-  if(old STREQUAL content)
-    return()
-  endif()
-endif()
-file(WRITE "${OUTPUT}" "${content}")
+rtamp_write_if_changed("${OUTPUT}" "${content}")

@@ -3,6 +3,7 @@
 # the source tree. Invoked by src/rtamp/world/CMakeLists.txt with
 #   -DSCENARIO_DIR=<repo>/scenarios -DOUTPUT=<build>/embedded_scenarios.cpp
 # The built-in name of a file is its name without ".yaml" (3-block.yaml -> 3-block).
+include(${CMAKE_CURRENT_LIST_DIR}/../../../cmake/GeneratedSource.cmake)
 file(GLOB files "${SCENARIO_DIR}/*.yaml")
 list(SORT files)
 set(arrays "")
@@ -10,12 +11,7 @@ set(entries "")
 set(i 0)
 foreach(f IN LISTS files)
   get_filename_component(name "${f}" NAME_WE)
-  file(READ "${f}" hex HEX)
-  string(LENGTH "${hex}" hexlen)
-  math(EXPR size "${hexlen} / 2")
-  string(REGEX REPLACE "([0-9a-f][0-9a-f])" "0x\\1," bytes "${hex}")
-  # Break the byte list into lines of 32 bytes (160 characters).
-  string(REGEX REPLACE "((0x[0-9a-f][0-9a-f],){32})" "\\1\n    " bytes "${bytes}")
+  rtamp_bytes_literal("${f}" bytes size)
   string(APPEND arrays "const unsigned char k${i}[] = {\n    ${bytes}0x00};\n")
   string(APPEND entries "      {\"${name}\", std::string_view(reinterpret_cast<const char*>(k${i}), ${size})},\n")
   math(EXPR i "${i} + 1")
@@ -36,11 +32,4 @@ ${entries}  };
 
 }  // namespace rtamp::world::detail
 ")
-# Only touch the output when it changes (keeps rebuilds minimal).
-if(EXISTS "${OUTPUT}")
-  file(READ "${OUTPUT}" old)
-  if(old STREQUAL content)
-    return()
-  endif()
-endif()
-file(WRITE "${OUTPUT}" "${content}")
+rtamp_write_if_changed("${OUTPUT}" "${content}")
