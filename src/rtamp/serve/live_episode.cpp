@@ -241,6 +241,7 @@ void LiveEpisode::service() {
   }
   if (changed) {
     changed_ = true;
+    playback_.end_slice();  // the loop looks at the change now, not after the rest of the slice
     emit_frame(true);
   }
 }
@@ -258,9 +259,11 @@ void LiveEpisode::after_slice() {
 
 void LiveEpisode::emit_frame(bool force) {
   if (hub_->clients() == 0 && !force) return;
+  // At most 30 a wall second, counted from when the next one was due (not from
+  // the last one sent): a world whose slices come every 20 ms still gets 30.
   const auto now = Clock::now();
-  if (!force && now - last_frame_ < kFrameInterval) return;
-  last_frame_ = now;
+  if (!force && now < next_frame_) return;
+  next_frame_ = std::max(next_frame_ + kFrameInterval, now - kFrameInterval);
   const Frame f = frames_->frame();
   hub_->time(f.t);
   hub_->frame(frame_message(f));

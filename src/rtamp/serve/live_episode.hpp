@@ -103,7 +103,7 @@ class LiveEpisode final : public RequestHandler {
   std::deque<Pending> pending_;
   InterventionStats stats_;
 
-  std::chrono::steady_clock::time_point last_frame_{};
+  std::chrono::steady_clock::time_point next_frame_{};  // when the next unforced frame is due
   bool changed_ = false;  // loop thread: a page's intervention was applied since the world last looked
   double next_frame_record_ = 0;
 };

@@ -1,6 +1,7 @@
 #include "rtamp/serve/playback.hpp"
 
 #include <algorithm>
+#include <utility>
 
 namespace rtamp::serve {
 
@@ -91,8 +92,14 @@ bool Playback::hold(const Service& service) {
   return false;
 }
 
+void Playback::end_slice() {
+  std::lock_guard lock(mu_);
+  end_slice_ = true;
+}
+
 void Playback::pace(double t, const Service& service) {
   std::unique_lock lock(mu_);
+  end_slice_ = false;  // a change before this slice was seen by its caller
   for (;;) {
     if (stopped_ || paused_ || speed_ <= 0) {
       last_t_ = t;
@@ -114,7 +121,7 @@ void Playback::pace(double t, const Service& service) {
       last_t_ = t;
       return;
     }
-    if (wait_locked(lock, due, service)) {
+    if (wait_locked(lock, due, service) || std::exchange(end_slice_, false)) {
       last_t_ = t;
       return;
     }

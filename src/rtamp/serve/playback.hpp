@@ -4,7 +4,10 @@
 // the episode's (or replay's) own thread does with them: hold() blocks while
 // paused, pace(t) sleeps until world time t is due at the current speed.
 // Both wake at once when wake() is called (a request is waiting to be served
-// on that thread) and call `service` then, and at least every 20 ms.
+// on that thread) and call `service` then, and at least every 20 ms. A
+// `service` that changed the world calls end_slice(): the pace() it runs in
+// returns at once instead of at its due time, so the loop looks at the change
+// without waiting out the slice (the anchor stays: later slices keep time).
 //
 // Pacing keeps an anchor (wall time, world time) and re-anchors after a pause,
 // a speed change, or when the world falls more than 0.25 s of wall time
@@ -40,8 +43,11 @@ class Playback {
   // Playback thread. Blocks while paused; returns true if a step was granted
   // (the caller runs one step unpaced), false when playing (or stopped).
   bool hold(const Service& service);
-  // Sleeps until world time `t` is due (at once for speed 0 or past t).
+  // Sleeps until world time `t` is due (at once for speed 0 or past t), or
+  // until a `service` it ran called end_slice().
   void pace(double t, const Service& service);
+  // Playback thread, from `service`: the pace() in progress returns now.
+  void end_slice();
 
  private:
   using Clock = std::chrono::steady_clock;
@@ -52,7 +58,7 @@ class Playback {
   double speed_;
   bool paused_;
   int steps_ = 0;
-  bool woken_ = false, stopped_ = false, reanchor_ = true;
+  bool woken_ = false, stopped_ = false, reanchor_ = true, end_slice_ = false;
   Clock::time_point wall0_;
   double t0_ = 0, last_t_ = 0;
 };
