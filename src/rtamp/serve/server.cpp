@@ -112,7 +112,14 @@ struct Server::Impl {
   void accept() {
     acceptor.async_accept(net::make_strand(ioc), [this](beast::error_code ec, tcp::socket socket) {
       if (ec == net::error::operation_aborted || !acceptor.is_open()) return;
-      if (!ec) std::make_shared<HttpSession>(std::move(socket), *this)->run();
+      if (!ec) {
+        // Small messages go out at once: with Nagle's algorithm a message written
+        // right after another (a log record after a reply) waited for the
+        // client's delayed ACK, ~40 ms.
+        beast::error_code ignored;
+        socket.set_option(tcp::no_delay(true), ignored);
+        std::make_shared<HttpSession>(std::move(socket), *this)->run();
+      }
       accept();
     });
   }
