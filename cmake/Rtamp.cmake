@@ -9,7 +9,8 @@
 #   rtamp_options: the project's warning (and sanitizer) flags, linked PRIVATE by every
 #     project target and never passed on to users of the libraries.
 #   rtamp_add_test(NAME SOURCES ... DEPS ... [LABELS ...] [TIMEOUT s])
-#     -> GoogleTest executable registered with ctest (one ctest entry per TEST)
+#     -> GoogleTest executable registered with ctest (one ctest entry per TEST); none
+#        in a sanitizer build (RTAMP_SANITIZE) when LABELS has slow
 #   rtamp_source_dir: tests and benchmarks that read files of the source tree include
 #     "rtamp_source_dir.hpp" (RTAMP_SOURCE_DIR, the checkout's path). A generated header
 #     rather than a -D on every target, so that objects that do not use the path compile
@@ -65,6 +66,11 @@ endfunction()
 
 function(rtamp_add_test name)
   cmake_parse_arguments(T "" "TIMEOUT" "SOURCES;DEPS;LABELS;ENVIRONMENT" ${ARGN})
+  # The sanitizer run leaves out the tests labelled slow (make test-asan: ctest -LE slow),
+  # so a sanitizer build does not compile them either (callers check if(TARGET name)).
+  if(RTAMP_SANITIZE AND "slow" IN_LIST T_LABELS)
+    return()
+  endif()
   add_executable(${name} ${T_SOURCES})
   target_link_libraries(${name} PRIVATE rtamp_options rtamp_source_dir ${T_DEPS} GTest::gtest GTest::gtest_main GTest::gmock)
   if(NOT T_TIMEOUT)

@@ -45,11 +45,13 @@ void collect_atoms(const ltl::Formula& f, std::set<std::string>& out) {
 }
 
 // spin's never claim for f, read back, with spin's atom names mapped back to
-// ours; nullopt if spin failed or timed out.
+// ours; nullopt if spin failed or ran out of time.
 std::optional<Automaton> spin_automaton(const ltl::Formula& f, std::string& claim) {
   std::map<std::string, std::string> renamed;
   const std::string text = ltl::to_spin_string(f, &renamed);
-  const std::string cmd = "timeout 5 spin -f '" + text + "' 2>&1";
+  // 5 s of spin's CPU time (ulimit -t: the same on a loaded machine as on an idle
+  // one, unlike a wall-clock limit), and a wall-clock guard against a hang.
+  const std::string cmd = "ulimit -t 5; exec timeout 300 spin -f '" + text + "' 2>&1";
   FILE* p = ::popen(cmd.c_str(), "r");
   if (!p) return std::nullopt;
   claim.clear();

@@ -254,6 +254,14 @@ Continuation some_continuation_accepts(const world::Scenario& s, const world::Pl
 // Episodes whose failure reason was too big for the brute force to confirm.
 int g_unconfirmed = 0;
 
+// Counts the installed plans whose search stopped at its (wall-clock) time
+// limit with a plan that may not be optimal: how an episode goes after one
+// depends on how loaded the machine was, so its outcome is not confirmable.
+struct CutPlans final : EpisodeObserver {
+  int count = 0;
+  void on_plan(double, const PlanEvent& e) override { count += e.result.stats.hit_time_limit ? 1 : 0; }
+};
+
 void check_episode(std::uint64_t seed, bool verbose = false) {
   Case k = random_case(seed);
   SCOPED_TRACE(k.describe);
@@ -264,7 +272,10 @@ void check_episode(std::uint64_t seed, bool verbose = false) {
     std::cout << k.describe << '\n';
     loop.add_observer(timeline);
   }
+  CutPlans cut;
+  loop.add_observer(cut);
   const EpisodeMetrics& m = loop.run();
+  if (verbose) std::cout << "plans cut by the search's time limit: " << cut.count << '\n';
   ASSERT_TRUE(w.check_invariants().empty()) << w.check_invariants();
   ASSERT_NE(m.end, EndReason::Error) << m.reason;
   ASSERT_NE(m.end, EndReason::None);
@@ -342,6 +353,10 @@ void check_episode(std::uint64_t seed, bool verbose = false) {
       break;
     }
     case EndReason::TimeLimit:
+      if (cut.count > 0) {  // a plan that was not optimal can take longer than max_time
+        ++g_unconfirmed;
+        break;
+      }
       ADD_FAILURE() << m.reason;
       break;
     default: ADD_FAILURE() << to_string(m.end) << ": " << m.reason;
