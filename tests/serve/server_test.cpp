@@ -472,5 +472,116 @@ TEST(ServeServer, ReplayReachesTheLoggedEndStateAndSeeks) {
   fs::remove_all(dir);
 }
 
+
+// The nodes of a tree message without their statuses (what a replay can know).
+std::string tree_shape(const json& tree) {
+  json out = json::array();
+  for (const auto& n : tree["nodes"])
+    out.push_back({n["id"], n["parent"], n["name"], n["kind"], n["category"]});
+  return out.dump();
+}
+
+// A replay sends the behavior tree the live episode had after each change —
+// rebuilt from the log's plan and tree records (node names, kinds, categories,
+// parents; statuses are not logged) — and a hello after a seek holds the tree at
+// that time; a thing added mid-episode has the class its intervention record
+// names (here a container of class "crate", not the default "tray"), in a log
+// with frame records and in one without. The handover scenario replans when the
+// tray arrives; in both condition forms (their nodes are named differently).
+TEST(ServeServer, ReplaySendsTheLoggedTreesAndAddedThingsClasses) {
+  world::Scenario s = world::load_scenario("3-block-tray-handover");
+  ASSERT_FALSE(s.interventions.empty());
+  ASSERT_EQ(s.interventions[0].kind, world::Change::Kind::AddContainer);
+  s.interventions[0].cls = "crate";
+  const std::string added = s.interventions[0].subject;
+  const fs::path dir = temp_dir("replay_tree");
+  for (const exec::ConditionMode mode : {exec::ConditionMode::Action, exec::ConditionMode::State}) {
+    SCOPED_TRACE(exec::to_string(mode));
+    const fs::path served_log = dir / (std::string(exec::to_string(mode)) + "_served.jsonl");
+    const fs::path run_log = dir / (std::string(exec::to_string(mode)) + "_run.jsonl");
+    // Live, watched from the first plan on: the tree after each change.
+    std::vector<std::pair<double, std::string>> live;
+    {
+      LiveOptions o;
+      o.episode = symbolic_options(served_log.string());
+      o.episode.conditions = mode;
+      o.speed = 0;
+      o.paused = true;
+      Served sv(s, o);
+      WsClient c(sv.port());
+      const auto hello = c.read();
+      ASSERT_TRUE(hello);
+      // The first tree: in hello if the first plan was made before the page joined, else a message.
+      if ((*hello)["tree"].is_object())
+        live.emplace_back((*hello)["tree"]["t"].get<double>(), tree_shape((*hello)["tree"]));
+      c.send(json{{"type", "control"}, {"id", 1}, {"action", "resume"}});
+      ASSERT_TRUE(c.read_until([](const json& m) { return m["type"] == "state" && m["ended"] == true; }));
+      for (const auto& m : c.seen)
+        if (m["type"] == "tree" && (live.empty() || tree_shape(m) != live.back().second))
+          live.emplace_back(m["t"].get<double>(), tree_shape(m));
+      EXPECT_TRUE(sv.episode.wait().success);
+    }
+    ASSERT_GE(live.size(), 2u) << "no replan: nothing to compare";
+    {
+      auto o = symbolic_options(run_log.string());
+      o.conditions = mode;
+      ASSERT_TRUE(episode::run_episode(s, o).success);
+    }
+    for (const fs::path& log : {served_log, run_log}) {
+      SCOPED_TRACE(log.filename().string());
+      bool classed = false;
+      for (const auto& rec : read_log(log))
+        classed = classed || (rec["ev"] == "intervention" && rec["subject"] == added && rec["class"] == "crate");
+      EXPECT_TRUE(classed) << "the intervention record names the added thing's class";
+      ReplayOptions ro;
+      ro.speed = 0;
+      ro.paused = true;
+      Replay replay(s, log.string(), ro);
+      Server server({"127.0.0.1", 0, ""}, replay);
+      server.start();
+      replay.start();
+      WsClient c(server.port());
+      ASSERT_TRUE(c.read());
+      // Played from the start: the same trees, in the same order, at the logged times.
+      c.send(json{{"type", "control"}, {"id", 1}, {"action", "resume"}});
+      ASSERT_TRUE(c.read_until([](const json& m) { return m["type"] == "state" && m["ended"] == true; }));
+      std::vector<std::pair<double, std::string>> replayed;
+      json last_frame;
+      for (const auto& m : c.seen) {
+        if (m["type"] == "tree" && (replayed.empty() || tree_shape(m) != replayed.back().second))
+          replayed.emplace_back(m["t"].get<double>(), tree_shape(m));
+        if (m["type"] == "frame") last_frame = m;
+      }
+      ASSERT_EQ(replayed.size(), live.size());
+      for (std::size_t i = 0; i < live.size(); ++i) {
+        EXPECT_EQ(replayed[i].second, live[i].second) << "tree " << i;
+        EXPECT_NEAR(replayed[i].first, live[i].first, 1e-4) << "tree " << i;
+      }
+      // The added container is drawn as what it is.
+      ASSERT_FALSE(last_frame.is_null());
+      bool drawn = false;
+      for (const auto& t : last_frame["things"])
+        if (t["name"] == added) {
+          drawn = true;
+          EXPECT_EQ(t["class"], "crate");
+          EXPECT_EQ(t["kind"], "container");
+        }
+      EXPECT_TRUE(drawn);
+      // A seek just before and just after the first replan's tree: hello's tree is the tree then.
+      const double t1 = replayed[1].first;
+      c.send(json{{"type", "control"}, {"id", 2}, {"action", "seek"}, {"value", t1 - 1e-3}});
+      auto hello = c.read_until([](const json& m) { return m["type"] == "hello"; });
+      ASSERT_TRUE(hello);
+      EXPECT_EQ(tree_shape((*hello)["tree"]), live[0].second);
+      c.send(json{{"type", "control"}, {"id", 3}, {"action", "seek"}, {"value", t1}});
+      hello = c.read_until([](const json& m) { return m["type"] == "hello"; });
+      ASSERT_TRUE(hello);
+      EXPECT_EQ(tree_shape((*hello)["tree"]), live[1].second);
+      replay.stop();
+    }
+  }
+  fs::remove_all(dir);
+}
+
 }  // namespace
 }  // namespace rtamp::serve

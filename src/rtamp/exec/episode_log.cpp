@@ -79,13 +79,13 @@ void EpisodeLog::on_action(double t, const char* what, const std::string& action
 }
 
 void EpisodeLog::on_intervention(const WorldEvent& e) {
-  write(e.time, json{{"ev", "intervention"},
-                     {"kind", to_string(e.what.kind)},
-                     {"subject", e.what.subject},
-                     {"location", e.what.location},
-                     {"applied", e.applied},
-                     {"detail", e.detail}}
-                    .dump());
+  using K = world::Change::Kind;
+  json j{{"ev", "intervention"},    {"kind", to_string(e.what.kind)}, {"subject", e.what.subject},
+         {"location", e.what.location}, {"applied", e.applied},         {"detail", e.detail}};
+  // What an added thing is (a replay draws it so): its class, "" meaning the default.
+  if (e.what.kind == K::Add || e.what.kind == K::AddContainer)
+    j["class"] = !e.what.cls.empty() ? e.what.cls : e.what.kind == K::AddContainer ? "tray" : "block";
+  write(e.time, j.dump());
 }
 
 void EpisodeLog::on_perceived(double t, const world::Placement& seen, const world::Placement&) {
@@ -124,6 +124,8 @@ void EpisodeLog::on_plan(double t, const PlanEvent& e) {
                 {"costs", costs},
                 {"in_cycle", in_cycle},
                 {"automaton_states", e.automaton_states},
+                {"start", placement_json(e.start)},
+                {"hand", e.hand.empty() ? "home" : e.hand},
                 {"seconds", s.seconds},
                 {"expanded", s.expanded},
                 {"generated", s.generated},

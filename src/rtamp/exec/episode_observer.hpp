@@ -32,6 +32,8 @@ struct PlanEvent {
   const plan::PlanResult& result;
   const std::vector<plan::ActionTuple>& tuples;
   std::vector<std::uint32_t> automaton_states;  // the tracked states it started from
+  world::Placement start;                       // the state it started from (its first move's pre-state)
+  std::string hand;                             // the hand's location there ("" home)
 };
 
 class EpisodeObserver {

@@ -243,7 +243,7 @@ void ReactiveLoop::begin() {
     finish(EndReason::NoPlan, std::string("no plan: ") + first.message);
     return;
   }
-  install(first, true, outcome.states);
+  install(first, true, outcome);
 }
 
 // Observes the world: the symbolic state of the run (held things at their
@@ -516,6 +516,8 @@ plan::PlanResult ReactiveLoop::plan_from(const Starts& st, Outcome& out) {
     planner_->set_placement(s.placement, s.hand);
     planner_->set_automaton_states(s.states);
     out.states = s.states;
+    out.placement = s.placement;
+    out.hand = s.hand;
     plan::PlanResult r = planner_->plan();
     if (!r.found && !planner_->forbidden_moves().empty()) {
       seconds += r.stats.seconds;
@@ -553,15 +555,15 @@ bool ReactiveLoop::collect_plan() {
     return true;
   }
   if (outcome.stop_running_move) tree_->tree().halt();  // the world puts its thing back
-  install(r, false, outcome.states);
+  install(r, false, outcome);
   return true;
 }
 
-void ReactiveLoop::install(plan::PlanResult& r, bool first, const std::vector<std::uint32_t>& states) {
+void ReactiveLoop::install(plan::PlanResult& r, bool first, const Outcome& outcome) {
   recurring_ = cycle_has_moves(r.plan);
   tree_done_ = false;
   const std::vector<plan::ActionTuple> tuples = planner_->action_tuples(r.plan);
-  const PlanEvent ev{first, r, tuples, states};
+  const PlanEvent ev{first, r, tuples, outcome.states, outcome.placement, outcome.hand};
   for (auto* o : observers_) o->on_plan(world_.time(), ev);
   const ReconfigurationReport rep = tree_->set_plan(tuples);
   for (auto* o : observers_) o->on_tree_change(world_.time(), rep, *tree_, false);

@@ -136,6 +136,8 @@ class ReactiveLoop {
   // What the worker tells besides the plan (read after its future is ready).
   struct Outcome {
     std::vector<std::uint32_t> states;  // the automaton states the plan started from
+    world::Placement placement;         // the state it started from (`now` or `ahead`)
+    std::string hand;                   // and the hand's location ("" home)
     bool stop_running_move = false;     // planned from the current state: halt the running move
   };
   struct Pending {
@@ -161,7 +163,7 @@ class ReactiveLoop {
   void request_plan(const std::string& why);
   plan::PlanResult plan_from(const Starts& st, Outcome& out);
   bool collect_plan();
-  void install(plan::PlanResult& r, bool first, const std::vector<std::uint32_t>& states);
+  void install(plan::PlanResult& r, bool first, const Outcome& outcome);
   void on_tree_done();
   bool cycle_satisfies(std::size_t from) const;
   void wait_for_worker();

@@ -33,25 +33,6 @@ Frame SimFrames::frame() {
   return f;
 }
 
-Frame SymbolicFrames::frame() {
-  const world::Placement& p = world_.truth();
-  const world::Vec3 hand = world_.hand_point();
-  layout_.update(p, hand);
-  Frame f;
-  f.t = world_.time();
-  f.tool = hand;
-  for (const auto& [name, t] : p.things) {
-    if (t.location == "hand") f.held = name;
-    Frame::Thing ft;
-    ft.name = name;
-    ft.cls = t.cls;
-    ft.container = t.container;
-    ft.size = layout_.size(name, t.cls, t.container);
-    ft.pos = layout_.position(name);
-    ft.at = t.location;
-    f.things.push_back(std::move(ft));
-  }
-  return f;
-}
+Frame SymbolicFrames::frame() { return layout_.frame(world_.time(), world_.truth(), world_.hand_point()); }
 
 }  // namespace rtamp::serve

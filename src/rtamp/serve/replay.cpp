@@ -3,12 +3,15 @@
 #include <chrono>
 #include <cmath>
 #include <fstream>
+#include <map>
+#include <utility>
 
 #include <nlohmann/json.hpp>
 
 #include "rtamp/automata/translate.hpp"
 #include "rtamp/ltl/parser.hpp"
 #include "rtamp/serve/frame.hpp"
+#include "rtamp/serve/logged_tree.hpp"
 #include "rtamp/serve/scene_message.hpp"
 #include "rtamp/util/error.hpp"
 #include "rtamp/world/geometry.hpp"
@@ -19,14 +22,22 @@ using nlohmann::json;
 
 namespace {
 
-// A placement record's {"name": "location"} as a Placement (classes from the scenario, else the default).
-world::Placement placement_of(const json& j, const world::Scenario& s, const world::Placement& before) {
+// What an added thing is: a container?, its class (from the `intervention` record that added it).
+using Added = std::map<std::string, std::pair<bool, std::string>>;
+
+// A placement record's {"name": "location"} as a Placement: classes of things
+// added by interventions from their records, else the scenario's, else as before, else "block".
+world::Placement placement_of(const json& j, const world::Scenario& s, const Added& added,
+                              const world::Placement& before) {
   world::Placement p;
   for (const auto& [name, loc] : j.items()) {
     if (!loc.is_string()) continue;
     std::string cls = "block";
     bool container = false;
-    if (const auto* c = s.find_container(name)) {
+    if (auto a = added.find(name); a != added.end()) {
+      container = a->second.first;
+      cls = a->second.second;
+    } else if (const auto* c = s.find_container(name)) {
       cls = c->cls;
       container = true;
     } else if (const auto* o = s.find_object(name)) {
@@ -50,8 +61,8 @@ Replay::Replay(const world::Scenario& scenario, const std::string& path, ReplayO
   int n = 0;
   world::Placement last = world::initial_placement(scenario);
   std::string world_name = "symbolic";
-  // Things added by interventions: their kind (an add-container makes a container).
-  std::map<std::string, bool> added;
+  Added added;
+  LoggedTree tree(scenario);
   while (std::getline(in, line)) {
     ++n;
     if (line.empty()) continue;
@@ -80,19 +91,20 @@ Replay::Replay(const world::Scenario& scenario, const std::string& path, ReplayO
       if (!sc.empty() && sc != scenario.name)
         throw Error(where + "the log is of scenario '" + sc + "', not '" + scenario.name + "'");
     }
-    if (ev == "intervention" && j.value("applied", false) && j.value("kind", "") == "add-container")
-      added[j.value("subject", "")] = true;
+    if (ev == "intervention" && j.value("applied", false)) {
+      const std::string kind = j.value("kind", "");
+      // Logs before the record carried "class": the kind's default class.
+      if (kind == "add" || kind == "add-container")
+        added[j.value("subject", "")] = {kind == "add-container",
+                                         j.value("class", kind == "add-container" ? "tray" : "block")};
+    }
     const char* key = ev == "perceived" || ev == "end" ? "placement" : ev == "run" ? "state" : nullptr;
     if (key && j.contains(key) && j[key].is_object()) {
-      world::Placement p = placement_of(j[key], scenario, last);
-      for (auto& [name, t] : p.things)
-        if (added.count(name)) {
-          t.container = true;
-          t.cls = "tray";
-        }
+      world::Placement p = placement_of(j[key], scenario, added, last);
       r.placement = p;
       last = std::move(p);
     }
+    if (auto m = tree.record(j, r.t, last)) r.tree = std::move(*m);
     records_.push_back(std::move(r));
   }
   if (records_.empty()) throw Error("--replay: " + path + ": the log is empty");
@@ -141,22 +153,7 @@ std::string Replay::frame_at(double t) {
       break;
     }
   layout_ = ThingLayout(scenario_);
-  layout_.update(p, home_);
-  Frame f;
-  f.t = t;
-  f.tool = home_;
-  for (const auto& [name, th] : p.things) {
-    if (th.location == "hand") f.held = name;
-    Frame::Thing ft;
-    ft.name = name;
-    ft.cls = th.cls;
-    ft.container = th.container;
-    ft.size = layout_.size(name, th.cls, th.container);
-    ft.pos = layout_.position(name);
-    ft.at = th.location;
-    f.things.push_back(std::move(ft));
-  }
-  return frame_message(f);
+  return frame_message(layout_.frame(t, p, home_));
 }
 
 void Replay::publish(double t) {
@@ -173,15 +170,18 @@ void Replay::seek_to(double t) {
   t_ = t;
   next_ = first_after(t);
   std::vector<std::string> history;
-  for (std::size_t i = 0; i < next_; ++i)
+  std::string tree;  // the tree at t: the latest change up to t
+  for (std::size_t i = 0; i < next_; ++i) {
     if (!records_[i].frame) history.push_back(records_[i].text);
+    if (!records_[i].tree.empty()) tree = records_[i].tree;
+  }
   ended_.store(next_ >= records_.size());
   PlaybackState s;
   s.speed = playback_.speed();
   s.paused = playback_.paused();
   s.t = t;
   s.ended = ended_.load();
-  hub_->reset(std::move(history), "", frame_at(t), s);
+  hub_->reset(std::move(history), std::move(tree), frame_at(t), s);
 }
 
 void Replay::run() {
@@ -209,6 +209,7 @@ void Replay::run() {
     bool sent = false;
     while (next_ < records_.size() && records_[next_].t <= t_ + 1e-9) {
       if (!records_[next_].frame) hub_->log_record(records_[next_].text);
+      if (!records_[next_].tree.empty()) hub_->tree(records_[next_].tree);
       ++next_;
       sent = true;
     }

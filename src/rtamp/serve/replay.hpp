@@ -7,8 +7,13 @@
 // locations (the latest `perceived` placement, else `run` state; laid out by
 // ThingLayout) and the arm parked at home.
 //
+// The behavior tree is rebuilt from the log's `plan` and `tree` records
+// (LoggedTree): a `tree` message where the live episode sent one for a plan,
+// its statuses all IDLE (ticks' statuses are not logged). Things added by
+// interventions have the class their `intervention` record names.
+//
 // seek(t) re-sends every page a hello whose history holds the records with
-// time <= t, then the frame at t. The end of the log is the episode's end
+// time <= t and whose tree is the tree at t, then the frame at t. The end of the log is the episode's end
 // state: the last frame shows the placement of the `end` record.
 //
 // Invariants: the log is read and checked whole by the constructor
@@ -58,6 +63,7 @@ class Replay final : public RequestHandler {
     std::string text;
     bool frame = false;
     std::optional<world::Placement> placement;  // perceived / run / end: where things were
+    std::string tree;                           // the tree message when this record changed the tree
   };
 
   void run();

@@ -107,4 +107,23 @@ world::Vec3 ThingLayout::position(const std::string& thing) const {
   return it == spots_.end() ? world::Vec3{0, 0, 0} : it->second.pos;
 }
 
+Frame ThingLayout::frame(double t, const world::Placement& p, const world::Vec3& hand) {
+  update(p, hand);
+  Frame f;
+  f.t = t;
+  f.tool = hand;
+  for (const auto& [name, th] : p.things) {
+    if (th.location == "hand") f.held = name;
+    Frame::Thing ft;
+    ft.name = name;
+    ft.cls = th.cls;
+    ft.container = th.container;
+    ft.size = size(name, th.cls, th.container);
+    ft.pos = position(name);
+    ft.at = th.location;
+    f.things.push_back(std::move(ft));
+  }
+  return f;
+}
+
 }  // namespace rtamp::serve

@@ -5,6 +5,8 @@
 // position; a thing that arrives somewhere takes the first free cell of a grid
 // over the location's footprint (contents of a container move with it); a held
 // thing hangs under the hand; a thing at "none" keeps its last spot.
+// frame() is the whole frame of such a world (the symbolic world's, and a
+// replay's without `frame` records): update(), then every thing at its spot.
 // Invariant: two things put in the same location by update() never share a
 // grid cell while the location has a free one.
 #pragma once
@@ -13,6 +15,7 @@
 #include <optional>
 #include <string>
 
+#include "rtamp/serve/frame.hpp"
 #include "rtamp/world/placement.hpp"
 #include "rtamp/world/scenario.hpp"
 
@@ -26,6 +29,9 @@ class ThingLayout {
   void update(const world::Placement& p, const std::optional<world::Vec3>& hand = std::nullopt);
   // The spot of a thing of the last update (the centre of its base).
   world::Vec3 position(const std::string& thing) const;
+  // The frame at time t of the things of `p` (update(p, hand) first): no joint
+  // angles, the tool point at `hand`, the thing at "hand" held.
+  Frame frame(double t, const world::Placement& p, const world::Vec3& hand);
   // Size of a thing: its scenario size, else that of the first scenario thing of its class, else the default.
   world::Vec3 size(const std::string& thing, const std::string& cls, bool container) const;
 

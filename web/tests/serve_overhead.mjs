@@ -1,0 +1,60 @@
+// Issue 14's server-overhead bar, measured from outside (docs/benchmarks.md
+// "`rtamp serve`: server overhead"): one episode, either
+//   node --experimental-websocket tests/serve_overhead.mjs serve RTAMP_BIN SCENARIO [ARGS...]
+//     `rtamp serve SCENARIO --speed 0 --paused --exit-at-end --port 0 --quiet ARGS` with one
+//     WebSocket client in this (separate) process that JSON-parses every message, as a page
+//     does; it resumes the episode once its hello arrived, so the whole episode is watched;
+//   node tests/serve_overhead.mjs run RTAMP_BIN SCENARIO [ARGS...]
+//     `rtamp run SCENARIO --quiet ARGS` (the baseline: the same node start-up around it).
+// Time the whole command (e.g. /usr/bin/time, or a pairing of the two): both pay node's
+// start-up, so the ratio is the server's and its client's share. Prints on stderr the
+// messages received by type and the child's exit code; exits with the child's code.
+// Node's own WebSocket (--experimental-websocket, Node >= 20.10): no npm package needed.
+import { spawn } from 'node:child_process';
+import { createInterface } from 'node:readline';
+
+const [mode, bin, scenario, ...rest] = process.argv.slice(2);
+if (!['serve', 'run'].includes(mode) || !bin || !scenario) {
+  console.error('usage: serve_overhead.mjs serve|run RTAMP_BIN SCENARIO [ARGS...]');
+  process.exit(2);
+}
+
+const args =
+  mode === 'serve'
+    ? ['serve', scenario, '--speed', '0', '--paused', '--exit-at-end', '--port', '0', '--quiet', ...rest]
+    : ['run', scenario, '--quiet', ...rest];
+const child = spawn(bin, args, { stdio: ['ignore', 'pipe', 'inherit'] });
+const counts = {};
+
+if (mode === 'serve') {
+  const lines = createInterface({ input: child.stdout });
+  lines.once('line', (line) => {
+    const m = /http:\/\/([^/]+)\//.exec(line);
+    if (!m) {
+      console.error(`serve_overhead: no URL in '${line}'`);
+      child.kill('SIGTERM');
+      return;
+    }
+    if (typeof WebSocket === 'undefined') {
+      console.error('serve_overhead: no WebSocket (run node with --experimental-websocket)');
+      child.kill('SIGTERM');
+      return;
+    }
+    const ws = new WebSocket(`ws://${m[1]}/ws`);
+    ws.onmessage = (ev) => {
+      const msg = JSON.parse(ev.data);
+      counts[msg.type] = (counts[msg.type] ?? 0) + 1;
+      if (msg.type === 'hello' && counts.hello === 1)
+        ws.send(JSON.stringify({ type: 'control', id: 1, action: 'resume' }));
+    };
+    ws.onerror = () => {};
+  });
+  lines.on('line', () => {});
+} else {
+  child.stdout.resume();
+}
+
+child.on('exit', (code, signal) => {
+  console.error(`serve_overhead: ${mode} exit ${code ?? signal}; messages ${JSON.stringify(counts)}`);
+  process.exit(code ?? 1);
+});
