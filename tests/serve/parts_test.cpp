@@ -5,12 +5,16 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
+#include <cmath>
 #include <optional>
 #include <vector>
 
 #include <nlohmann/json.hpp>
 
+#include "rtamp/serve/frame.hpp"
 #include "rtamp/serve/hub.hpp"
+#include "rtamp/serve/json_text.hpp"
 #include "rtamp/serve/intervention_check.hpp"
 #include "rtamp/serve/request.hpp"
 #include "rtamp/serve/thing_layout.hpp"
@@ -233,6 +237,70 @@ class RecordingClient final : public Client {
   void send(std::shared_ptr<const std::string> m, bool) override { got.push_back(json::parse(*m)); }
   std::vector<json> got;
 };
+
+// The messages written without nlohmann::json read back as the values they were
+// written from: strings with quotes, backslashes, control characters and UTF-8
+// (bytes that are not UTF-8 become U+FFFD: the text stays valid UTF-8),
+// doubles exactly (shortest form), non-finite numbers as null.
+TEST(ServeJsonText, ReadsBackAsWritten) {
+  using nlohmann::json;
+  for (const std::string& s : {std::string("plain"), std::string("q\"uote \\ back/slash"), std::string("tab\tnl\ncr\r\x01\x1f"),
+                              std::string("caf\xc3\xa9 \xe2\x86\x92 \xf0\x9f\x98\x80"), std::string()}) {
+    std::string out;
+    serve::json_text::append_string(out, s);
+    EXPECT_EQ(json::parse(out).get<std::string>(), s) << out;
+    EXPECT_EQ(out, json(s).dump());
+  }
+  for (const std::string& bad : {std::string("a\xff b"), std::string("\xc3"), std::string("\xed\xa0\x80x"), std::string("\xe2\x86")}) {
+    std::string out;
+    serve::json_text::append_string(out, bad);
+    const std::string back = json::parse(out).get<std::string>();  // parse() refuses text that is not UTF-8
+    EXPECT_NE(back.find("\xef\xbf\xbd"), std::string::npos) << out;
+    EXPECT_EQ(back.find('\xff'), std::string::npos);
+  }
+  for (const double v : {0.0, -0.0, 1.0, -2.5, 0.1, 1e-7, 123456789.123, 1e300, 0.32000000000000001, 44.1406}) {
+    std::string out;
+    serve::json_text::append_number(out, v);
+    EXPECT_EQ(json::parse(out).get<double>(), v) << out;
+  }
+  for (const double v : {std::nan(""), 1.0 / 0.0}) {
+    std::string out;
+    serve::json_text::append_number(out, v);
+    EXPECT_EQ(out, "null");
+  }
+  // A frame: every member, at full precision as a message, rounded to 1e-3 as a log record.
+  serve::Frame f;
+  f.t = 1.25;
+  f.q = std::array<double, 6>{0.1, -1.2, 1.3, 0.0004, 1.5, 3.14159};
+  f.tool = {0.4, 0.1, 0.3};
+  f.held = "o\"1";
+  f.things.push_back({"o\"1", "block", false, {0.3211, 0.4, 0.02}, {1, 0, 0, 0}, {0.04, 0.04, 0.04}, "hand"});
+  f.things.push_back({"r3", "tray", true, {0.4, 0.25, 0}, {0.7071, 0, 0, 0.7071}, {0.3, 0.16, 0.03}, "r1"});
+  const json m = json::parse(serve::frame_message(f));
+  EXPECT_EQ(m["type"], "frame");
+  EXPECT_EQ(m["t"].get<double>(), 1.25);
+  EXPECT_EQ(m["q"][5].get<double>(), 3.14159);
+  EXPECT_EQ(m["held"], "o\"1");
+  ASSERT_EQ(m["things"].size(), 2u);
+  EXPECT_EQ(m["things"][0]["name"], "o\"1");
+  EXPECT_EQ(m["things"][0]["kind"], "object");
+  EXPECT_EQ(m["things"][0]["pos"][0].get<double>(), 0.3211);
+  EXPECT_EQ(m["things"][0]["at"], "hand");
+  EXPECT_EQ(m["things"][1]["class"], "tray");
+  EXPECT_EQ(m["things"][1]["kind"], "container");
+  EXPECT_EQ(m["things"][1]["quat"][3].get<double>(), 0.7071);
+  const std::string rec = serve::frame_record(f);
+  EXPECT_EQ(rec.rfind("{\"ev\":\"frame\",", 0), 0u) << rec;
+  const json r = json::parse(rec);
+  EXPECT_FALSE(r.contains("t"));
+  EXPECT_EQ(r["q"][5].get<double>(), 3.142);
+  EXPECT_EQ(r["things"][0]["pos"][0].get<double>(), 0.321);
+  f.q.reset();
+  f.held.clear();
+  const json none = json::parse(serve::frame_message(f));
+  EXPECT_TRUE(none["q"].is_null());
+  EXPECT_TRUE(none["held"].is_null());
+}
 
 TEST(ServeHub, ALateClientCatchesUpWithTheHistory) {
   Hub hub(R"({"mode":"live","world":"symbolic"})");

@@ -4,6 +4,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "rtamp/serve/json_text.hpp"
 #include "rtamp/util/error.hpp"
 
 namespace rtamp::serve {
@@ -12,43 +13,65 @@ using nlohmann::json;
 
 namespace {
 
-double round_to(double v, double unit) { return std::round(v / unit) * unit; }
+double round_to(double v, double unit) { return unit > 0 ? std::round(v / unit) * unit : v; }
 
 template <typename A>
-json array_json(const A& a, double unit) {
-  json j = json::array();
-  for (double v : a) j.push_back(unit > 0 ? round_to(v, unit) : v);
-  return j;
+void append_array(std::string& out, const A& a, double unit) {
+  out += '[';
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    if (i) out += ',';
+    json_text::append_number(out, round_to(a[i], unit));
+  }
+  out += ']';
 }
 
-json frame_json(const Frame& f, double unit, double angle_unit) {
-  json things = json::array();
-  for (const auto& t : f.things)
-    things.push_back({{"name", t.name},
-                      {"class", t.cls},
-                      {"kind", t.container ? "container" : "object"},
-                      {"pos", array_json(t.pos, unit)},
-                      {"quat", array_json(t.quat, angle_unit)},
-                      {"size", array_json(t.size, unit)},
-                      {"at", t.at}});
-  return {{"q", f.q ? array_json(*f.q, angle_unit) : json(nullptr)},
-          {"tool", array_json(f.tool, unit)},
-          {"held", f.held.empty() ? json(nullptr) : json(f.held)},
-          {"things", things}};
+// The members after "type"/"ev" (and "t"), then the closing brace.
+void append_body(std::string& out, const Frame& f, double unit, double angle_unit) {
+  out += ",\"q\":";
+  if (f.q) append_array(out, *f.q, angle_unit);
+  else out += "null";
+  out += ",\"tool\":";
+  append_array(out, f.tool, unit);
+  out += ",\"held\":";
+  if (f.held.empty()) out += "null";
+  else json_text::append_string(out, f.held);
+  out += ",\"things\":[";
+  for (std::size_t i = 0; i < f.things.size(); ++i) {
+    const Frame::Thing& t = f.things[i];
+    out += i ? ",{\"name\":" : "{\"name\":";
+    json_text::append_string(out, t.name);
+    out += ",\"class\":";
+    json_text::append_string(out, t.cls);
+    out += t.container ? ",\"kind\":\"container\",\"pos\":" : ",\"kind\":\"object\",\"pos\":";
+    append_array(out, t.pos, unit);
+    out += ",\"quat\":";
+    append_array(out, t.quat, angle_unit);
+    out += ",\"size\":";
+    append_array(out, t.size, unit);
+    out += ",\"at\":";
+    json_text::append_string(out, t.at);
+    out += '}';
+  }
+  out += "]}";
 }
 
 }  // namespace
 
 std::string frame_message(const Frame& f) {
-  json j{{"type", "frame"}, {"t", f.t}};
-  j.update(frame_json(f, 0, 0));
-  return j.dump();
+  std::string out;
+  out.reserve(160 + 200 * f.things.size());
+  out += "{\"type\":\"frame\",\"t\":";
+  json_text::append_number(out, f.t);
+  append_body(out, f, 0, 0);
+  return out;
 }
 
 std::string frame_record(const Frame& f) {
-  json j{{"ev", "frame"}};
-  j.update(frame_json(f, 1e-3, 1e-3));
-  return j.dump();
+  std::string out;
+  out.reserve(120 + 160 * f.things.size());
+  out += "{\"ev\":\"frame\"";
+  append_body(out, f, 1e-3, 1e-3);
+  return out;
 }
 
 std::string frame_message_from_record(const std::string& record) {

@@ -1,6 +1,7 @@
 #include "rtamp/serve/hub.hpp"
 
 #include <algorithm>
+#include <string_view>
 
 #include <nlohmann/json.hpp>
 
@@ -10,6 +11,20 @@ using nlohmann::json;
 
 namespace {
 std::shared_ptr<const std::string> share(std::string s) { return std::make_shared<const std::string>(std::move(s)); }
+
+// A `log` message around a record; the history keeps the messages (one copy of a record, shared).
+constexpr std::string_view kLogHead = "{\"type\":\"log\",\"record\":";
+std::shared_ptr<const std::string> log_message(const std::string& record) {
+  std::string m;
+  m.reserve(kLogHead.size() + record.size() + 1);
+  m += kLogHead;
+  m += record;
+  m += '}';
+  return share(std::move(m));
+}
+std::string_view record_of(const std::string& log_message) {
+  return std::string_view(log_message).substr(kLogHead.size(), log_message.size() - kLogHead.size() - 1);
+}
 
 // The body of a tree message: the message without "type" (hello's `tree`).
 std::string tree_body(const std::string& tree_message) {
@@ -33,9 +48,12 @@ std::string Hub::hello_locked() const {
        ",\"t\":" + json(state_.t).dump() + ",\"ended\":" + (state_.ended ? "true" : "false");
   h += ",\"tree\":" + tree_body(tree_);
   h += ",\"history\":[";
+  std::size_t size = h.size() + 2;
+  for (const auto& m : history_) size += m->size() - kLogHead.size();
+  h.reserve(size);
   for (std::size_t i = 0; i < history_.size(); ++i) {
     if (i) h += ',';
-    h += history_[i];
+    h += record_of(*history_[i]);
   }
   h += "]}";
   return h;
@@ -76,8 +94,8 @@ void Hub::broadcast_locked(const std::shared_ptr<const std::string>& m, bool fra
 
 void Hub::log_record(const std::string& record) {
   std::lock_guard lock(mu_);
-  history_.push_back(record);
-  if (!clients_.empty()) broadcast_locked(share("{\"type\":\"log\",\"record\":" + record + "}"), false);
+  history_.push_back(log_message(record));
+  if (!clients_.empty()) broadcast_locked(history_.back(), false);
 }
 
 void Hub::tree(const std::string& message) {
@@ -120,7 +138,9 @@ std::size_t Hub::history_size() const {
 
 void Hub::reset(std::vector<std::string> history, std::string tree, std::string frame, const PlaybackState& s) {
   std::lock_guard lock(mu_);
-  history_ = std::move(history);
+  history_.clear();
+  history_.reserve(history.size());
+  for (const std::string& r : history) history_.push_back(log_message(r));
   tree_ = std::move(tree);
   frame_ = std::move(frame);
   state_ = s;

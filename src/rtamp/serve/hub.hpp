@@ -71,7 +71,7 @@ class Hub {
 
   mutable std::mutex mu_;
   std::string fields_;
-  std::vector<std::string> history_;
+  std::vector<std::shared_ptr<const std::string>> history_;  // the `log` messages so far
   std::string tree_, frame_;  // latest tree message, latest frame message ("" = none)
   PlaybackState state_;
   std::vector<std::shared_ptr<Client>> clients_;

@@ -1,12 +1,11 @@
 #include "rtamp/serve/tree_message.hpp"
 
+#include <string>
 #include <vector>
 
-#include <nlohmann/json.hpp>
+#include "rtamp/serve/json_text.hpp"
 
 namespace rtamp::serve {
-
-using nlohmann::json;
 
 namespace {
 
@@ -32,25 +31,34 @@ char status_char(bt::Status s) {
 
 class NodeLister : public bt::Visitor {
  public:
-  explicit NodeLister(json* nodes, std::string* statuses) : nodes_(nodes), statuses_(statuses) {}
+  NodeLister(std::string* nodes, std::string* statuses) : nodes_(nodes), statuses_(statuses) {}
   bool enter(const bt::Node& n, int depth) override {
     const int id = next_++;
     stack_.resize(static_cast<std::size_t>(depth));
     const int parent = stack_.empty() ? -1 : stack_.back();
     stack_.push_back(id);
     if (statuses_) *statuses_ += status_char(n.status());
-    if (nodes_)
-      nodes_->push_back({{"id", id},
-                         {"parent", parent},
-                         {"name", n.name()},
-                         {"kind", std::string(n.type_id())},
-                         {"category", std::string(bt::to_string(n.kind()))},
-                         {"status", status_name(n.status())}});
+    if (nodes_) {
+      std::string& o = *nodes_;
+      o += id ? ",{\"id\":" : "{\"id\":";
+      o += std::to_string(id);
+      o += ",\"parent\":";
+      o += std::to_string(parent);
+      o += ",\"name\":";
+      json_text::append_string(o, n.name());
+      o += ",\"kind\":";
+      json_text::append_string(o, n.type_id());
+      o += ",\"category\":";
+      json_text::append_string(o, bt::to_string(n.kind()));
+      o += ",\"status\":\"";
+      o += status_name(n.status());
+      o += "\"}";
+    }
     return true;
   }
 
  private:
-  json* nodes_;
+  std::string* nodes_;
   std::string* statuses_;
   std::vector<int> stack_;
   int next_ = 0;
@@ -59,12 +67,15 @@ class NodeLister : public bt::Visitor {
 }  // namespace
 
 std::string tree_message(double t, const bt::Tree& tree) {
-  json nodes = json::array();
+  std::string out = "{\"type\":\"tree\",\"t\":";
+  json_text::append_number(out, t);
+  out += ",\"nodes\":[";
   if (tree.root()) {
-    NodeLister l(&nodes, nullptr);
+    NodeLister l(&out, nullptr);
     bt::accept(*tree.root(), l);
   }
-  return json{{"type", "tree"}, {"t", t}, {"nodes", nodes}}.dump(-1, ' ', false, json::error_handler_t::replace);
+  out += "]}";
+  return out;
 }
 
 std::string status_string(const bt::Tree& tree) {
@@ -77,7 +88,12 @@ std::string status_string(const bt::Tree& tree) {
 }
 
 std::string status_message(double t, const std::string& statuses) {
-  return json{{"type", "status"}, {"t", t}, {"s", statuses}}.dump();
+  std::string out = "{\"type\":\"status\",\"t\":";
+  json_text::append_number(out, t);
+  out += ",\"s\":\"";
+  out += statuses;  // one of I R S F a node
+  out += "\"}";
+  return out;
 }
 
 }  // namespace rtamp::serve
