@@ -12,9 +12,10 @@
 
 #include <nlohmann/json.hpp>
 
+#include "rtamp/exec/episode_log.hpp"
 #include "rtamp/serve/frame.hpp"
 #include "rtamp/serve/hub.hpp"
-#include "rtamp/serve/json_text.hpp"
+#include "rtamp/util/json_text.hpp"
 #include "rtamp/serve/intervention_check.hpp"
 #include "rtamp/serve/request.hpp"
 #include "rtamp/serve/thing_layout.hpp"
@@ -247,27 +248,37 @@ TEST(ServeJsonText, ReadsBackAsWritten) {
   for (const std::string& s : {std::string("plain"), std::string("q\"uote \\ back/slash"), std::string("tab\tnl\ncr\r\x01\x1f"),
                               std::string("caf\xc3\xa9 \xe2\x86\x92 \xf0\x9f\x98\x80"), std::string()}) {
     std::string out;
-    serve::json_text::append_string(out, s);
+    json_text::append_string(out, s);
     EXPECT_EQ(json::parse(out).get<std::string>(), s) << out;
     EXPECT_EQ(out, json(s).dump());
   }
   for (const std::string& bad : {std::string("a\xff b"), std::string("\xc3"), std::string("\xed\xa0\x80x"), std::string("\xe2\x86")}) {
     std::string out;
-    serve::json_text::append_string(out, bad);
+    json_text::append_string(out, bad);
     const std::string back = json::parse(out).get<std::string>();  // parse() refuses text that is not UTF-8
     EXPECT_NE(back.find("\xef\xbf\xbd"), std::string::npos) << out;
     EXPECT_EQ(back.find('\xff'), std::string::npos);
   }
   for (const double v : {0.0, -0.0, 1.0, -2.5, 0.1, 1e-7, 123456789.123, 1e300, 0.32000000000000001, 44.1406}) {
     std::string out;
-    serve::json_text::append_number(out, v);
+    json_text::append_number(out, v);
     EXPECT_EQ(json::parse(out).get<double>(), v) << out;
   }
   for (const double v : {std::nan(""), 1.0 / 0.0}) {
     std::string out;
-    serve::json_text::append_number(out, v);
+    json_text::append_number(out, v);
     EXPECT_EQ(out, "null");
   }
+  // The episode log's tick record, written directly: the text nlohmann dumps.
+  exec::EpisodeLog log;
+  std::vector<std::string> lines;
+  log.add_sink([&](const std::string& r) { lines.push_back(r); });
+  log.on_tick(1.5, bt::Status::Running, "move(o\"1, r2)\n");
+  log.on_tick(2, bt::Status::Success, "");
+  ASSERT_EQ(lines.size(), 2u);
+  EXPECT_EQ(lines[0], "{\"ev\":\"tick\",\"running\":\"move(o\\\"1, r2)\\n\",\"status\":\"RUNNING\",\"t\":1.5}");
+  const json tick{{"ev", "tick"}, {"status", "SUCCESS"}, {"running", ""}, {"t", 2.0}};
+  EXPECT_EQ(lines[1], tick.dump());
   // A frame: every member, at full precision as a message, rounded to 1e-3 as a log record.
   serve::Frame f;
   f.t = 1.25;

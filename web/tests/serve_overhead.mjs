@@ -1,7 +1,8 @@
 // Issue 14's server-overhead bar, measured from outside (docs/benchmarks.md
 // "`rtamp serve`: server overhead"): one episode, either
 //   node --experimental-websocket tests/serve_overhead.mjs serve RTAMP_BIN SCENARIO [ARGS...]
-//     `rtamp serve SCENARIO --speed 0 --paused --exit-at-end --port 0 --quiet ARGS` with one
+//     `rtamp serve SCENARIO --speed 0 --paused --exit-at-end --port 0 --quiet ARGS` (ARGS may
+//     give another --speed, e.g. 1: paced to wall time) with one
 //     WebSocket client in this (separate) process that JSON-parses every message, as a page
 //     does; it resumes the episode once its hello arrived, so the whole episode is watched;
 //   node tests/serve_overhead.mjs run RTAMP_BIN SCENARIO [ARGS...]
@@ -21,10 +22,12 @@ if (!['serve', 'run'].includes(mode) || !bin || !scenario) {
 
 const args =
   mode === 'serve'
-    ? ['serve', scenario, '--speed', '0', '--paused', '--exit-at-end', '--port', '0', '--quiet', ...rest]
+    ? ['serve', scenario, ...(rest.includes('--speed') ? [] : ['--speed', '0']), '--paused', '--exit-at-end',
+       '--port', '0', '--quiet', ...rest]
     : ['run', scenario, '--quiet', ...rest];
 const child = spawn(bin, args, { stdio: ['ignore', 'pipe', 'inherit'] });
 const counts = {};
+let socketDone = Promise.resolve();  // settles when the client's socket has closed
 
 if (mode === 'serve') {
   const lines = createInterface({ input: child.stdout });
@@ -41,6 +44,7 @@ if (mode === 'serve') {
       return;
     }
     const ws = new WebSocket(`ws://${m[1]}/ws`);
+    socketDone = new Promise((resolve) => ws.addEventListener('close', resolve));
     ws.onmessage = (ev) => {
       const msg = JSON.parse(ev.data);
       counts[msg.type] = (counts[msg.type] ?? 0) + 1;
@@ -54,7 +58,9 @@ if (mode === 'serve') {
   child.stdout.resume();
 }
 
-child.on('exit', (code, signal) => {
+// Every message the server sent before it exited is read before this process ends.
+child.on('exit', async (code, signal) => {
+  await Promise.race([socketDone, new Promise((resolve) => setTimeout(resolve, 5000))]);
   console.error(`serve_overhead: ${mode} exit ${code ?? signal}; messages ${JSON.stringify(counts)}`);
   process.exit(code ?? 1);
 });

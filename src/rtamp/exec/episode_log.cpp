@@ -5,6 +5,7 @@
 #include <nlohmann/json.hpp>
 
 #include "rtamp/util/error.hpp"
+#include "rtamp/util/json_text.hpp"
 
 namespace rtamp::exec {
 
@@ -147,7 +148,14 @@ void EpisodeLog::on_cycle(double t, int completed) {
 }
 
 void EpisodeLog::on_tick(double t, bt::Status status, const std::string& running) {
-  if (ticks) write(t, json{{"ev", "tick"}, {"status", std::string(bt::to_string(status))}, {"running", running}}.dump());
+  if (!ticks) return;
+  // The most frequent record (one a tick): written directly, the text nlohmann would dump.
+  std::string r = "{\"ev\":\"tick\",\"running\":";
+  json_text::append_string(r, running);
+  r += ",\"status\":\"";
+  r += bt::to_string(status);
+  r += "\"}";
+  write(t, r);
 }
 
 void EpisodeLog::on_end(double t, const EpisodeMetrics& m, const world::Placement& p) {

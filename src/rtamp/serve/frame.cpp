@@ -4,7 +4,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "rtamp/serve/json_text.hpp"
+#include "rtamp/util/json_text.hpp"
 #include "rtamp/util/error.hpp"
 
 namespace rtamp::serve {

@@ -3,7 +3,7 @@
 #include <string>
 #include <vector>
 
-#include "rtamp/serve/json_text.hpp"
+#include "rtamp/util/json_text.hpp"
 
 namespace rtamp::serve {
 

@@ -1,9 +1,9 @@
-#include "rtamp/serve/json_text.hpp"
+#include "rtamp/util/json_text.hpp"
 
 #include <charconv>
 #include <cmath>
 
-namespace rtamp::serve::json_text {
+namespace rtamp::json_text {
 
 namespace {
 
@@ -81,4 +81,4 @@ void append_number(std::string& out, double v) {
   out.append(buf, r.ptr);
 }
 
-}  // namespace rtamp::serve::json_text
+}  // namespace rtamp::json_text
