@@ -153,6 +153,8 @@ rtamp::cli::Registrar reg{
         }
         if (live && !o->exit_at_end)
           while (g_signal.load() == 0) std::this_thread::sleep_for(std::chrono::milliseconds(50));
+        // --exit-at-end: the pages get the end (messages still queued when it came) before the server goes.
+        if (g_signal.load() == 0) server.drain(std::chrono::seconds(2));
         server.stop();
         std::signal(SIGINT, SIG_DFL);
         std::signal(SIGTERM, SIG_DFL);

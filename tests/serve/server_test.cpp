@@ -583,5 +583,46 @@ TEST(ServeServer, ReplaySendsTheLoggedTreesAndAddedThingsClasses) {
   fs::remove_all(dir);
 }
 
+
+// Server::drain, what `rtamp serve --exit-at-end` does before it stops: a page
+// attached from the start has been sent every record of the log, the end
+// included, by the time the server goes (without it, what was still queued
+// when the episode ended was dropped).
+TEST(ServeServer, DrainDeliversEveryRecordBeforeTheServerStops) {
+  const world::Scenario s = world::load_scenario("3-block-tray");
+  const fs::path dir = temp_dir("drain");
+  const fs::path log = dir / "ep.jsonl";
+  LiveOptions o;
+  o.episode = symbolic_options(log.string());
+  o.speed = 0;
+  o.paused = true;
+  LiveEpisode live(s, o);
+  Server server({"127.0.0.1", 0, ""}, live);
+  server.start();
+  live.start();
+  WsClient c(server.port());
+  const auto hello = c.read();
+  ASSERT_TRUE(hello);
+  c.send(json{{"type", "control"}, {"id", 1}, {"action", "resume"}});
+  ASSERT_TRUE(live.wait().success);
+  server.drain(std::chrono::seconds(30));
+  EXPECT_EQ(live.hub().unsent(), 0);
+  server.stop();
+  // Everything was written before the connection closed: read it now.
+  std::size_t records = (*hello)["history"].size();
+  bool end = false;
+  // (stop() leaves the socket open until the server is destroyed: the last read times out.)
+  while (const auto m = c.read(std::chrono::seconds(2)))
+    if ((*m)["type"] == "log") {
+      ++records;
+      end = end || (*m)["record"]["ev"] == "end";
+    }
+  EXPECT_TRUE(end);
+  std::size_t expect = 0;
+  for (const auto& rec : read_log(log)) expect += rec["ev"] != "frame";
+  EXPECT_EQ(records, expect);
+  fs::remove_all(dir);
+}
+
 }  // namespace
 }  // namespace rtamp::serve

@@ -32,6 +32,7 @@ class WsSession final : public Client, public std::enable_shared_from_this<WsSes
   }
 
   void send(std::shared_ptr<const std::string> message, bool frame) override {
+    hub_.count_unsent(1);
     net::post(ws_.get_executor(), [self = shared_from_this(), m = std::move(message), frame]() mutable {
       self->enqueue(std::move(m), frame);
     });
@@ -57,13 +58,17 @@ class WsSession final : public Client, public std::enable_shared_from_this<WsSes
   void close() {
     if (closed_) return;
     closed_ = true;
+    hub_.count_unsent(-static_cast<long>(queue_.size()));  // never written
     if (joined_) hub_.leave(this);
     beast::error_code ignored;
     beast::get_lowest_layer(ws_).socket().shutdown(tcp::socket::shutdown_both, ignored);
     beast::get_lowest_layer(ws_).close();
   }
 
-  void reply(std::string text) { enqueue(std::make_shared<const std::string>(std::move(text)), false); }
+  void reply(std::string text) {
+    hub_.count_unsent(1);
+    enqueue(std::make_shared<const std::string>(std::move(text)), false);
+  }
 
   bool take_token() {
     const auto now = std::chrono::steady_clock::now();
@@ -109,7 +114,10 @@ class WsSession final : public Client, public std::enable_shared_from_this<WsSes
   }
 
   void enqueue(std::shared_ptr<const std::string> m, bool frame) {
-    if (closed_) return;
+    if (closed_) {
+      hub_.count_unsent(-1);
+      return;
+    }
     // A frame replaces an unsent frame (not the one being written).
     if (frame) {
       for (std::size_t i = writing_ ? 1 : 0; i < queue_.size(); ++i)
@@ -117,6 +125,7 @@ class WsSession final : public Client, public std::enable_shared_from_this<WsSes
           queued_bytes_ -= queue_[i].m->size();
           queued_bytes_ += m->size();
           queue_[i].m = std::move(m);
+          hub_.count_unsent(-1);  // the replaced one
           return;
         }
     }
@@ -145,6 +154,7 @@ class WsSession final : public Client, public std::enable_shared_from_this<WsSes
     }
     queued_bytes_ -= queue_.front().m->size();
     queue_.pop_front();
+    if (!closed_) hub_.count_unsent(-1);  // (close() counted the whole queue)
     if (!queue_.empty() && !closed_) write();
   }
 

@@ -64,6 +64,10 @@ class Hub {
   void reset(std::vector<std::string> history, std::string tree, std::string frame, const PlaybackState& s);
   // Number of log records kept.
   std::size_t history_size() const;
+  // Messages handed to clients (and replies) not yet written to their sockets
+  // nor dropped: clients count them (Server::drain waits for none).
+  void count_unsent(long delta) { unsent_ += delta; }
+  long unsent() const { return unsent_.load(); }
 
  private:
   std::string hello_locked() const;
@@ -76,6 +80,7 @@ class Hub {
   PlaybackState state_;
   std::vector<std::shared_ptr<Client>> clients_;
   std::atomic<std::size_t> count_{0};
+  std::atomic<long> unsent_{0};
 };
 
 std::string state_message(const PlaybackState& s);

@@ -225,6 +225,13 @@ void Server::start(RequestHandler& handler) {
   impl_->thread = std::thread([this] { impl_->ioc.run(); });
 }
 
+void Server::drain(std::chrono::milliseconds timeout) {
+  if (!impl_ || !impl_->handler) return;
+  const auto end = std::chrono::steady_clock::now() + timeout;
+  while (impl_->handler->hub().unsent() > 0 && std::chrono::steady_clock::now() < end)
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+}
+
 void Server::stop() {
   if (!impl_) return;
   Impl& s = *impl_;

@@ -11,6 +11,7 @@
 // they read the Hub and hand requests to the RequestHandler.
 #pragma once
 
+#include <chrono>
 #include <memory>
 #include <string>
 
@@ -40,6 +41,10 @@ class Server {
   bool has_page() const;
   void start();  // the I/O thread (the handler given to the constructor)
   void start(RequestHandler& handler);
+  // Waits (at most `timeout`) until every message the clients were handed is
+  // written to its socket (or dropped): before stop(), so that pages get the
+  // episode's last messages (`--exit-at-end`).
+  void drain(std::chrono::milliseconds timeout);
   void stop();   // closes every connection and joins the thread
 
   struct Impl;
