@@ -113,7 +113,7 @@ std::optional<std::vector<plan::ActionTuple>> LoggedTree::tuples(const json& j, 
   }
 }
 
-std::optional<std::string> LoggedTree::record(const json& j, double t, const world::Placement& known) {
+std::optional<std::string> LoggedTree::record(const json& j, double t, const world::Placement& known) try {
   const std::string ev = j.value("ev", "");
   if (ev == "episode") {
     mode_ = j.value("conditions", "action") == "state" ? exec::ConditionMode::State : exec::ConditionMode::Action;
@@ -131,6 +131,8 @@ std::optional<std::string> LoggedTree::record(const json& j, double t, const wor
     return tree_message(t, tree.tree());
   }
   return std::nullopt;
+} catch (const json::exception&) {
+  return std::nullopt;  // a record of another shape (a field of another type): it changes no tree
 }
 
 }  // namespace rtamp::serve
