@@ -53,11 +53,11 @@ world::Scenario with_things(world::Scenario s, const world::Placement& start) {
   return s;
 }
 
-}  // namespace
-
-LoggedTree::LoggedTree(world::Scenario scenario) : scenario_(std::move(scenario)) {}
-
-std::optional<std::vector<plan::ActionTuple>> LoggedTree::tuples(const json& j, const world::Placement& known) const {
+// The action tuples of a `plan` record (nullopt if its moves cannot be
+// replayed); `run`: the latest `run` state, the start of a record without one.
+std::optional<std::vector<plan::ActionTuple>> plan_tuples(const world::Scenario& scenario_, const json& j,
+                                                          const std::optional<world::Placement>& run_,
+                                                          const world::Placement& known) {
   world::Placement start;
   std::string hand;
   if (j.contains("start") && j["start"].is_object()) {
@@ -113,7 +113,12 @@ std::optional<std::vector<plan::ActionTuple>> LoggedTree::tuples(const json& j, 
   }
 }
 
-std::optional<std::string> LoggedTree::record(const json& j, double t, const world::Placement& known) try {
+}  // namespace
+
+LoggedTree::LoggedTree(world::Scenario scenario) : scenario_(std::move(scenario)) {}
+
+std::optional<std::string> LoggedTree::record(const std::string& text, double t, const world::Placement& known) try {
+  const json j = json::parse(text);
   const std::string ev = j.value("ev", "");
   if (ev == "episode") {
     mode_ = j.value("conditions", "action") == "state" ? exec::ConditionMode::State : exec::ConditionMode::Action;
@@ -123,7 +128,7 @@ std::optional<std::string> LoggedTree::record(const json& j, double t, const wor
       if (loc.is_string()) p.set(name, loc.get<std::string>(), "", false);
     run_ = std::move(p);
   } else if (ev == "plan") {
-    planned_ = tuples(j, known);
+    planned_ = plan_tuples(scenario_, j, run_, known);
   } else if (ev == "tree" && j.value("applied", false) && planned_) {
     static NoRunner runner;
     exec::PlanTree tree(mode_, exec::Reconfiguration::Online, runner, std::make_shared<bt::ManualClock>());

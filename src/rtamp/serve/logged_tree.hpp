@@ -21,8 +21,6 @@
 #include <string>
 #include <vector>
 
-#include <nlohmann/json_fwd.hpp>
-
 #include "rtamp/exec/subtree_builder.hpp"
 #include "rtamp/plan/action_tuple.hpp"
 #include "rtamp/world/placement.hpp"
@@ -34,14 +32,12 @@ class LoggedTree {
  public:
   explicit LoggedTree(world::Scenario scenario);
 
-  // The action tuples of a `plan` record (nullopt if its moves cannot be
-  // replayed: a name the scenario cannot have, no start).
-  std::optional<std::vector<plan::ActionTuple>> tuples(const nlohmann::json& plan, const world::Placement& known) const;
-
-  // Feeds one record (in log order); `known`: where things were as of this
-  // record (classes of added things included). Returns the tree message
-  // (tree_message.hpp) when the record changed the tree.
-  std::optional<std::string> record(const nlohmann::json& record, double t, const world::Placement& known);
+  // Feeds one record (its JSON text, in log order); `known`: where things were
+  // as of this record (classes of added things included). Returns the tree
+  // message (tree_message.hpp) when the record changed the tree. A `plan`
+  // record whose moves cannot be replayed (a name the scenario cannot have, no
+  // start) leaves no plan to apply.
+  std::optional<std::string> record(const std::string& record_text, double t, const world::Placement& known);
 
  private:
   world::Scenario scenario_;

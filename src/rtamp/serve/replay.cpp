@@ -104,7 +104,7 @@ Replay::Replay(const world::Scenario& scenario, const std::string& path, ReplayO
       r.placement = p;
       last = std::move(p);
     }
-    if (auto m = tree.record(j, r.t, last)) r.tree = std::move(*m);
+    if (auto m = tree.record(r.text, r.t, last)) r.tree = std::move(*m);
     records_.push_back(std::move(r));
   }
   if (records_.empty()) throw Error("--replay: " + path + ": the log is empty");
