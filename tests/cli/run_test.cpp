@@ -113,9 +113,11 @@ TEST(CliRun, InterruptWritesTheEndRecord) {
   const std::string log = (dir / "interrupted.jsonl").string();
   for (const auto& [sig, code] : {std::pair{"INT", 130}, std::pair{"TERM", 143}}) {
     std::filesystem::remove(log);
-    // The MuJoCo episode takes seconds of wall time; the signal arrives after one.
-    const Result r = run("run 3-block --quiet --log '" + log + "' & pid=$!; sleep 1; kill -" + std::string(sig) +
-                         " $pid; wait $pid");
+    // The signal arrives as soon as the log has its first record: the episode has
+    // started (on an idle machine the whole MuJoCo episode takes under a second of
+    // wall time, so a fixed sleep of one second could come after its end).
+    const Result r = run("run 3-block --quiet --log '" + log + "' & pid=$!; until [ -s '" + log +
+                         "' ]; do sleep 0.01; done; kill -" + std::string(sig) + " $pid; wait $pid");
     EXPECT_EQ(r.rc, code) << sig << ": " << r.err;
     std::istringstream in(slurp(log));
     std::string line, last;
