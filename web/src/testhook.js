@@ -43,6 +43,10 @@ export function installTestHook(app) {
     get drawCosts() {
       return scene.costs;
     },
+    // When each draw was made (epoch ms, in the thread that draws), oldest first.
+    get drawTimes() {
+      return scene.drawTimes;
+    },
     // Where the scene is drawn: 'worker' (OffscreenCanvas), 'main' (the fallback, with
     // `renderWhy` saying why) or 'starting'.
     get renderer() {

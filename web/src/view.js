@@ -48,11 +48,13 @@ export class SceneView {
     this.seq = 0; // builds sent
     this.dragging = null;
     this.labelsDirty = true;
-    // What the renderer reports: draws, the scale and seq of the last, draw costs (ms).
+    // What the renderer reports: draws, the scale and seq of the last, draw costs (ms),
+    // when each draw was made (epoch ms; the latest 20000 at most).
     this.drawn = 0;
     this.drawScale = 1;
     this.drawnSeq = -1;
     this.costs = [];
+    this.drawTimes = [];
     this.link = new RenderLink(this.canvas, renderUrl, {
       onStats: (m) => this.stats(m),
       freshCanvas: () => this.freshCanvas(),
@@ -67,6 +69,8 @@ export class SceneView {
       this.drawn = m.n;
       this.drawScale = m.scale;
       this.drawnSeq = m.seq;
+      if (this.drawTimes.length >= 20000) this.drawTimes.splice(0, 10000);
+      this.drawTimes.push(m.at);
     } else if (m.type === 'cost') {
       if (this.costs.length >= 20000) this.costs.splice(0, 10000);
       this.costs.push(m.ms);
@@ -180,7 +184,7 @@ export class SceneView {
       this.things.delete(name);
     }
     this.labelsDirty = true;
-    this.link.post({ type: 'frame', things: f.things, q, held: f.held ?? null });
+    this.link.post({ type: 'frame', t: f.t, things: f.things, q, held: f.held ?? null });
   }
 
   // The current plan's remaining moves, drawn as arrows.

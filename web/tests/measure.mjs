@@ -11,7 +11,9 @@
 // 1. frame rate while the episode runs (headless Chromium with
 //    --disable-gpu: software WebGL and software compositing; with --gpu: GPU compositing
 //    on SwiftShader, harness.mjs GPU_SWIFTSHADER_ARGS): scene draws (window.rtamp.frames)
-//    and `frame` messages received, per second over S seconds (default 10); the cost of
+//    and `frame` messages received, per second over S seconds (default 10); for a page
+//    that reports window.rtamp.drawTimes, the gaps between draws (median, p95, max) and
+//    the fewest draws in any one-second stretch of those S seconds; the cost of
 //    a drawn frame = the time from the animation-frame callback that drew to the next
 //    animation-frame callback in the thread that draws (it includes the WebGL raster and
 //    the canvas readback, which block that thread), median and p95: a page that reports
@@ -82,7 +84,7 @@ async function measure(root) {
   await session(root, async (page) => {
     await page.waitForTimeout(500); // the arm is moving
     const snap = () =>
-      page.evaluate(() => [window.rtamp.frames, window.rtamp.framesReceived, performance.now(), window.__rafs.length, window.rtamp.drawCosts?.length ?? null]);
+      page.evaluate(() => [window.rtamp.frames, window.rtamp.framesReceived, performance.now(), window.__rafs.length, window.rtamp.drawCosts?.length ?? null, window.rtamp.drawTimes?.length ?? null]);
     const s0 = await snap();
     await page.waitForTimeout(seconds * 1000);
     const s1 = await snap();
@@ -95,11 +97,25 @@ async function measure(root) {
     }
     if (s0[4] != null) costs = await page.evaluate(([a, b]) => window.rtamp.drawCosts.slice(a, b), [s0[4], s1[4]]);
     const dt = (s1[2] - s0[2]) / 1000;
+    // Gaps between draws and the fewest draws in any whole second of the window (a page
+    // that reports window.rtamp.drawTimes: when each draw was made).
+    let drawGaps = null, worstSecond = null;
+    if (s0[5] != null) {
+      const times = await page.evaluate(([a, b]) => window.rtamp.drawTimes.slice(a, b), [s0[5], s1[5]]);
+      const g = times.slice(1).map((x, i) => x - times[i]);
+      drawGaps = { n: g.length, median: round(quantile(g, 0.5)), p95: round(quantile(g, 0.95)), max: round(Math.max(...g)) };
+      for (let i = 0, j = 0; i < times.length && times[i] + 1000 <= times[times.length - 1]; i++) {
+        while (j < times.length && times[j] < times[i] + 1000) j++;
+        worstSecond = Math.min(worstSecond ?? Infinity, j - i);
+      }
+    }
     Object.assign(out, {
       renderer: await page.evaluate(() => window.rtamp.renderer ?? 'main (page without a worker)'),
       seconds: round(dt),
       drawn_per_s: round((s1[0] - s0[0]) / dt),
       frames_received_per_s: round((s1[1] - s0[1]) / dt),
+      draw_gap_ms: drawGaps,
+      fewest_draws_in_a_second: worstSecond,
       draw_cost_ms: { n: costs.length, median: round(quantile(costs, 0.5)), p95: round(quantile(costs, 0.95)) },
       main_frame_interval_ms: { n: gaps.length, median: round(quantile(gaps, 0.5)), p95: round(quantile(gaps, 0.95)), max: round(Math.max(...gaps)) },
       draw_scale: await page.evaluate(() => window.rtamp.drawScale ?? 1),

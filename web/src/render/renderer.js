@@ -6,27 +6,32 @@
 // labels (DOM), picking and everything else (../view.js) and sends what changed as
 // messages, handled by handle(msg):
 //   build {seq, scene}        hello.scene: rebuild everything; seq is echoed in `drawn`
-//   frame {things, q, held}   a frame's things (pos, quat, and class/kind/size/color
-//                             for things added later) and the joint angles to show
+//   frame {t, things, q, held} a frame's episode time, things (pos, quat, and
+//                             class/kind/size/color for things added later) and the
+//                             joint angles to show; frames are played out a little in the
+//                             past, interpolated (playout.js)
 //   camera {position, quaternion, fov, aspect, near, far}
 //   size {width, height}      the canvas's CSS size (drawn at pixel ratio ≤ 1)
 //   moves {actions}           the current plan's remaining actions (arrows)
 //   hold {name|null}          the person holds this thing: frames do not move it
-//   show {name, pos}          draw this thing at pos until a frame moves it
-// and reports to `emit`: drawn {n, scale, seq} after each draw, cost {ms, scale} once it
+//   show {name, pos}          draw this thing at pos until a frame received after this
+//                             message moves it
+// and reports to `emit`: drawn {n, scale, seq, at (epoch ms)} after each draw, cost {ms, scale} once it
 // is known (the time from the animation frame that drew to the next one: it includes
 // the WebGL raster and, with software compositing, the canvas readback).
-// Drawing is on demand: only after a message changed something, at most once per
-// animation frame. While the scene keeps changing, the drawing-buffer scale follows what
+// Drawing is on demand: only after a message changed something or while the playout is
+// behind the newest frame, at most once per animation frame. While the scene keeps changing, the drawing-buffer scale follows what
 // a frame costs: over the 30-frames budget for five frames running it steps down by 0.25
 // (to 0.5 at least), well under it for 30 frames it steps back up; once the scene has
 // been still for SETTLE_MS one frame is drawn at full resolution.
-// Invariants: `things` holds exactly the things of the last frame (or of build before
-// the first frame); a still scene is shown at scale 1; every draw is reported.
+// Invariants: `things` holds exactly the things of the frame shown (or of build before
+// the first frame); once frames stop the newest is shown; a still scene is shown at
+// scale 1; every draw is reported.
 import * as THREE from 'three';
 import { litMaterial } from './material.js';
 import { Robot } from './robot.js';
 import { PlanArrows } from './arrows.js';
+import { FramePlayout } from './playout.js';
 import { thingObject, UNKNOWN_THING } from '../shapes.js';
 
 const BUDGET_MS = 1000 / 30;
@@ -53,6 +58,9 @@ export class Renderer {
     this.arrows = new PlanArrows(this);
     this.robot = null;
     this.held = null; // the thing the person holds
+    this.playout = new FramePlayout();
+    this.received = 0; // frames received (their seq)
+    this.pins = new Map(); // name -> {pos, seq}: shown at pos until a frame after seq is shown
     this.seq = -1; // of the last build
     this.drawn = 0;
     this.dirty = false;
@@ -69,8 +77,7 @@ export class Renderer {
         this.build(m.scene, m.seq);
         break;
       case 'frame':
-        this.applyThings(m.things);
-        if (m.q) this.robot?.show(m.q, !!m.held);
+        this.playout.push({ t: m.t ?? 0, things: m.things, q: m.q, held: m.held, seq: ++this.received }, performance.now());
         break;
       case 'camera': {
         const c = this.camera;
@@ -92,6 +99,7 @@ export class Renderer {
       case 'show': {
         const e = this.things.get(m.name);
         if (e) e.mesh.position.fromArray(m.pos);
+        this.pins.set(m.name, { pos: m.pos, seq: this.received });
         break;
       }
       default:
@@ -115,6 +123,8 @@ export class Renderer {
 
   build(scene, seq) {
     this.seq = seq;
+    this.playout.reset();
+    this.pins.clear();
     this.world.clear();
     this.things.clear();
     this.infos.clear();
@@ -163,13 +173,20 @@ export class Renderer {
     entry.pos = pos;
   }
 
-  // A frame's things: moves them, creates the new ones, removes the vanished ones.
-  applyThings(list) {
+  // The state to show (a frame, or between two): moves the things, creates the new ones,
+  // removes the vanished ones, poses the arm.
+  show(state) {
     const seen = new Set();
-    for (const th of list) {
+    for (const th of state.things) {
       if (th.class && !this.infos.has(th.name)) this.infos.set(th.name, { ...th, kind: th.kind || this.classes?.get(th.class)?.kind });
       seen.add(th.name);
       if (th.name === this.held) continue; // the person holds it
+      const pin = this.pins.get(th.name);
+      if (pin && state.seq <= pin.seq) {
+        this.place(th.name, pin.pos, th.quat || [1, 0, 0, 0]);
+        continue;
+      }
+      this.pins.delete(th.name);
       this.place(th.name, th.pos, th.quat || [1, 0, 0, 0]);
     }
     for (const [name, entry] of this.things) {
@@ -177,6 +194,7 @@ export class Renderer {
       entry.mesh.removeFromParent();
       this.things.delete(name);
     }
+    if (state.q) this.robot?.show(state.q, !!state.held);
   }
 
   // One animation frame: account for the last draw's cost, draw if needed, and keep
@@ -190,6 +208,12 @@ export class Renderer {
       this.adapt(ms, this.lastDraw.scale);
       this.lastDraw = null;
     }
+    const state = this.playout.sample(now);
+    if (state) {
+      this.show(state);
+      this.dirty = true;
+      this.changedAt = now;
+    }
     let scale = this.motionScale;
     if (!this.dirty) {
       if (this.gl.getPixelRatio() === 1) return;
@@ -202,7 +226,7 @@ export class Renderer {
     this.gl.render(this.scene, this.camera);
     this.drawn++;
     this.lastDraw = { at: now, scale };
-    this.emit({ type: 'drawn', n: this.drawn, scale, seq: this.seq });
+    this.emit({ type: 'drawn', n: this.drawn, scale, seq: this.seq, at: performance.timeOrigin + now });
     this.schedule();
   }
 
