@@ -323,16 +323,53 @@ TEST(ServeHub, ALateClientCatchesUpWithTheHistory) {
   hub.log_record(R"({"ev":"plan","t":0.5})");
   ASSERT_EQ(c->got.size(), 3u);
   EXPECT_EQ(c->got[0]["type"], "hello");
-  EXPECT_EQ(c->got[0]["protocol"], 1);
+  EXPECT_EQ(c->got[0]["protocol"], 2);
   EXPECT_EQ(c->got[0]["history"].size(), 1u);
   EXPECT_EQ(c->got[0]["tree"]["nodes"], json::array());
   EXPECT_EQ(c->got[1]["type"], "frame");
   EXPECT_EQ(c->got[2]["type"], "log");
-  EXPECT_EQ(c->got[2]["record"]["ev"], "plan");
+  EXPECT_EQ(c->got[2]["records"], json::parse(R"([{"ev":"plan","t":0.5}])"));
   hub.leave(c.get());
   hub.log_record(R"({"ev":"end","t":1})");
   EXPECT_EQ(c->got.size(), 3u);
   EXPECT_EQ(hub.history_size(), 3u);
+}
+
+// Records not urgent wait for the next message of any kind (or a flush, or a
+// join) and go out together, in order; an urgent one takes the waiting ones with
+// it. A client that joins meanwhile gets them in its hello, and never again.
+TEST(ServeHub, RecordsThatAreNotUrgentGoOutTogetherInOrderAndOnce) {
+  Hub hub(R"({"mode":"live","world":"symbolic"})");
+  auto a = std::make_shared<RecordingClient>();
+  hub.join(a);
+  ASSERT_EQ(a->got.size(), 1u);  // hello
+  hub.log_record(R"({"ev":"tick","t":0.02})", false);
+  hub.log_record(R"({"ev":"tick","t":0.04})", false);
+  EXPECT_EQ(a->got.size(), 1u) << "not urgent: held";
+  hub.log_record(R"({"ev":"action","t":0.05})");
+  ASSERT_EQ(a->got.size(), 2u);
+  EXPECT_EQ(a->got[1]["records"].size(), 3u);
+  EXPECT_EQ(a->got[1]["records"][0]["t"], 0.02);
+  EXPECT_EQ(a->got[1]["records"][2]["ev"], "action");
+  hub.log_record(R"({"ev":"tick","t":0.06})", false);
+  hub.frame(R"({"type":"frame","t":0.06,"things":[]})");
+  ASSERT_EQ(a->got.size(), 4u);
+  EXPECT_EQ(a->got[2]["records"].size(), 1u) << "the frame takes the waiting record before it";
+  EXPECT_EQ(a->got[3]["type"], "frame");
+  hub.log_record(R"({"ev":"tick","t":0.08})", false);
+  auto b = std::make_shared<RecordingClient>();
+  hub.join(b);
+  ASSERT_EQ(a->got.size(), 5u);
+  EXPECT_EQ(a->got[4]["records"][0]["t"], 0.08) << "a join sends what waited";
+  ASSERT_EQ(b->got.size(), 2u);  // hello, frame
+  EXPECT_EQ(b->got[0]["history"].size(), 5u);
+  hub.log_record(R"({"ev":"tick","t":0.1})", false);
+  hub.flush();
+  hub.flush();
+  ASSERT_EQ(b->got.size(), 3u);
+  EXPECT_EQ(b->got[2]["records"].size(), 1u) << "the new client gets only what came after its hello";
+  EXPECT_EQ(a->got.size(), 6u);
+  EXPECT_EQ(hub.history_size(), 6u);
 }
 
 }  // namespace

@@ -1,9 +1,13 @@
 // A WebSocket test client on Boost.Beast (the server's own library, used as a
 // client): connect to 127.0.0.1:PORT/ws, send text, read JSON messages with a
 // generous deadline (a missing message fails the test instead of hanging it).
+// A `log` message (a batch of records) is handed on as one message per record,
+// {"type":"log","record":...}, so that tests look for single records; log_messages
+// counts the batches as they came.
 #pragma once
 
 #include <chrono>
+#include <deque>
 #include <functional>
 #include <optional>
 #include <string>
@@ -41,6 +45,11 @@ class WsClient {
 
   // The next message, or nullopt after `deadline` (or when the connection ends).
   std::optional<json> read(std::chrono::milliseconds deadline = std::chrono::seconds(60)) {
+    if (!records_.empty()) {
+      json m = std::move(records_.front());
+      records_.pop_front();
+      return m;
+    }
     beast::flat_buffer b;
     beast::error_code ec;
     bool done = false;
@@ -60,7 +69,14 @@ class WsClient {
       closed_ = true;
       return std::nullopt;
     }
-    return json::parse(beast::buffers_to_string(b.data()));
+    json m = json::parse(beast::buffers_to_string(b.data()));
+    if (m.value("type", "") != "log" || !m.contains("records")) return m;
+    ++log_messages;
+    for (auto& r : m["records"]) records_.push_back(json{{"type", "log"}, {"record", std::move(r)}});
+    if (records_.empty()) return json{{"type", "log"}, {"record", nullptr}};  // (never sent)
+    json first = std::move(records_.front());
+    records_.pop_front();
+    return first;
   }
 
   // Reads until `pred` holds for a message (returned), or nullopt.
@@ -86,11 +102,13 @@ class WsClient {
   void drop() { beast::get_lowest_layer(ws_).close(); }
 
   std::vector<json> seen;  // every message read_until has read
+  int log_messages = 0;    // `log` messages read (each a batch of records)
 
  private:
   net::io_context ioc_;
   websocket::stream<beast::tcp_stream> ws_{ioc_};
   bool closed_ = false;
+  std::deque<json> records_;  // the rest of the last `log` message's records
 };
 
 }  // namespace rtamp::serve::test

@@ -40,11 +40,13 @@ wss.on('connection', (ws) => {
   const start = Date.now();
   const timer = setInterval(() => {
     const t = ((Date.now() - start) / 1000) * 4;
+    const batch = [];
     while (i < records.length && records[i].t <= t) {
       const r = records[i++];
       if (r.ev === 'run') placement = r.state;
-      ws.send(JSON.stringify({ type: 'log', record: r }));
+      batch.push(r);
     }
+    if (batch.length) ws.send(JSON.stringify({ type: 'log', records: batch }));
     ws.send(JSON.stringify(frame(t, placement)));
     if (i >= records.length) clearInterval(timer);
   }, 33);

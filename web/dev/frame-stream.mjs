@@ -45,7 +45,7 @@ if (mode === 'record') {
   const hello = msgs.find((m) => m.type === 'hello');
   const frames = msgs.filter((m) => m.type === 'frame');
   const others = msgs.filter((m) => m.type === 'log' || m.type === 'tree' || m.type === 'status');
-  const tOf = (m) => (m.type === 'log' ? m.record.t ?? 0 : m.t);
+  const tOf = (m) => (m.type === 'log' ? m.records[0]?.t ?? 0 : m.t);
   others.sort((a, b) => tOf(a) - tOf(b));
   const types = { '.html': 'text/html', '.js': 'text/javascript', '.css': 'text/css' };
   const server = createServer((req, res) => {

@@ -1,4 +1,4 @@
-// The page's side of the rtamp serve WebSocket protocol (docs/serve.md, v1): one JSON
+// The page's side of the rtamp serve WebSocket protocol (docs/serve.md, protocol 2): one JSON
 // object per text frame. Incoming messages are handed to `onMessage`; requests
 // (`intervene`, `control`) get a fresh id and a promise that settles with the server's
 // `reply` for that id. Invariants: ids are unique per connection; every pending request

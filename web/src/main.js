@@ -165,7 +165,7 @@ function onMessage(m) {
       onFrame(m);
       break;
     case 'log':
-      onLog(m.record);
+      for (const r of m.records) onLog(r);
       break;
     case 'tree':
       app.tree.setTree(m);

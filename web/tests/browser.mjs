@@ -156,7 +156,7 @@ const cases = {
   async loads() {
     await withPage([scenario('3-block-tray'), '--world', 'symbolic'], async ({ page, ws }) => {
       const h = hello(ws);
-      assert.equal(h.protocol, 1);
+      assert.equal(h.protocol, 2);
       assert.equal(await page.textContent('#task'), h.task);
       assert.equal(await page.locator('.ba-state').count(), h.automaton.states.length);
       assert.equal(await page.locator('#palette .class-button').count(), h.scene.classes.length);

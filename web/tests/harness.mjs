@@ -119,7 +119,7 @@ export function logRecords(ws) {
     if (m.type === 'hello') {
       out.length = 0;
       out.push(...(m.history || []));
-    } else if (m.type === 'log') out.push(m.record);
+    } else if (m.type === 'log') out.push(...m.records);
   }
   return out;
 }

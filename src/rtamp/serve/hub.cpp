@@ -12,19 +12,8 @@ using nlohmann::json;
 namespace {
 std::shared_ptr<const std::string> share(std::string s) { return std::make_shared<const std::string>(std::move(s)); }
 
-// A `log` message around a record; the history keeps the messages (one copy of a record, shared).
-constexpr std::string_view kLogHead = "{\"type\":\"log\",\"record\":";
-std::shared_ptr<const std::string> log_message(const std::string& record) {
-  std::string m;
-  m.reserve(kLogHead.size() + record.size() + 1);
-  m += kLogHead;
-  m += record;
-  m += '}';
-  return share(std::move(m));
-}
-std::string_view record_of(const std::string& log_message) {
-  return std::string_view(log_message).substr(kLogHead.size(), log_message.size() - kLogHead.size() - 1);
-}
+// The start of a `log` message; its records follow, comma-separated, then "]}".
+constexpr std::string_view kLogHead = "{\"type\":\"log\",\"records\":[";
 
 // The body of a tree message: the message without "type" (hello's `tree`).
 std::string tree_body(const std::string& tree_message) {
@@ -42,18 +31,18 @@ std::string state_message(const PlaybackState& s) {
 Hub::Hub(std::string hello_fields) : fields_(std::move(hello_fields)) {}
 
 std::string Hub::hello_locked() const {
-  std::string h = "{\"type\":\"hello\",\"protocol\":1,";
+  std::string h = "{\"type\":\"hello\",\"protocol\":2,";
   h += fields_.substr(1, fields_.size() - 2);
   h += ",\"speed\":" + json(state_.speed).dump() + ",\"paused\":" + (state_.paused ? "true" : "false") +
        ",\"t\":" + json(state_.t).dump() + ",\"ended\":" + (state_.ended ? "true" : "false");
   h += ",\"tree\":" + tree_body(tree_);
   h += ",\"history\":[";
   std::size_t size = h.size() + 2;
-  for (const auto& m : history_) size += m->size() - kLogHead.size();
+  for (const auto& r : history_) size += r.size() + 1;
   h.reserve(size);
   for (std::size_t i = 0; i < history_.size(); ++i) {
     if (i) h += ',';
-    h += record_of(*history_[i]);
+    h += history_[i];
   }
   h += "]}";
   return h;
@@ -66,6 +55,7 @@ std::string Hub::hello() const {
 
 void Hub::join(const std::shared_ptr<Client>& c) {
   std::lock_guard lock(mu_);
+  flush_locked();  // the new client's hello has these records
   c->send(share(hello_locked()), false);
   if (!frame_.empty()) c->send(share(frame_), true);
   clients_.push_back(c);
@@ -92,31 +82,51 @@ void Hub::broadcast_locked(const std::shared_ptr<const std::string>& m, bool fra
   for (const auto& c : clients_) c->send(m, frame);
 }
 
-void Hub::log_record(const std::string& record) {
+void Hub::log_record(const std::string& record, bool urgent) {
   std::lock_guard lock(mu_);
-  history_.push_back(log_message(record));
-  if (!clients_.empty()) broadcast_locked(history_.back(), false);
+  history_.push_back(record);
+  if (clients_.empty()) return;
+  batch_ += batch_.empty() ? kLogHead : std::string_view(",");
+  batch_ += record;
+  if (urgent) flush_locked();
+}
+
+void Hub::flush_locked() {
+  if (batch_.empty()) return;
+  batch_ += "]}";
+  auto m = share(std::move(batch_));
+  batch_.clear();
+  if (!clients_.empty()) broadcast_locked(m, false);
+}
+
+void Hub::flush() {
+  std::lock_guard lock(mu_);
+  flush_locked();
 }
 
 void Hub::tree(const std::string& message) {
   std::lock_guard lock(mu_);
+  flush_locked();
   tree_ = message;
   if (!clients_.empty()) broadcast_locked(share(message), false);
 }
 
 void Hub::status(const std::string& message) {
   std::lock_guard lock(mu_);
+  flush_locked();
   if (!clients_.empty()) broadcast_locked(share(message), false);
 }
 
 void Hub::frame(const std::string& message) {
   std::lock_guard lock(mu_);
+  flush_locked();
   frame_ = message;
   if (!clients_.empty()) broadcast_locked(share(message), true);
 }
 
 void Hub::state(const PlaybackState& s) {
   std::lock_guard lock(mu_);
+  flush_locked();
   state_ = s;
   if (!clients_.empty()) broadcast_locked(share(state_message(s)), false);
 }
@@ -138,9 +148,8 @@ std::size_t Hub::history_size() const {
 
 void Hub::reset(std::vector<std::string> history, std::string tree, std::string frame, const PlaybackState& s) {
   std::lock_guard lock(mu_);
-  history_.clear();
-  history_.reserve(history.size());
-  for (const std::string& r : history) history_.push_back(log_message(r));
+  batch_.clear();  // the new hello has the history
+  history_ = std::move(history);
   tree_ = std::move(tree);
   frame_ = std::move(frame);
   state_ = s;

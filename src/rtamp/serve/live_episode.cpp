@@ -19,6 +19,8 @@ namespace {
 using Clock = std::chrono::steady_clock;
 constexpr auto kFrameInterval = std::chrono::microseconds(1000000 / 30);
 bool is_frame_record(const std::string& r) { return r.rfind("{\"ev\":\"frame\"", 0) == 0; }
+// Tick records (one a loop step) go to pages in batches (Hub::log_record).
+bool is_tick_record(const std::string& r) { return r.rfind("{\"ev\":\"tick\"", 0) == 0; }
 }  // namespace
 
 // The loop's events a page sees besides the log: the tree, statuses, perception (for frames), the end.
@@ -83,7 +85,7 @@ LiveEpisode::LiveEpisode(const world::Scenario& scenario, LiveOptions options)
     episode_->loop().add_observer(*log_);
   }
   log_->add_sink([this](const std::string& record) {
-    if (!is_frame_record(record)) hub_->log_record(record);
+    if (!is_frame_record(record)) hub_->log_record(record, !is_tick_record(record));
   });
   observer_ = std::make_unique<Observer>(*this);
   episode_->loop().add_observer(*observer_);

@@ -208,7 +208,7 @@ void Replay::run() {
     t_ = std::max(t_, target);
     bool sent = false;
     while (next_ < records_.size() && records_[next_].t <= t_ + 1e-9) {
-      if (!records_[next_].frame) hub_->log_record(records_[next_].text);
+      if (!records_[next_].frame) hub_->log_record(records_[next_].text, false);  // sent with the frame below
       if (!records_[next_].tree.empty()) hub_->tree(records_[next_].tree);
       ++next_;
       sent = true;

@@ -227,6 +227,7 @@ void Server::start(RequestHandler& handler) {
 
 void Server::drain(std::chrono::milliseconds timeout) {
   if (!impl_ || !impl_->handler) return;
+  impl_->handler->hub().flush();
   const auto end = std::chrono::steady_clock::now() + timeout;
   while (impl_->handler->hub().unsent() > 0 && std::chrono::steady_clock::now() < end)
     std::this_thread::sleep_for(std::chrono::milliseconds(5));
