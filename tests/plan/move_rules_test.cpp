@@ -37,7 +37,8 @@ std::optional<double> brute_force(const task::System& ts, const automata::Automa
   };
   id(ts.initial(), ba.initial);
   for (std::size_t n = 0; n < nodes.size(); ++n) {
-    const auto [s, q] = nodes[n];
+    const auto s = nodes[n].first;  // (not a structured binding: the lambdas below capture it)
+    const auto q = nodes[n].second;
     const oracle::St os = to_oracle(s);
     const auto l = oracle::label(w, os, ba);
     for (const auto& e : ba.edges[q]) {
