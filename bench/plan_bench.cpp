@@ -185,7 +185,8 @@ const std::vector<std::vector<StreamState>>& replan_streams() {
         if (moves && rng() % 3 != 0) {
           gen.execute(r.plan.prefix.front().action);
         } else {
-          gen.apply(world::Change::relocate(blocks[rng() % 3], locs[rng() % 3]));
+          const std::string& block = blocks[rng() % 3];  // one draw per statement
+          gen.apply(world::Change::relocate(block, locs[rng() % 3]));
         }
         stream.push_back({gen.placement(), gen.hand()});
       }

@@ -154,7 +154,7 @@ rtamp::cli::Registrar reg{
       sub.add_option("--change", a->changes,
                      "A change applied after the previous plan, followed by a replan (repeatable, in order): "
                      "'move OBJ LOC', 'add OBJ CLASS LOC', 'remove OBJ', 'add-container NAME CLASS REGION [CAP]', "
-                     "'remove-container NAME', 'add-region NAME X Y [CAP]'");
+                     "'remove-container NAME', 'add-region NAME X Y [CAP [SX SY]]'");
       sub.add_flag("--json", a->json, "Print one JSON object (fields: docs/cli.md)");
       rtamp::cli::add_integer(sub, "--max-nodes", a->max_nodes, 1, std::numeric_limits<long long>::max(),
                               "Node limit of each search");

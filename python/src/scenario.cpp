@@ -101,7 +101,7 @@ void bind_scenario(py::module_& m) {
   py::class_<Change>(m, "Change",
                      "A change of the world (one type for the planner, the worlds and the loop): build with the\n"
                      "static constructors or Change.parse('move o1 r2' | 'add o4 block r1' | 'remove o1' |\n"
-                     "'add-container t2 tray r1 3' | 'remove-container t2' | 'add-region r4 0.5 0.2 [capacity]').\n"
+                     "'add-container t2 tray r1 3' | 'remove-container t2' | 'add-region r4 0.5 0.2 [capacity [sx sy]]').\n"
                      "Planner.apply takes one; an Intervention is a Change at a time.")
       .def_static("parse", &Change::parse, py::arg("text"),
                   "A change from its text (see the class); raises rtamp.Error with the column.")

@@ -68,7 +68,9 @@ TEST(Emptiness, MatchesBruteForce) {
   int nonempty = 0;
   for (int i = 0; i < 4000; ++i) {
     const bool sb = i % 3 == 0;
-    const Automaton a = test::random_automaton(rng, 1 + rng() % 7, 2, rng() % 4, sb, 0.25);
+    const auto states = static_cast<std::uint32_t>(1 + rng() % 7);  // one draw per statement
+    const auto marks = static_cast<std::uint32_t>(rng() % 4);
+    const Automaton a = test::random_automaton(rng, states, 2, marks, sb, 0.25);
     const auto w = find_accepting_lasso(a);
     ASSERT_EQ(w.has_value(), brute_nonempty(a)) << "automaton " << i;
     if (w) {

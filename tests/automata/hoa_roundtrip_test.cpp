@@ -39,7 +39,8 @@ Automaton random_automaton(std::mt19937_64& rng, bool state_based) {
         if (r == 1) c.pos |= Letter{1} << i;
         if (r == 2) c.neg |= Letter{1} << i;
       }
-      a.add_edge(q, static_cast<std::uint32_t>(pick(0, n - 1)), c, static_cast<Marks>(pick(0, a.all_marks())));
+      const auto to = static_cast<std::uint32_t>(pick(0, n - 1));  // one draw per statement
+      a.add_edge(q, to, c, static_cast<Marks>(pick(0, a.all_marks())));
     }
   }
   a.initial = static_cast<std::uint32_t>(pick(0, n - 1));

@@ -76,7 +76,9 @@ TEST(LassoAccept, MatchesBruteForce) {
   std::mt19937_64 rng(11);
   for (int i = 0; i < 3000; ++i) {
     const bool sb = i % 3 == 0;
-    const Automaton a = test::random_automaton(rng, 1 + rng() % 6, 2, rng() % 4, sb, 0.35);
+    const auto states = static_cast<std::uint32_t>(1 + rng() % 6);  // one draw per statement
+    const auto marks = static_cast<std::uint32_t>(rng() % 4);
+    const Automaton a = test::random_automaton(rng, states, 2, marks, sb, 0.35);
     for (int k = 0; k < 10; ++k) {
       const LassoWord w = test::random_word(rng, 2);
       ASSERT_EQ(lasso_accept(a, w), test::brute_accept(a, w)) << "automaton " << i << " word " << k;

@@ -31,7 +31,9 @@ TEST(Reductions, PreserveLanguage) {
   std::mt19937_64 rng(3);
   for (int i = 0; i < 3000; ++i) {
     const bool sb = i % 2 == 0;
-    const Automaton orig = test::random_automaton(rng, 2 + rng() % 6, 2, rng() % 3, sb, 0.3);
+    const auto states = static_cast<std::uint32_t>(2 + rng() % 6);  // one draw per statement
+    const auto marks = static_cast<std::uint32_t>(rng() % 3);
+    const Automaton orig = test::random_automaton(rng, states, 2, marks, sb, 0.3);
     Automaton a = orig;
     remove_useless(a);
     expect_same_language(orig, a, rng, "remove_useless", i);
@@ -66,7 +68,9 @@ TEST(Reductions, PreserveLanguage) {
 TEST(Reductions, RemoveUselessKeepsOnlyUsefulStates) {
   std::mt19937_64 rng(4);
   for (int i = 0; i < 500; ++i) {
-    Automaton a = test::random_automaton(rng, 2 + rng() % 6, 2, 1 + rng() % 2, false, 0.3);
+    const auto states = static_cast<std::uint32_t>(2 + rng() % 6);  // one draw per statement
+    const auto marks = static_cast<std::uint32_t>(1 + rng() % 2);
+    Automaton a = test::random_automaton(rng, states, 2, marks, false, 0.3);
     remove_useless(a);
     ASSERT_EQ(a.initial, 0u);
     if (a.num_states() == 1 && a.edges[0].empty()) {

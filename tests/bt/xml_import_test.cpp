@@ -116,12 +116,17 @@ class RandomTrees {
         return composite(std::make_unique<ReactiveFallback>(name), depth);
       case 6:
         return composite(std::make_unique<Chooser>(name), depth);
-      case 7:
-        return composite(std::make_unique<Parallel>(name, pick(5) - 2, pick(5) - 2), depth);
+      case 7: {  // one draw per statement: the same trees from every compiler
+        const int success = pick(5) - 2;
+        const int failure = pick(5) - 2;
+        return composite(std::make_unique<Parallel>(name, success, failure), depth);
+      }
       case 8:
         return std::make_unique<Inverter>(name, make(depth + 1));
-      case 9:
-        return std::make_unique<Retry>(name, pick(2) == 0 ? -1 : 1 + pick(3), make(depth + 1));
+      case 9: {
+        const int attempts = pick(2) == 0 ? -1 : 1 + pick(3);
+        return std::make_unique<Retry>(name, attempts, make(depth + 1));
+      }
       case 10:
         return std::make_unique<Timeout>(name, std::chrono::milliseconds(100 * pick(6)), make(depth + 1));
       default: {

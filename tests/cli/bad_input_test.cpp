@@ -432,7 +432,12 @@ void change_cases(std::vector<Case>& t) {
   add({"add-region none 3 3"}, "--change #1:1:12:", "reserved word");
   add({"add-region r9 3 3 0"}, "--change #1:1:19:", "at least 1");
   add({"add-region r9 3 3 4.5"}, "--change #1:1:19:", "must be an integer");
-  add({"add-region r9 3"}, "--change #1:1:16:", "takes 3 or 4 arguments");
+  add({"add-region r9 3"}, "--change #1:1:16:", "takes 3, 4 or 6 arguments");
+  add({"add-region r9 3 3 2 0.5"}, "--change #1:1:24:", "takes 3, 4 or 6 arguments");
+  add({"add-region r9 3 3 2 0 0.3"}, "--change #1:1:21:", "size x '0' is out of range");
+  add({"add-region r9 3 3 2 0.3 abc"}, "--change #1:1:25:", "size y must be a number");
+  add({"add-region r9 3 3 2 0.3 1e9"}, "--change #1:1:25:", "size y '1e9' is out of range");
+  add({"add-region r9 2 2 1 0.5 0.5", "add-region r8 2.3 2 1"}, "--change #2:1:15:", "overlaps region 'r9'");
   add({"add-container t9 tray"}, "--change #1:1:22:", "takes 3 or 4 arguments");
   add({"add o9 block r1 r2"}, "--change #1:1:17:", "takes 3 arguments");
   add({"add o9 block o1"}, "--change #1:1:14:", "is an object, not a location");

@@ -153,7 +153,11 @@ world::Scenario patrol_scenario(std::mt19937& rng, const std::string& task) {
       case 0: text = "all block in " + rname(); break;
       case 1: text = "any block in " + rname(); break;
       case 2: text = "!(o1 in " + rname() + ")"; break;
-      default: text = "o" + std::to_string(1 + rng() % N) + " in " + rname(); break;
+      default: {
+        const std::string thing = "o" + std::to_string(1 + rng() % N);  // one draw per statement
+        text = thing + " in " + rname();
+        break;
+      }
     }
     sc.propositions.push_back(proposition(a, text));
   }

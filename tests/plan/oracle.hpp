@@ -1,5 +1,6 @@
 // An independent brute-force planner for tests: its own state representation
-// (a vector of location names' indices), its own action rules, its own
+// (a vector of location names' indices), its own action rules (capacities and
+// footprints: fit and the area bound, in doubles), its own
 // motion-cost formulas written from docs/planning.md, labels from the world
 // layer's reference evaluator, an explicit product with the automaton, and
 // the minimum lasso cost by Dijkstra from the start plus, for every accepting
@@ -7,6 +8,7 @@
 #pragma once
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <map>
 #include <optional>
@@ -31,6 +33,16 @@ struct World {
   std::vector<bool> container;
   std::vector<int> cap;
   int R = 0;
+  // Footprints (docs/planning.md "Footprints", its constants written out here):
+  // a thing fits a location iff its x and y sizes are within the location's usable
+  // extents (a region's size; a container's size less an 8 mm rim a side); room:
+  // the cells of the things directly at a location, with the new one's, are at
+  // most the location's room.
+  static constexpr double kGap = 0.035, kTrayGap = 0.015, kRim = 0.008;
+  std::vector<std::array<double, 2>> size;    // per thing
+  std::vector<std::array<double, 2>> usable;  // per location
+  std::vector<double> cell;                   // per thing
+  std::vector<double> room;                   // per location
 
   std::vector<std::vector<int>> groups;  // interchangeable objects (same class, never named)
 
@@ -52,25 +64,25 @@ struct World {
   }
 
   explicit World(const rtamp::world::Scenario& s) : sc(&s) {
-    for (const auto& o : s.objects) {
-      things.push_back(o.name);
-      classes.push_back(o.cls);
-      container.push_back(false);
-    }
-    for (const auto& c : s.containers) {
-      things.push_back(c.name);
-      classes.push_back(c.cls);
-      container.push_back(true);
-    }
-    for (const auto& r : s.regions) {
-      locs.push_back(r.name);
-      cap.push_back(r.capacity);
-    }
+    auto add_thing = [&](const std::string& name, const std::string& cls, bool is_container, const Vec3& sz) {
+      things.push_back(name);
+      classes.push_back(cls);
+      container.push_back(is_container);
+      size.push_back({sz[0], sz[1]});
+      const double p = is_container ? 2 * std::min(kGap, kTrayGap) - kGap : kGap;
+      cell.push_back(std::max(0.0, sz[0] + p) * std::max(0.0, sz[1] + p));
+    };
+    auto add_loc = [&](const std::string& name, int capacity, double ux, double uy) {
+      locs.push_back(name);
+      cap.push_back(capacity);
+      usable.push_back({ux, uy});
+      room.push_back((ux + kGap) * (uy + kGap));
+    };
+    for (const auto& o : s.objects) add_thing(o.name, o.cls, false, o.size);
+    for (const auto& c : s.containers) add_thing(c.name, c.cls, true, c.size);
+    for (const auto& r : s.regions) add_loc(r.name, r.capacity, r.size[0], r.size[1]);
     R = static_cast<int>(s.regions.size());
-    for (const auto& c : s.containers) {
-      locs.push_back(c.name);
-      cap.push_back(c.capacity);
-    }
+    for (const auto& c : s.containers) add_loc(c.name, c.capacity, c.size[0] - 2 * kRim, c.size[1] - 2 * kRim);
   }
   int loc_index(const std::string& n) const {
     for (std::size_t i = 0; i < locs.size(); ++i)
@@ -123,12 +135,19 @@ inline double move_cost(const World& w, const St& s, int thing, int to, const st
 inline std::vector<std::pair<int, int>> moves(const World& w, const St& s) {
   std::vector<std::pair<int, int>> out;
   std::vector<int> count(w.locs.size(), 0);
-  for (int l : s.loc) ++count[static_cast<std::size_t>(l)];
+  std::vector<double> used(w.locs.size(), 0.0);
+  for (std::size_t t = 0; t < s.loc.size(); ++t) {
+    ++count[static_cast<std::size_t>(s.loc[t])];
+    used[static_cast<std::size_t>(s.loc[t])] += w.cell[t];
+  }
   for (std::size_t t = 0; t < w.things.size(); ++t)
     for (int l = 0; l < static_cast<int>(w.locs.size()); ++l) {
+      const auto li = static_cast<std::size_t>(l);
       if (l == s.loc[t]) continue;
       if (w.container[t] && l >= w.R) continue;
-      if (count[static_cast<std::size_t>(l)] >= w.cap[static_cast<std::size_t>(l)]) continue;
+      if (count[li] >= w.cap[li]) continue;
+      if (w.size[t][0] > w.usable[li][0] + 1e-12 || w.size[t][1] > w.usable[li][1] + 1e-12) continue;  // does not fit
+      if (used[li] + w.cell[t] > w.room[li] + 1e-9) continue;                                         // no room
       out.emplace_back(static_cast<int>(t), l);
     }
   return out;

@@ -66,8 +66,11 @@ inline world::Scenario random_scenario(std::mt19937& rng, const std::vector<std:
     std::uniform_real_distribution<double> U(-0.6, 0.6);
     for (int i = 0; i < R; ++i) {
       const int cap = 1 + static_cast<int>(rng() % (N + C + 1));
-      sc.regions.push_back(region("r" + std::to_string(i + 1), 0.4 + std::round(U(rng) * 20) / 20,
-                                  std::round(U(rng) * 20) / 20 + 0.3 * i, cap));
+      // One draw per statement, y first: the same scenarios from every compiler (the
+      // order of a call's arguments is unspecified; this is the order gcc chose).
+      const double y = std::round(U(rng) * 20) / 20 + 0.3 * i;
+      const double x = 0.4 + std::round(U(rng) * 20) / 20;
+      sc.regions.push_back(region("r" + std::to_string(i + 1), x, y, cap));
     }
     for (int i = 0; i < C; ++i) {
       world::Container c;
@@ -91,10 +94,25 @@ inline world::Scenario random_scenario(std::mt19937& rng, const std::vector<std:
       switch (rng() % 7) {
         case 0: text = "all block in " + rname(); break;
         case 1: text = "any block in " + rname(); break;
-        case 2: text = "count block in " + rname() + " >= " + std::to_string(1 + rng() % 2); break;
+        case 2: {
+          const std::string n = std::to_string(1 + rng() % 2);
+          text = "count block in " + rname() + " >= " + n;
+          break;
+        }
         case 3: text = "!(o1 in " + rname() + ")"; break;
-        case 4: text = C ? "o1 in t1 | t1 in " + rname() : "o1 in " + rname() + " & all block in " + rname(); break;
-        default: text = "o" + std::to_string(1 + rng() % static_cast<unsigned>(N)) + " in " + rname(); break;
+        case 4:
+          if (C) {
+            text = "o1 in t1 | t1 in " + rname();
+          } else {
+            const std::string second = rname();
+            text = "o1 in " + rname() + " & all block in " + second;
+          }
+          break;
+        default: {
+          const std::string where = rname();
+          text = "o" + std::to_string(1 + rng() % static_cast<unsigned>(N)) + " in " + where;
+          break;
+        }
       }
       sc.propositions.push_back(proposition(a, text));
     }

@@ -328,6 +328,14 @@ TEST(Planner, BadChangesAreErrors) {
   EXPECT_THROW(world::Change::parse("add-region x a b"), Error);
   EXPECT_THROW(world::Change::parse(""), Error);
   EXPECT_EQ(world::Change::parse("add o9 cup r2").to_string(), "add o9 cup r2");
+  // add-region reads back from its text: every digit of the centre, and the size unless it is the default.
+  for (const std::string t : {"add-region r9 0.1 -2.5 3", "add-region r9 0.30000000000000004 2 1 0.5 0.25"})
+    EXPECT_EQ(world::Change::parse(t).to_string(), t);
+  const world::Change sized = world::Change::parse("add-region r9 2 -2 3 0.3 0.25");
+  EXPECT_EQ(sized.region.size[0], 0.3);
+  EXPECT_EQ(sized.region.size[1], 0.25);
+  EXPECT_EQ(sized.region.capacity, 3);
+  EXPECT_EQ(world::Change::parse("add-region r9 2 -2").region.size[0], world::Region{}.size[0]);
 }
 
 TEST(Planner, ActionTuples) {

@@ -178,7 +178,8 @@ TEST(Ties, ExperienceReplans) {
         std::vector<std::string> locs;
         for (const auto& reg : cur.regions) locs.push_back(reg.name);
         for (const auto& c : cur.containers) locs.push_back(c.name);
-        p.apply(world::Change::relocate(cur.objects[rng() % cur.objects.size()].name, locs[rng() % locs.size()]));
+        const std::string thing = cur.objects[rng() % cur.objects.size()].name;  // one draw per statement
+        p.apply(world::Change::relocate(thing, locs[rng() % locs.size()]));
       }
       SCOPED_TRACE("query " + std::to_string(k));
       r = p.plan();

@@ -67,8 +67,9 @@ TEST(IkCostModel, LowerBoundNeverExceedsTheCost) {
   std::uniform_real_distribution<double> x(0.2, 0.6), y(-0.45, 0.45);
   int finite = 0;
   for (int i = 0; i < 60; ++i) {
-    const Eigen::Vector3d h = i % 5 == 0 ? Eigen::Vector3d(0, 0, 0.5) : Eigen::Vector3d(x(rng), y(rng), 0);
-    const Eigen::Vector3d p(x(rng), y(rng), 0), t(x(rng), y(rng), 0);
+    // Braced lists: their draws are in order whatever the compiler.
+    const Eigen::Vector3d h = i % 5 == 0 ? Eigen::Vector3d(0, 0, 0.5) : Eigen::Vector3d{x(rng), y(rng), 0};
+    const Eigen::Vector3d p{x(rng), y(rng), 0}, t{x(rng), y(rng), 0};
     for (bool container : {false, true}) {
       const double c = m.move_cost(h, p, t, container);
       if (!std::isfinite(c)) continue;

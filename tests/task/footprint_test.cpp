@@ -3,6 +3,7 @@
 // placement that free_spot-style placement achieves, it refuses the common
 // impossible ones (a tray bigger than a region, a full region), symmetry
 // groups only hold objects with the same moves, and forbidden moves.
+#include <array>
 #include <gtest/gtest.h>
 
 #include <random>
@@ -61,10 +62,16 @@ TEST(Footprint, FitsTableAgreesWithFreeSpotOnRandomSizes) {
     world::Scenario s;
     s.name = "fit";
     s.regions.push_back(region("r0", 0, 0, 10, 10));
-    s.regions.push_back(region("r1", 20, 0, side(rng), side(rng)));
-    s.containers.push_back(tray("t1", {0, 0, 0}, side(rng), side(rng)));
-    s.containers.push_back(tray("t2", {2, 2, 0}, side(rng), side(rng)));
-    for (int i = 0; i < 4; ++i) s.objects.push_back(object("o" + std::to_string(i), {-2, -2 + 0.6 * i, 0}, side(rng), side(rng)));
+    // Sizes drawn into a braced list: one order of draws whatever the compiler.
+    auto sizes = [&] { return std::array<double, 2>{side(rng), side(rng)}; };
+    const auto r1 = sizes(), t1 = sizes(), t2 = sizes();
+    s.regions.push_back(region("r1", 20, 0, r1[0], r1[1]));
+    s.containers.push_back(tray("t1", {0, 0, 0}, t1[0], t1[1]));
+    s.containers.push_back(tray("t2", {2, 2, 0}, t2[0], t2[1]));
+    for (int i = 0; i < 4; ++i) {
+      const auto o = sizes();
+      s.objects.push_back(object("o" + std::to_string(i), {-2, -2 + 0.6 * i, 0}, o[0], o[1]));
+    }
     const System ts(s, in_store(s));
     for (unsigned t = 0; t < ts.num_things(); ++t) {
       const world::Vec3 size = t < ts.num_objects() ? s.objects[t].size : s.containers[t - ts.num_objects()].size;
@@ -103,13 +110,20 @@ TEST(Footprint, RoomNeverRefusesWhatPlacementAchieves) {
     world::Scenario s;
     s.name = "room";
     s.regions.push_back(region("r0", 0, 0, 20, 20));
-    const world::Region r1 = region("r1", 30, 0, area(rng), area(rng));
+    // Sizes drawn into a braced list: one order of draws whatever the compiler.
+    auto sizes = [&](auto& d) { return std::array<double, 2>{d(rng), d(rng)}; };
+    const auto r1_size = sizes(area);
+    const world::Region r1 = region("r1", 30, 0, r1_size[0], r1_size[1]);
     s.regions.push_back(r1);
     const bool into_tray = trial % 3 == 0;
-    if (into_tray) s.containers.push_back(tray("t0", {5, 5, 0}, area(rng), area(rng)));
+    if (into_tray) {
+      const auto t0 = sizes(area);
+      s.containers.push_back(tray("t0", {5, 5, 0}, t0[0], t0[1]));
+    }
     for (int i = 0; i < 40; ++i) {
       if (!into_tray && i % 7 == 3) {
-        s.containers.push_back(tray("t" + std::to_string(i), {-5 + 0.5 * i, 8, 0}, big(rng), big(rng)));
+        const auto t = sizes(big);
+        s.containers.push_back(tray("t" + std::to_string(i), {-5 + 0.5 * i, 8, 0}, t[0], t[1]));
       } else {
         const double a = small(rng);
         s.objects.push_back(object("o" + std::to_string(i), {-5 + 0.2 * i, -8, 0}, a, rng() % 2 ? a : small(rng)));

@@ -96,7 +96,10 @@ PropExpr random_expr(std::mt19937& rng, int depth) {
       e.kind = K::False;
       return e;
     case 2:
-      return atom_in(things[rng() % 3], locs[rng() % 3]);
+    {
+      const std::string& thing = things[rng() % 3];  // one draw per statement (argument order is unspecified)
+      return atom_in(thing, locs[rng() % 3]);
+    }
     case 3:
     case 4:
     case 5:

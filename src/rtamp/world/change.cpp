@@ -5,7 +5,6 @@
 #include <charconv>
 #include <cmath>
 #include <limits>
-#include <sstream>
 
 #include "rtamp/world/geometry.hpp"
 #include "rtamp/world/names.hpp"
@@ -74,30 +73,58 @@ class Reporter {
 struct Kind {
   const char* word;
   std::size_t args_min, args_max;
+  const char* counts;  // the argument counts it takes, in words
   const char* usage;
 };
 const Kind kKinds[] = {
-    {"move", 2, 2, "move OBJ LOC"},
-    {"add", 3, 3, "add OBJ CLASS LOC"},
-    {"remove", 1, 1, "remove OBJ"},
-    {"add-container", 3, 4, "add-container NAME CLASS REGION [CAPACITY]"},
-    {"remove-container", 1, 1, "remove-container NAME"},
-    {"add-region", 3, 4, "add-region NAME X Y [CAPACITY]"},
+    {"move", 2, 2, "2", "move OBJ LOC"},
+    {"add", 3, 3, "3", "add OBJ CLASS LOC"},
+    {"remove", 1, 1, "1", "remove OBJ"},
+    {"add-container", 3, 4, "3 or 4", "add-container NAME CLASS REGION [CAPACITY]"},
+    {"remove-container", 1, 1, "1", "remove-container NAME"},
+    {"add-region", 3, 6, "3, 4 or 6", "add-region NAME X Y [CAPACITY [SX SY]]"},
 };
 
-double coordinate(const Reporter& r, std::size_t k, const char* axis) {
-  const std::string_view w = r.words()[k].text;
+// The shortest text that reads back as the same double.
+std::string number(double v) {
+  char buf[32];
+  const auto [ptr, ec] = std::to_chars(buf, buf + sizeof buf, v);
+  return ec == std::errc() ? std::string(buf, ptr) : "nan";
+}
+
+// A whole word read as a double (a leading '+' allowed); "inf" and "nan" read
+// as numbers, out of range.
+enum class Read { Ok, NotANumber, OutOfRange };
+Read read_number(std::string_view w, double& v) {
   const char* first = w.data();
   const char* last = w.data() + w.size();
   if (first != last && *first == '+') ++first;
-  double v = 0;
   const auto [ptr, ec] = std::from_chars(first, last, v);
   if (ec == std::errc::result_out_of_range || (ec == std::errc() && ptr == last && !std::isfinite(v)))
+    return Read::OutOfRange;
+  return ec != std::errc() || ptr != last || first == last ? Read::NotANumber : Read::Ok;
+}
+
+double coordinate(const Reporter& r, std::size_t k, const char* axis) {
+  const std::string_view w = r.words()[k].text;
+  double v = 0;
+  const Read read = read_number(w, v);
+  if (read == Read::OutOfRange)
     r.fail(k, std::string(axis) + " " + shown(w) + " is out of range (coordinates are finite, within ±1000 m)");
-  if (ec != std::errc() || ptr != last || first == last)
-    r.fail(k, std::string(axis) + " must be a number (metres), found " + shown(w));
+  if (read == Read::NotANumber) r.fail(k, std::string(axis) + " must be a number (metres), found " + shown(w));
   if (std::abs(v) > world::kMaxCoordinate)
     r.fail(k, std::string(axis) + " " + shown(w) + " is out of range (coordinates are within ±1000 m)");
+  return v;
+}
+
+// A region's side: a positive number of metres, at most world::kMaxSize.
+double side(const Reporter& r, std::size_t k, const char* axis) {
+  const std::string_view w = r.words()[k].text;
+  double v = 0;
+  const Read read = read_number(w, v);
+  if (read == Read::NotANumber) r.fail(k, std::string(axis) + " must be a number (metres), found " + shown(w));
+  if (read == Read::OutOfRange || !(v > 0) || !(v <= world::kMaxSize))
+    r.fail(k, std::string(axis) + " " + shown(w) + " is out of range (a region's sides are positive, at most 100 m)");
   return v;
 }
 
@@ -194,9 +221,11 @@ std::string Change::to_string() const {
     case Kind::RemoveContainer: return "remove-container " + subject;
     case Kind::TakeFromGripper: return location.empty() ? "take-from-gripper" : "take-from-gripper " + location;
     case Kind::AddRegion: {
-      std::ostringstream o;
-      o << "add-region " << subject << " " << region.center[0] << " " << region.center[1] << " " << region.capacity;
-      return o.str();
+      std::string s = "add-region " + subject + " " + number(region.center[0]) + " " + number(region.center[1]) + " " +
+                      std::to_string(region.capacity);
+      if (region.size[0] != Region{}.size[0] || region.size[1] != Region{}.size[1])
+        s += " " + number(region.size[0]) + " " + number(region.size[1]);
+      return s;
     }
   }
   return "?";
@@ -230,13 +259,11 @@ Change parse_change(std::string_view text, const SourceLocation& where) {
   }
   if (!kind) r.fail(0, "unknown change " + shown(w[0].text) + world::suggestion(w[0].text, names));
   const std::size_t args = w.size() - 1;
-  if (args < kind->args_min || args > kind->args_max) {
-    const std::string n = kind->args_min == kind->args_max
-                              ? std::to_string(kind->args_min)
-                              : std::to_string(kind->args_min) + " or " + std::to_string(kind->args_max);
+  const bool odd_region = w[0].text == "add-region" && args == 5;  // a size needs both sides
+  if (args < kind->args_min || args > kind->args_max || odd_region) {
     r.fail(args > kind->args_max ? kind->args_max + 1 : w.size(),
-           quoted(kind->word) + " takes " + n + " argument" + (kind->args_max == 1 ? "" : "s") + ": " + kind->usage +
-               " (found " + std::to_string(args) + ")");
+           quoted(kind->word) + " takes " + kind->counts + " argument" + (kind->args_max == 1 ? "" : "s") + ": " +
+               kind->usage + " (found " + std::to_string(args) + ")");
   }
   auto s = [&](std::size_t k) { return std::string(w[k].text); };
   const std::string_view k = w[0].text;
@@ -248,7 +275,8 @@ Change parse_change(std::string_view text, const SourceLocation& where) {
   world::Region region;
   region.name = s(1);
   region.center = {coordinate(r, 2, "x"), coordinate(r, 3, "y"), 0};
-  if (args == 4) region.capacity = capacity(r, 4);
+  if (args >= 4) region.capacity = capacity(r, 4);
+  if (args == 6) region.size = {side(r, 5, "size x"), side(r, 6, "size y"), 0};
   return Change::add_region(region);
 }
 
@@ -338,7 +366,8 @@ void check_change(const Change& c, const world::Scenario& s, const SourceLocatio
           r.fail(2 + i, "the centre is out of range (coordinates are finite, within ±1000 m)");
       for (int i = 0; i < 2; ++i)
         if (!(g.size[i] > 0) || !(g.size[i] <= world::kMaxSize))
-          r.fail(1, "region " + shown(g.name) + ": its size must be positive (and at most 100 m) in x and y");
+          r.fail(r.words().size() > static_cast<std::size_t>(5 + i) ? static_cast<std::size_t>(5 + i) : 1,
+                 "region " + shown(g.name) + ": its size must be positive (and at most 100 m) in x and y");
       if (g.capacity < 1) r.fail(4, "capacity must be at least 1 (got " + std::to_string(g.capacity) + ")");
       for (const world::Region& other : s.regions)
         if (world::footprint(g).overlaps(world::footprint(other)))

@@ -130,7 +130,7 @@ struct Change {
   static Change parse(const std::string& text);
   // "move OBJ LOC", "add OBJ CLASS LOC", "remove OBJ", "add-container NAME
   // CLASS REGION [CAPACITY]", "remove-container NAME", "add-region NAME X Y
-  // [CAPACITY]" (world/change.hpp parses it; TakeFromGripper, which has no
+  // [CAPACITY [SX SY]]" (size SX x SY m, default 0.2 x 0.2; world/change.hpp parses it; TakeFromGripper, which has no
   // text form, prints as "take-from-gripper [LOC]").
   std::string to_string() const;
 };
