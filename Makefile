@@ -1,8 +1,8 @@
 # rtamp — the two commands of the README and a few more.
 #   make demo    install missing Debian packages, build, run the built-in scenario
 #   make test    install missing Debian packages, build, run every test (ctest -j2)
-#   make test-asan   build under ASan+UBSan into build-asan/ and run the fast tests
-#   make fuzz    build the libFuzzer targets with clang into build-fuzz/, run each for FUZZ_SECONDS
+#   make test-asan   build with clang under ASan+UBSan into build-asan/ and run the fast tests
+#   make fuzz    build the libFuzzer targets in that same tree (build-asan/), run each for FUZZ_SECONDS
 #   make bench   build and run the Google Benchmark suites
 BUILD ?= build
 JOBS ?= 2
@@ -31,19 +31,27 @@ demo: build
 test: build
 	ctest --test-dir $(BUILD) -j$(JOBS) --output-on-failure
 
+# One clang tree serves the sanitizer tests and the fuzzers: the libraries are built once
+# with ASan + UBSan and libFuzzer's coverage instrumentation (-fsanitize=fuzzer-no-link),
+# the tests and the CLI link them with ASan + UBSan, the fuzz targets with libFuzzer
+# (CI used to build the libraries three times: gcc Release, gcc ASan, clang fuzz).
+SAN_BUILD ?= build-asan
+SAN_CONFIGURE = CXX=clang++ CC=clang cmake -S . -B $(SAN_BUILD) -G Ninja -DCMAKE_BUILD_TYPE=Debug \
+  -DRTAMP_SANITIZE=ON -DRTAMP_FUZZ=ON -DRTAMP_BENCH=OFF $(CMAKE_FLAGS)
+
 test-asan: deps
-	cmake -S . -B build-asan -G Ninja -DCMAKE_BUILD_TYPE=Debug -DRTAMP_SANITIZE=ON -DRTAMP_BENCH=OFF $(CMAKE_FLAGS)
-	cmake --build build-asan -j$(JOBS)
+	$(SAN_CONFIGURE)
+	cmake --build $(SAN_BUILD) -j$(JOBS)
 	ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 \
-	  ctest --test-dir build-asan -j$(JOBS) --output-on-failure -LE slow
+	  ctest --test-dir $(SAN_BUILD) -j$(JOBS) --output-on-failure -LE slow
 
 fuzz: deps
-	CXX=clang++ cmake -S . -B build-fuzz -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DRTAMP_FUZZ=ON $(CMAKE_FLAGS)
-	cmake --build build-fuzz -j$(JOBS) --target fuzzers
-	scripts/run-fuzzers build-fuzz $(FUZZ_SECONDS)
+	$(SAN_CONFIGURE)
+	cmake --build $(SAN_BUILD) -j$(JOBS) --target fuzzers
+	scripts/run-fuzzers $(SAN_BUILD) $(FUZZ_SECONDS)
 
 bench: build
 	scripts/run-benchmarks $(BUILD)
 
 clean:
-	rm -rf $(BUILD) build-asan build-fuzz
+	rm -rf $(BUILD) $(SAN_BUILD) build-fuzz

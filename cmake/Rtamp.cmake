@@ -36,8 +36,14 @@ if(RTAMP_SANITIZE)
   target_link_options(rtamp_options INTERFACE -fsanitize=address,undefined)
 endif()
 if(RTAMP_FUZZ)
-  target_compile_options(rtamp_options INTERFACE -fsanitize=fuzzer-no-link,address,undefined -g)
-  target_link_options(rtamp_options INTERFACE -fsanitize=address,undefined)
+  # libFuzzer's coverage instrumentation on every object; only the fuzz targets link the
+  # fuzzer runtime (fuzz/CMakeLists.txt). With RTAMP_SANITIZE (make test-asan, make fuzz:
+  # one clang tree) the tests and the CLI link the same objects with ASan + UBSan only.
+  target_compile_options(rtamp_options INTERFACE -fsanitize=fuzzer-no-link)
+  if(NOT RTAMP_SANITIZE)
+    target_compile_options(rtamp_options INTERFACE -fsanitize=address,undefined -g)
+    target_link_options(rtamp_options INTERFACE -fsanitize=address,undefined)
+  endif()
 endif()
 
 include(GNUInstallDirs)

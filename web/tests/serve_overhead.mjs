@@ -9,12 +9,18 @@
 //     `rtamp run SCENARIO --quiet ARGS` (the baseline: the same node start-up around it).
 // Time the whole command (e.g. /usr/bin/time, or a pairing of the two): both pay node's
 // start-up, so the ratio is the server's and its client's share. Prints on stderr the
-// messages received by type and the child's exit code; exits with the child's code.
+// messages received by type, the episode's own wall time (`wall_seconds` of its metrics:
+// the loop's, from its start to its end; serve: from the end record the client received,
+// run: from --json) and the child's exit code; exits with the child's code.
+// serve --live: the episode starts at once (no --paused) and the client attaches while it
+// runs, so the episode's wall time holds no wait for the client.
 // Node's own WebSocket (--experimental-websocket, Node >= 20.10): no npm package needed.
 import { spawn } from 'node:child_process';
 import { createInterface } from 'node:readline';
 
-const [mode, bin, scenario, ...rest] = process.argv.slice(2);
+const [mode, bin, scenario, ...given] = process.argv.slice(2);
+const live = given.includes('--live');
+const rest = given.filter((a) => a !== '--live');
 if (!['serve', 'run'].includes(mode) || !bin || !scenario) {
   console.error('usage: serve_overhead.mjs serve|run RTAMP_BIN SCENARIO [ARGS...]');
   process.exit(2);
@@ -22,12 +28,13 @@ if (!['serve', 'run'].includes(mode) || !bin || !scenario) {
 
 const args =
   mode === 'serve'
-    ? ['serve', scenario, ...(rest.includes('--speed') ? [] : ['--speed', '0']), '--paused', '--exit-at-end',
-       '--port', '0', '--quiet', ...rest]
-    : ['run', scenario, '--quiet', ...rest];
+    ? ['serve', scenario, ...(rest.includes('--speed') ? [] : ['--speed', '0']), ...(live ? [] : ['--paused']),
+       '--exit-at-end', '--port', '0', '--quiet', ...rest]
+    : ['run', scenario, '--json', ...rest];
 const child = spawn(bin, args, { stdio: ['ignore', 'pipe', 'inherit'] });
 const counts = {};
-let socketDone = Promise.resolve();  // settles when the client's socket has closed
+let wallSeconds = null;  // the episode's metrics.wall_seconds
+let socketDone = Promise.resolve();  // settles when the client's socket (run: stdout) has closed
 
 if (mode === 'serve') {
   const lines = createInterface({ input: child.stdout });
@@ -48,19 +55,29 @@ if (mode === 'serve') {
     ws.onmessage = (ev) => {
       const msg = JSON.parse(ev.data);
       counts[msg.type] = (counts[msg.type] ?? 0) + 1;
-      if (msg.type === 'hello' && counts.hello === 1)
+      if (msg.type === 'log')
+        for (const r of msg.records) if (r.ev === 'end') wallSeconds = r.metrics.wall_seconds;
+      if (!live && msg.type === 'hello' && counts.hello === 1)
         ws.send(JSON.stringify({ type: 'control', id: 1, action: 'resume' }));
     };
     ws.onerror = () => {};
   });
   lines.on('line', () => {});
 } else {
-  child.stdout.resume();
+  let out = '';
+  child.stdout.on('data', (d) => (out += d));
+  socketDone = new Promise((resolve) =>
+    child.stdout.on('end', () => {
+      try {
+        wallSeconds = JSON.parse(out).wall_seconds;
+      } catch {}
+      resolve();
+    }));
 }
 
 // Every message the server sent before it exited is read before this process ends.
 child.on('exit', async (code, signal) => {
   await Promise.race([socketDone, new Promise((resolve) => setTimeout(resolve, 5000))]);
-  console.error(`serve_overhead: ${mode} exit ${code ?? signal}; messages ${JSON.stringify(counts)}`);
+  console.error(`serve_overhead: ${mode} exit ${code ?? signal}; episode wall_seconds ${wallSeconds}; messages ${JSON.stringify(counts)}`);
   process.exit(code ?? 1);
 });
