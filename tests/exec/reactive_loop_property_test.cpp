@@ -374,11 +374,7 @@ class ReactiveLoopProperty : public ::testing::TestWithParam<int> {};
 
 // 40 shards × 250 episodes = 10,000 random episodes (the Release suite); the
 // sanitizer build runs the first 25 of each shard (1,000), since it is ~10x slower.
-#if defined(__SANITIZE_ADDRESS__)
-constexpr int kEpisodesPerShard = 25;
-#else
-constexpr int kEpisodesPerShard = 250;
-#endif
+constexpr int kEpisodesPerShard = RTAMP_SANITIZER_BUILD ? 25 : 250;
 
 TEST_P(ReactiveLoopProperty, EveryEpisodeSucceedsCorrectlyOrEndsForAConfirmedReason) {
   const int shard = GetParam();

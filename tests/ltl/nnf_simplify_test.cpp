@@ -19,17 +19,7 @@ namespace {
 
 // The sanitizer builds run these property tests with fewer samples (ASan is
 // ~10x slower); the Release build runs them in full.
-#if defined(__SANITIZE_ADDRESS__)
-constexpr int kScale = 4;
-#elif defined(__has_feature)
-#if __has_feature(address_sanitizer)
-constexpr int kScale = 4;
-#else
-constexpr int kScale = 1;
-#endif
-#else
-constexpr int kScale = 1;
-#endif
+constexpr int kScale = RTAMP_SANITIZER_BUILD ? 4 : 1;
 
 std::string nnf_of(const std::string& s) { return to_string(nnf(parse(s))); }
 
