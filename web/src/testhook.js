@@ -47,6 +47,10 @@ export function installTestHook(app) {
     get drawTimes() {
       return scene.drawTimes;
     },
+    // The drawing-buffer scale of each of those draws (1: full resolution).
+    get drawScales() {
+      return scene.drawScales;
+    },
     // Where the scene is drawn: 'worker' (OffscreenCanvas), 'main' (the fallback, with
     // `renderWhy` saying why) or 'starting'.
     get renderer() {

@@ -55,6 +55,7 @@ export class SceneView {
     this.drawnSeq = -1;
     this.costs = [];
     this.drawTimes = [];
+    this.drawScales = []; // the drawing-buffer scale of each of those draws
     this.link = new RenderLink(this.canvas, renderUrl, {
       onStats: (m) => this.stats(m),
       freshCanvas: () => this.freshCanvas(),
@@ -69,8 +70,12 @@ export class SceneView {
       this.drawn = m.n;
       this.drawScale = m.scale;
       this.drawnSeq = m.seq;
-      if (this.drawTimes.length >= 20000) this.drawTimes.splice(0, 10000);
+      if (this.drawTimes.length >= 20000) {
+        this.drawTimes.splice(0, 10000);
+        this.drawScales.splice(0, 10000);
+      }
       this.drawTimes.push(m.at);
+      this.drawScales.push(m.scale);
     } else if (m.type === 'cost') {
       if (this.costs.length >= 20000) this.costs.splice(0, 10000);
       this.costs.push(m.ms);

@@ -21,7 +21,9 @@
 //    older page is timed by a wrapper around the main thread's requestAnimationFrame
 //    installed before the page loads; the same wrapper gives the main thread's
 //    animation-frame interval (median, p95, max: how long the page's main thread was
-//    busy between two chances to handle input and messages), for every page;
+//    busy between two chances to handle input and messages), for every page; the draw
+//    gaps over 80 ms and how many of them overlap a main-thread long task (PerformanceObserver
+//    'longtask') or a main-thread animation-frame gap over 80 ms;
 // 2. drag → intervention: DRAGS real mouse drags of a block onto a region, the page's
 //    times from the drop (pointerup) to the server's reply and to the `intervention`
 //    record arriving back (window.rtamp.latencies), and the server's own receipt →
@@ -58,6 +60,13 @@ async function session(rootArg, body) {
   await context.addInitScript(() => {
     const raf = window.requestAnimationFrame.bind(window);
     window.__rafs = []; // [start ms, drew]
+    // Main-thread tasks over 50 ms, [start epoch ms, duration ms] (where the browser reports them).
+    window.__longtasks = [];
+    try {
+      new PerformanceObserver((l) => {
+        for (const e of l.getEntries()) window.__longtasks.push([performance.timeOrigin + e.startTime, e.duration]);
+      }).observe({ type: 'longtask', buffered: true });
+    } catch {}
     window.requestAnimationFrame = (f) =>
       raf((ts) => {
         const at = performance.now(), n = window.rtamp ? window.rtamp.frames : 0;
@@ -99,15 +108,41 @@ async function measure(root) {
     const dt = (s1[2] - s0[2]) / 1000;
     // Gaps between draws and the fewest draws in any whole second of the window (a page
     // that reports window.rtamp.drawTimes: when each draw was made).
-    let drawGaps = null, worstSecond = null;
+    let drawGaps = null, worstSecond = null, longGaps = null;
     if (s0[5] != null) {
       const times = await page.evaluate(([a, b]) => window.rtamp.drawTimes.slice(a, b), [s0[5], s1[5]]);
+      const scales = await page.evaluate(([a, b]) => window.rtamp.drawScales?.slice(a, b) ?? [], [s0[5], s1[5]]);
       const g = times.slice(1).map((x, i) => x - times[i]);
       drawGaps = { n: g.length, median: round(quantile(g, 0.5)), p95: round(quantile(g, 0.95)), max: round(Math.max(...g)) };
       for (let i = 0, j = 0; i < times.length && times[i] + 1000 <= times[times.length - 1]; i++) {
         while (j < times.length && times[j] < times[i] + 1000) j++;
         worstSecond = Math.min(worstSecond ?? Infinity, j - i);
       }
+      // The draw gaps over 80 ms, and what the main thread did meanwhile: a long task
+      // overlapping the gap, or a main-thread animation-frame gap over 80 ms overlapping it.
+      const origin = await page.evaluate(() => performance.timeOrigin);
+      const tasks = await page.evaluate(() => window.__longtasks);
+      const mainGaps = [];
+      for (let i = 0; i + 1 < rafs.length; i++)
+        if (rafs[i + 1][0] - rafs[i][0] > 80) mainGaps.push([origin + rafs[i][0], origin + rafs[i + 1][0]]);
+      const overlaps = (a0, a1, b0, b1) => a0 < b1 && b0 < a1;
+      const gapsOver = [];
+      const scaleAround = [];  // [scale of the draw before the gap, after it]
+      for (let i = 0; i + 1 < times.length; i++)
+        if (times[i + 1] - times[i] > 80) {
+          gapsOver.push([times[i], times[i + 1]]);
+          scaleAround.push([scales[i] ?? null, scales[i + 1] ?? null]);
+        }
+      const inWindow = tasks.filter(([s, d]) => s + d > times[0] && s < times[times.length - 1]);
+      longGaps = {
+        n: gapsOver.length,
+        with_long_task: gapsOver.filter(([a, b]) => inWindow.some(([s, d]) => overlaps(a, b, s, s + d))).length,
+        with_main_frame_gap: gapsOver.filter(([a, b]) => mainGaps.some(([s, e]) => overlaps(a, b, s, e))).length,
+        draw_scales_around: scaleAround,
+        ms: gapsOver.map(([a, b]) => round(b - a)),
+        draws_at_scale: Object.fromEntries([...new Set(scales)].map((s) => [s, scales.filter((x) => x === s).length])),
+        long_tasks: { n: inWindow.length, total_ms: round(inWindow.reduce((x, [, d]) => x + d, 0)), max_ms: round(Math.max(0, ...inWindow.map(([, d]) => d))) },
+      };
     }
     Object.assign(out, {
       renderer: await page.evaluate(() => window.rtamp.renderer ?? 'main (page without a worker)'),
@@ -116,6 +151,7 @@ async function measure(root) {
       frames_received_per_s: round((s1[1] - s0[1]) / dt),
       draw_gap_ms: drawGaps,
       fewest_draws_in_a_second: worstSecond,
+      draw_gaps_over_80_ms: longGaps,
       draw_cost_ms: { n: costs.length, median: round(quantile(costs, 0.5)), p95: round(quantile(costs, 0.95)) },
       main_frame_interval_ms: { n: gaps.length, median: round(quantile(gaps, 0.5)), p95: round(quantile(gaps, 0.95)), max: round(Math.max(...gaps)) },
       draw_scale: await page.evaluate(() => window.rtamp.drawScale ?? 1),
