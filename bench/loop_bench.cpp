@@ -25,6 +25,7 @@
 #include <cstdlib>
 #include <vector>
 
+#include "rtamp/exec/person_world.hpp"
 #include "rtamp/exec/reactive_loop.hpp"
 #include "rtamp/exec/symbolic_world.hpp"
 #include "rtamp/world/scenario_io.hpp"
@@ -45,16 +46,17 @@ void BM_SymbolicEpisode(benchmark::State& state) {
   const world::Scenario scenario = world::load_scenario("3-block-tray");
   using K = world::Intervention::Kind;
   exec::SymbolicWorldOptions wo;
-  wo.script = scenario.interventions;
+  world::PersonOptions po;
+  po.script = scenario.interventions;
   if (state.range(0) < 2) {
-    wo.random_rate = 1;
-    wo.random_end = 20;
+    po.rate = 1;
+    po.end = 20;
   }
-  if (state.range(0) == 0) wo.random_kinds = {K::Relocate, K::Add, K::Remove};
+  if (state.range(0) == 0) po.kinds = {K::Relocate, K::Add, K::Remove};
   if (state.range(0) == 3) {
-    wo.random_rate = 1;
-    wo.random_end = 20;
-    wo.random_kinds = {K::Relocate};
+    po.rate = 1;
+    po.end = 20;
+    po.kinds = {K::Relocate};
   }
   exec::LoopOptions lo;
   lo.planning = exec::PlanningMode::Inline;
@@ -63,9 +65,11 @@ void BM_SymbolicEpisode(benchmark::State& state) {
   ReplanTimes times(&replans);
   std::uint64_t seed = 0, succeeded = 0, episodes = 0, replan_count = 0;
   for (auto _ : state) {
-    wo.seed = ++seed;
+    wo.seed = po.seed = ++seed;
     exec::SymbolicWorld world(scenario, wo);
-    exec::ReactiveLoop loop(world, scenario, lo);
+    world::Person person(scenario, po);
+    exec::PersonWorld acted(world, person);
+    exec::ReactiveLoop loop(acted, scenario, lo);
     loop.add_observer(times);
     const exec::EpisodeMetrics& m = loop.run();
     succeeded += m.success ? 1 : 0;

@@ -71,7 +71,7 @@ rtamp::cli::Registrar reg{
         sim::SessionOptions opt;
         opt.seed = a->seed;
         opt.scripted_operator = a->scripted;
-        opt.op.random_rate = a->random_rate;
+        opt.person.rate = a->random_rate;
         opt.perception.position_sigma = a->noise;
         opt.perception.miss_probability = a->miss;
         opt.video_path = a->video;

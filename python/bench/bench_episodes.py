@@ -17,7 +17,7 @@ from rtamp.toy import ToyWorld
 n = int(sys.argv[1]) if len(sys.argv) > 1 else 500
 person = "--person" in sys.argv
 scenario = rtamp.load_scenario("3-block-tray")
-script = [(iv.time, iv.subject, iv.location) for iv in scenario.interventions]
+script = list(scenario.interventions)
 rng = random.Random(1)
 ok = 0
 callbacks = 0
@@ -25,11 +25,12 @@ t0 = time.perf_counter()
 for i in range(n):
     s = list(script)
     if person:
-        s.append((rng.uniform(2, 20), rng.choice(["o1", "o2", "o3"]), "r1"))
-    world = ToyWorld(scenario, move_time=2.0, script=s)
+        s.append(rtamp.Intervention("relocate", rng.choice(["o1", "o2", "o3"]), "r1", time=rng.uniform(2, 20)))
+    toy = ToyWorld(scenario, move_time=2.0)
+    world = rtamp.PersonWorld(toy, rtamp.Person(scenario, script=s))
     m = rtamp.ReactiveLoop(world, scenario, planning="inline", seed=i).run()
     ok += m.success
-    callbacks += world.calls
+    callbacks += toy.calls
 dt = time.perf_counter() - t0
 print(f"{n} episodes in {dt:.3f} s: {n / dt:.0f} episodes/s, {ok} succeeded, "
       f"{callbacks / n:.0f} world callbacks per episode")

@@ -2,11 +2,13 @@
 
 It keeps an exact symbolic placement, runs each move as a fixed-duration
 discrete event (so the reactive loop jumps from event to event instead of
-ticking), and applies a scripted person: (time, thing, location) relocations.
+ticking), and can take a person's relocations (the intervention capability:
+true_placement() and apply()), so rtamp.Person drives it like any world.
 A real robot's World would read perception in observe() and drive the arm in
 start()/poll()/halt(); everything else stays the same.
 
-    world = rtamp.toy.ToyWorld(scenario, move_time=2.0, script=[(5.0, "o2", "r1")])
+    person = rtamp.Person(scenario, script=[rtamp.Intervention("relocate", "o2", "r1", time=5.0)])
+    world = rtamp.PersonWorld(rtamp.toy.ToyWorld(scenario, move_time=2.0), person)
     metrics = rtamp.ReactiveLoop(world, scenario, planning="inline").run()
 
 Invariants: at most one move runs; a thing is in exactly one place (a region,
@@ -22,11 +24,10 @@ import rtamp
 class ToyWorld(rtamp.World):
     """A discrete-event symbolic world in pure Python (see the module docstring)."""
 
-    def __init__(self, scenario, move_time=2.0, script=(), fails=None):
+    def __init__(self, scenario, move_time=2.0, fails=None):
         super().__init__(scenario)
         self.t = 0.0
         self.move_time = float(move_time)
-        self.script = sorted(script)      # [(time, thing, location)]
         self.fails = fails                # callable(move) -> bool, or None
         self.place = rtamp.initial_placement(scenario).locations()
         self.move = None                  # the running move
@@ -43,27 +44,17 @@ class ToyWorld(rtamp.World):
         return self.t
 
     def next_event_time(self):
-        """When the running move ends or the next scripted relocation happens (inf: never)."""
-        nxt = self.end
-        if self.script:
-            nxt = min(nxt, self.script[0][0])
-        return nxt
+        """When the running move ends (inf: nothing running)."""
+        return self.end
 
     def advance(self, dt):
-        """Moves time on by dt, finishing moves and applying the script on the way."""
+        """Moves time on by dt, finishing the running move on the way."""
         self.calls += 1
         target = self.t + dt
-        while True:
-            due = self.next_event_time()
-            if due > target + 1e-9:
-                break
-            self.t = max(self.t, due)
-            if self.move is not None and self.end <= self.t + 1e-9:
-                self._finish()
-            elif self.script and self.script[0][0] <= self.t + 1e-9:
-                _, thing, loc = self.script.pop(0)
-                self._relocate(thing, loc)
-        self.t = target
+        if self.move is not None and self.end <= target + 1e-9:
+            self.t = max(self.t, self.end)
+            self._finish()
+        self.t = max(self.t, target)
 
     def observe(self):
         """Where every thing is: {thing: location} ("hand" while held)."""
@@ -110,6 +101,19 @@ class ToyWorld(rtamp.World):
         out, self.events = self.events, []
         return out
 
+    # --- the intervention capability (rtamp.Person drives it through rtamp.PersonWorld)
+    def true_placement(self):
+        """Where every thing truly is."""
+        return self.place
+
+    def apply(self, intervention):
+        """Carries out a person's relocation now; other kinds are refused."""
+        if intervention.kind != "relocate" or not intervention.location:
+            ev = rtamp.WorldEvent(self.t, intervention, False, "the toy world only relocates to a named location")
+            self.events.append(ev)
+            return ev
+        return self._relocate(intervention.subject, intervention.location)
+
     # --- the toy's own model
     def _finish(self):
         m = self.move
@@ -126,11 +130,14 @@ class ToyWorld(rtamp.World):
     def _relocate(self, thing, loc):
         iv = rtamp.Intervention("relocate", thing, loc, time=self.t)
         if thing not in self.place:
-            self.events.append(rtamp.WorldEvent(self.t, iv, False, "no such thing"))
-            return
+            ev = rtamp.WorldEvent(self.t, iv, False, "no such thing")
+            self.events.append(ev)
+            return ev
         self.place = dict(self.place)
         if self.move is not None and self.move.thing == thing:
             self.move, self.end = None, math.inf
             self.status, self.why = rtamp.MoveStatus.FAILED, "thing taken"
         self.place[thing] = loc
-        self.events.append(rtamp.WorldEvent(self.t, iv, True, loc))
+        ev = rtamp.WorldEvent(self.t, iv, True, loc)
+        self.events.append(ev)
+        return ev

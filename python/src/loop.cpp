@@ -11,6 +11,7 @@
 
 #include "choices.hpp"
 #include "rtamp/bt/text_render.hpp"
+#include "rtamp/exec/intervenable.hpp"
 #include "rtamp/exec/reactive_loop.hpp"
 
 namespace rtamp::python {
@@ -27,10 +28,33 @@ MoveStatus as_status(const py::handle& h) {
 // The trampoline: exec::World's methods from a Python subclass. Required:
 // time, advance, observe, start, poll, halt. Optional: next_event_time
 // (default infinity: the loop ticks every tick_period), busy (False), hand
-// (''), distance_travelled (0), take_events ([]).
-class PyWorld : public exec::World {
+// (''), distance_travelled (0), take_events ([]); and the intervention
+// capability (exec/intervenable.hpp): a subclass that defines both
+// true_placement() and apply(intervention) can be driven by a Person.
+class PyWorld : public exec::World, public exec::Intervenable {
  public:
   ClassTable classes;
+
+  exec::Intervenable* intervenable() override {
+    py::gil_scoped_acquire gil;
+    const auto* self = static_cast<const exec::World*>(this);
+    return py::get_override(self, "true_placement") && py::get_override(self, "apply") ? this : nullptr;
+  }
+  world::Placement true_placement() override {
+    py::gil_scoped_acquire gil;
+    py::function f = py::get_override(static_cast<const exec::World*>(this), "true_placement");
+    if (!f) throw Error("a World that takes interventions must define true_placement()");
+    return to_placement(f(), classes);
+  }
+  exec::WorldEvent apply(const world::Intervention& iv) override {
+    py::gil_scoped_acquire gil;
+    py::function f = py::get_override(static_cast<const exec::World*>(this), "apply");
+    if (!f) throw Error("a World that takes interventions must define apply(intervention)");
+    py::object r = f(iv);
+    if (py::isinstance<exec::WorldEvent>(r)) return r.cast<exec::WorldEvent>();
+    if (py::isinstance<py::bool_>(r)) return exec::WorldEvent{time(), iv, r.cast<bool>(), ""};
+    throw Error("World.apply(intervention) must return a WorldEvent or a bool (applied)");
+  }
 
   double time() const override { PYBIND11_OVERRIDE_PURE(double, exec::World, time, ); }
   void advance(double dt) override { PYBIND11_OVERRIDE_PURE(void, exec::World, advance, dt); }
@@ -233,6 +257,9 @@ void bind_loop(py::module_& m) {
       "optional: next_event_time() (default inf: ticked every tick_period; a discrete-event world\n"
       "returns when it next changes), busy() (False), hand() ('' = home: where the last place ended),\n"
       "distance_travelled() (0), take_events() ([] of WorldEvent).\n"
+      "To let a simulated person act on it (rtamp.PersonWorld), define both true_placement() ->\n"
+      "{thing: location} (where things truly are) and apply(intervention) -> WorldEvent | bool\n"
+      "(carry it out now, or refuse it), and report the events from take_events().\n"
       "World(scenario) lets observe() give plain locations for the scenario's things (their class is\n"
       "taken from it). The loop calls these with the GIL taken, from the thread that runs it.")
       .def(py::init([](const std::optional<world::Scenario>& s) {
@@ -314,7 +341,7 @@ void bind_loop(py::module_& m) {
                      "CostModel), conditions ('action' | 'state'), reconfiguration ('online' | 'offline'),\n"
                      "planning ('worker': plans on a worker thread while the tree ticks, charged its wall\n"
                      "time; 'inline': synchronous, deterministic), max_time, tick_period,\n"
-                     "max_consecutive_failures, outside_grace, cycles, seed, world_name.")
+                     "max_failures_per_move, outside_grace, cycles, seed, world_name.")
       .def(py::init([](py::object world, const world::Scenario& s, const std::string& algorithm,
                        const py::object& cost, const std::string& conditions, const std::string& reconfiguration,
                        const std::string& planning, double max_time, double tick_period, int max_failures,
@@ -328,7 +355,7 @@ void bind_loop(py::module_& m) {
              o.planning = parse_choice(kPlanning, planning, "planning mode");
              o.max_time = max_time;
              o.tick_period = tick_period;
-             o.max_consecutive_failures = max_failures;
+             o.max_failures_per_move = max_failures;
              o.outside_grace = outside_grace;
              o.cycles = cycles;
              o.seed = seed;
@@ -338,7 +365,7 @@ void bind_loop(py::module_& m) {
            py::arg("world"), py::arg("scenario"), py::kw_only(), py::arg("algorithm") = "astar-exp",
            py::arg("cost") = "euclid", py::arg("conditions") = "action", py::arg("reconfiguration") = "online",
            py::arg("planning") = "worker", py::arg("max_time") = 900.0, py::arg("tick_period") = 0.02,
-           py::arg("max_consecutive_failures") = 5, py::arg("outside_grace") = 3.0, py::arg("cycles") = 0,
+           py::arg("max_failures_per_move") = 5, py::arg("outside_grace") = 3.0, py::arg("cycles") = 0,
            py::arg("seed") = 0, py::arg("world_name") = "python", py::arg("time_limit") = 60.0)
       .def("add_observer", &PyLoop::add_observer, py::arg("observer"), "Attaches an rtamp.Observer (kept alive by the loop).")
       .def("step", [](PyLoop& l) {

@@ -11,6 +11,7 @@
 #include "rtamp/plan/registry.hpp"
 #include "rtamp/episode/episode.hpp"
 #include "rtamp/episode/sim_world.hpp"
+#include "rtamp/exec/person_world.hpp"
 #include "rtamp/exec/symbolic_world.hpp"
 
 namespace rtamp::python {
@@ -19,23 +20,17 @@ void bind_worlds(py::module_& m) {
   py::class_<exec::SymbolicWorld, exec::World>(
       m, "SymbolicWorld",
       "A world with no physics (docs/symbolic-world.md): the exact placement, a discrete-event arm\n"
-      "(approach, grasp, carry, place, retreat), seeded failures and a seeded or scripted person.\n"
-      "Options: seed, failure_probability, script (Interventions; pass scenario.interventions for the\n"
-      "scenario's operator), random_rate / random_start / random_end (a Poisson process of random\n"
-      "interventions), fails (a callable Move -> bool: those moves fail at the end of phase\n"
-      "fails_in), speed and the phase durations.")
+      "(approach, grasp, carry, place, retreat), seeded failures, and the rules of applying a person's\n"
+      "interventions (apply(); a Person drives it through PersonWorld).\n"
+      "Options: seed, failure_probability, fails (a callable Move -> bool: those moves fail at the end\n"
+      "of phase fails_in), speed and the phase durations.")
       .def(py::init([](const world::Scenario& s, std::uint64_t seed, double failure_probability,
-                       std::vector<world::Intervention> script, double random_rate, double random_start,
-                       double random_end, std::optional<std::function<bool(const exec::Move&)>> fails,
+                       std::optional<std::function<bool(const exec::Move&)>> fails,
                        const std::string& fails_in, double speed, double approach_base, double grasp,
                        double carry_base, double place, double retreat, double return_base) {
              exec::SymbolicWorldOptions o;
              o.seed = seed;
              o.failure_probability = failure_probability;
-             o.script = std::move(script);
-             o.random_rate = random_rate;
-             o.random_start = random_start;
-             o.random_end = random_end;
              if (fails) o.fails = *fails;
              o.fails_in = parse_choice(kPhases, fails_in, "phase");
              o.speed = speed;
@@ -48,8 +43,6 @@ void bind_worlds(py::module_& m) {
              return std::make_unique<exec::SymbolicWorld>(s, std::move(o));
            }),
            py::arg("scenario"), py::kw_only(), py::arg("seed") = 1, py::arg("failure_probability") = 0.0,
-           py::arg("script") = std::vector<world::Intervention>{}, py::arg("random_rate") = 0.0,
-           py::arg("random_start") = 0.0, py::arg("random_end") = std::numeric_limits<double>::infinity(),
            py::arg("fails") = py::none(), py::arg("fails_in") = "grasp", py::arg("speed") = 0.25,
            py::arg("approach_base") = 0.5, py::arg("grasp") = 0.5, py::arg("carry_base") = 0.5,
            py::arg("place") = 0.5, py::arg("retreat") = 0.5, py::arg("return_base") = 0.5)
@@ -58,6 +51,7 @@ void bind_worlds(py::module_& m) {
                              "The arm's phase: 'idle', 'approach', 'grasp', 'carry', 'place', 'retreat', 'return'.")
       .def("apply", &exec::SymbolicWorld::apply, py::arg("intervention"),
            "Applies an intervention now, as a person would; returns the WorldEvent (applied or refused).")
+      .def("true_placement", &exec::SymbolicWorld::true_placement, "The exact placement (as truth).")
       .def_property_readonly("history", &exec::SymbolicWorld::history, "Every intervention so far (WorldEvents).")
       .def("capacity", &exec::SymbolicWorld::capacity, py::arg("location"), "-1 if there is no such location.")
       .def("refusal", &exec::SymbolicWorld::refusal, py::arg("thing"), py::arg("location"),
@@ -67,30 +61,72 @@ void bind_worlds(py::module_& m) {
   py::class_<episode::SimWorld, exec::World>(
       m, "MujocoWorld",
       "The simulated UR5 in MuJoCo as a World: moves are the pick and place skills, perception maps\n"
-      "body poses to regions, and the scripted or random operator acts between physics steps.\n"
-      "Options: seed, script (Interventions), random_rate. Use run_episode(..., video=...) to film.")
-      .def(py::init([](const world::Scenario& s, std::uint64_t seed, std::vector<world::Intervention> script,
-                       double random_rate) {
+      "body poses to regions, and a person's interventions are carried out between physics steps\n"
+      "(apply(); a Person drives it through PersonWorld). Options: seed. Use run_episode(...,\n"
+      "video=...) to film.")
+      .def(py::init([](const world::Scenario& s, std::uint64_t seed) {
              sim::SessionOptions so;
              so.seed = seed;
-             so.op.script = std::move(script);
-             so.op.random_rate = random_rate;
              py::gil_scoped_release release;
              return std::make_unique<episode::SimWorld>(s, so);
            }),
-           py::arg("scenario"), py::kw_only(), py::arg("seed") = 1,
-           py::arg("script") = std::vector<world::Intervention>{}, py::arg("random_rate") = 0.0)
+           py::arg("scenario"), py::kw_only(), py::arg("seed") = 1)
+      .def("apply", &episode::SimWorld::apply, py::arg("intervention"), py::call_guard<py::gil_scoped_release>(),
+           "Applies an intervention now, as a person would; returns the WorldEvent (applied or refused).")
+      .def("true_placement", &episode::SimWorld::true_placement, py::call_guard<py::gil_scoped_release>(),
+           "Where every present thing truly is (noise-free; a held thing in 'hand').")
       .def("snapshot", [](episode::SimWorld& w, const std::string& png) {
         py::gil_scoped_release release;
         w.session().snapshot(png);
       }, py::arg("png_path"), "Renders the scene now to a PNG file.");
+
+  py::class_<world::Person>(
+      m, "Person",
+      "The person who intervenes, for every world (world/person.hpp): a script of Interventions, random\n"
+      "interventions (rate per second in [start, end), kinds: names such as 'relocate', 'add'), one\n"
+      "random change of a kind at a uniform time in change_window, and post() from any thread. Random\n"
+      "draws are portable: a seed means the same interventions on every world. Drive a world with it\n"
+      "through PersonWorld(world, person).")
+      .def(py::init([](const world::Scenario& s, std::vector<world::Intervention> script, double rate, double start,
+                       double end, const std::optional<std::vector<std::string>>& kinds,
+                       const std::optional<std::string>& change, std::pair<double, double> change_window,
+                       std::uint64_t seed) {
+             world::PersonOptions o;
+             o.script = std::move(script);
+             o.rate = rate;
+             o.start = start;
+             o.end = end;
+             if (kinds) {
+               o.kinds.clear();
+               for (const auto& k : *kinds) o.kinds.push_back(parse_intervention_kind(k));
+             }
+             if (change)
+               o.change = world::RandomChange{parse_intervention_kind(*change), change_window.first, change_window.second};
+             o.seed = seed;
+             return std::make_unique<world::Person>(s, std::move(o));
+           }),
+           py::arg("scenario"), py::kw_only(), py::arg("script") = std::vector<world::Intervention>{},
+           py::arg("rate") = 0.0, py::arg("start") = 0.0, py::arg("end") = std::numeric_limits<double>::infinity(),
+           py::arg("kinds") = py::none(), py::arg("change") = py::none(),
+           py::arg("change_window") = std::pair<double, double>{2.0, 20.0}, py::arg("seed") = 1)
+      .def("next_time", &world::Person::next_time, "When the next intervention is due (inf: none).")
+      .def("post", &world::Person::post, py::arg("intervention"),
+           "Posts an intervention to be applied at once (thread-safe).");
+
+  py::class_<exec::PersonWorld, exec::World>(
+      m, "PersonWorld",
+      "A world with a Person acting on it: forwards everything to `world` (which must take\n"
+      "interventions: the built-in worlds do, a Python World that defines true_placement() and\n"
+      "apply()) and applies the person's interventions when they are due. Run the loop on it.")
+      .def(py::init([](exec::World& w, world::Person& p) { return std::make_unique<exec::PersonWorld>(w, p); }),
+           py::arg("world"), py::arg("person"), py::keep_alive<1, 2>(), py::keep_alive<1, 3>());
 
   m.def("run_episode",
         [](const world::Scenario& s, const std::string& world, const std::string& algorithm, const std::string& cost,
            const std::string& conditions, const std::string& reconfiguration, const std::string& planning,
            std::uint64_t seed, double max_time, double tick_period, int cycles, bool randomize_initial,
            bool scripted_operator, const std::optional<std::string>& random_change, double random_rate,
-           double failure_probability, int max_consecutive_failures, double outside_grace, const std::string& log,
+           double failure_probability, int max_failures_per_move, double outside_grace, const std::string& log,
            const std::string& trees, const std::string& video,
            std::optional<std::function<void(const std::string&)>> timeline) {
           episode::EpisodeOptions o;
@@ -109,7 +145,7 @@ void bind_worlds(py::module_& m) {
           if (random_change) o.random_change = parse_intervention_kind(*random_change);
           o.random_rate = random_rate;
           o.failure_probability = failure_probability;
-          o.max_consecutive_failures = max_consecutive_failures;
+          o.max_failures_per_move = max_failures_per_move;
           o.outside_grace = outside_grace;
           o.log_path = log;
           o.tree_dir = trees;
@@ -127,7 +163,7 @@ void bind_worlds(py::module_& m) {
         py::arg("planning") = "worker", py::arg("seed") = 1, py::arg("max_time") = 900.0,
         py::arg("tick_period") = 0.02, py::arg("cycles") = 0, py::arg("randomize_initial") = false,
         py::arg("scripted_operator") = true, py::arg("random_change") = py::none(), py::arg("random_rate") = 0.0,
-        py::arg("failure_probability") = 0.0, py::arg("max_consecutive_failures") = 5,
+        py::arg("failure_probability") = 0.0, py::arg("max_failures_per_move") = 5,
         py::arg("outside_grace") = 3.0, py::arg("log") = "", py::arg("trees") = "", py::arg("video") = "",
         py::arg("timeline") = py::none(),
         "One episode of the reactive loop, as `rtamp run` runs it: world 'mujoco' (the UR5) or\n"

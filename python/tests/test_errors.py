@@ -116,7 +116,7 @@ def test_planner_apply_refuses_what_plan_change_refuses():
 @pytest.mark.parametrize("option,value", [
     ("max_time", float("nan")), ("max_time", 0.0), ("max_time", -5.0),
     ("tick_period", 0.0), ("tick_period", float("nan")),
-    ("outside_grace", float("nan")), ("max_consecutive_failures", 0), ("cycles", -1),
+    ("outside_grace", float("nan")), ("max_failures_per_move", 0), ("cycles", -1),
 ])
 def test_run_episode_refuses_loop_options_out_of_range(option, value, tmp_path):
     s = rtamp.load_scenario("3-block")
@@ -131,7 +131,7 @@ def test_run_episode_checks_the_task_before_it_opens_the_log(tmp_path):
     log = tmp_path / "ep.jsonl"
     with pytest.raises(rtamp.Error, match="t.yaml:13:16: .*unknown class 'blocks'"):
         rtamp.run_episode(s, world="symbolic", log=str(log), random_rate=0.0)
-    with pytest.raises(rtamp.Error, match="random_rate"):
+    with pytest.raises(rtamp.Error, match="rate of random interventions"):
         rtamp.run_episode(rtamp.load_scenario("3-block"), world="symbolic", log=str(log), random_rate=-1.0)
     assert not log.exists()
 

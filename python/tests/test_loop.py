@@ -73,7 +73,9 @@ def test_python_world_runs_the_task_inline(tray):
 
 
 def test_python_world_with_a_scripted_person_replans(tray):
-    w = ToyWorld(tray, move_time=2.0, script=[(5.0, "o1", "r1"), (9.0, "o2", "r1")])
+    person = rtamp.Person(tray, script=[rtamp.Intervention("relocate", "o1", "r1", time=5.0),
+                                        rtamp.Intervention("relocate", "o2", "r1", time=9.0)])
+    w = rtamp.PersonWorld(ToyWorld(tray, move_time=2.0), person)
     rec = Recorder()
     loop = rtamp.ReactiveLoop(w, tray, planning="inline")
     loop.add_observer(rec)
@@ -91,7 +93,8 @@ def test_failures_are_fed_back(tray):
 
 def test_worker_planning_calls_the_python_cost_model_from_another_thread(tray):
     model = PyEuclid()
-    w = ToyWorld(tray, move_time=2.0, script=[(3.0, "o1", "r1")])
+    w = rtamp.PersonWorld(ToyWorld(tray, move_time=2.0),
+                          rtamp.Person(tray, script=[rtamp.Intervention("relocate", "o1", "r1", time=3.0)]))
     loop = rtamp.ReactiveLoop(w, tray, planning="worker", cost=model)
     m = loop.run()
     assert m.success

@@ -25,7 +25,8 @@ def test_symbolic_world_directly(tray):
 
 
 def test_symbolic_world_in_the_loop_with_failures(tray):
-    w = rtamp.SymbolicWorld(tray, seed=1, script=tray.interventions, fails=lambda m: m.thing == "o1" and m.to == "r3")
+    inner = rtamp.SymbolicWorld(tray, seed=1, fails=lambda m: m.thing == "o1" and m.to == "r3")
+    w = rtamp.PersonWorld(inner, rtamp.Person(tray, script=tray.interventions))
     m = rtamp.ReactiveLoop(w, tray, planning="inline", world_name="symbolic").run()
     assert m.success and m.interventions == 1
 

@@ -243,6 +243,8 @@ void yaml_cases(std::vector<Case>& t) {
   op("{time: 5, action: add, object: o1, to: r2}", "o1", "already exists");
   op("{time: 5, action: add_container, container: t2, to: r3}", "r3", "do not nest");
   op("{time: 5, action: relocate, object: o1, to: r2, position: [0.4, 0.32, 0]}", "[0.4", "not inside region 'r2'");
+  op("{time: 5, action: relocate, object: o1, position: [3, 0.32, 0]}", "[3", "position [3, 0.32, 0] is off the table");
+  op("{time: 5, action: add, object: o9, class: block, position: [0.4, 0.32, -3]}", "[0.4", "is below the table top");
   op("{time: 5, action: relocate, object: o1, to: r2, speed: 3}", "speed", "unknown key 'speed'");
 }
 

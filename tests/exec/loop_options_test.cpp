@@ -37,7 +37,7 @@ TEST(LoopOptions, OutOfRangeIsRefusedBeforeAnythingRuns) {
       {"tick_period", [](LoopOptions& o) { o.tick_period = kInf; }, "inf"},
       {"outside_grace", [](LoopOptions& o) { o.outside_grace = -1; }, "-1"},
       {"outside_grace", [](LoopOptions& o) { o.outside_grace = kNaN; }, "nan"},
-      {"max_consecutive_failures", [](LoopOptions& o) { o.max_consecutive_failures = 0; }, "0"},
+      {"max_failures_per_move", [](LoopOptions& o) { o.max_failures_per_move = 0; }, "0"},
       {"cycles", [](LoopOptions& o) { o.cycles = -1; }, "-1"},
   };
   for (const Bad& b : bad) {

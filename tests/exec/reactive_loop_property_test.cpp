@@ -14,17 +14,22 @@
 //    along the run, finds no accepting lasso; "gave up" only when moves were
 //    made to fail; "lost" only when the world really holds a thing outside
 //    every location.
-// Never an exception, never the time limit for a task that can finish.
+// Never an exception, never the time limit for a task that can finish; the
+// arm never idles with work to do, capacities hold in every state the world
+// shows, and every tree form counts the same moves.
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cstdlib>
 #include <iostream>
+#include <map>
+#include <optional>
 #include <random>
 #include <set>
 #include <sstream>
 
 #include "../plan/oracle.hpp"
+#include "rtamp/exec/person_world.hpp"
 #include "rtamp/exec/reactive_loop.hpp"
 #include "rtamp/exec/symbolic_world.hpp"
 #include "rtamp/exec/timeline.hpp"
@@ -41,6 +46,7 @@ struct Case {
   world::Scenario scenario;
   bool recurring = false;
   SymbolicWorldOptions world;
+  world::PersonOptions person;
   LoopOptions loop;
   std::string describe;
 };
@@ -105,8 +111,9 @@ Case random_case(std::uint64_t seed) {
     if (rng() % 3 == 0) k.scenario.regions[r].capacity = 1 + static_cast<int>(rng() % static_cast<unsigned>(N + 1));
   k.world.seed = seed;
   const double rate = std::vector<double>{0, 0.05, 0.2, 1.0}[rng() % 4];
-  k.world.random_rate = rate;
-  k.world.random_end = rate > 0 ? std::min(40.0, 8 / rate) : 0;  // about 8 interventions at most: worlds stay small
+  k.person.seed = seed;
+  k.person.rate = rate;
+  k.person.end = rate > 0 ? std::min(40.0, 8 / rate) : 0;  // about 8 interventions at most: worlds stay small
   k.world.failure_probability = rng() % 4 == 0 ? 0.15 : 0;
   k.loop.planning = PlanningMode::Inline;
   k.loop.planner.limits.time_limit = 2;  // a search that runs out is a reason nobody can confirm (counted below)
@@ -251,6 +258,54 @@ Continuation some_continuation_accepts(const world::Scenario& s, const world::Pl
   return Continuation::None;
 }
 
+// When and whether a robot could: every tick is checked against the world.
+//  - Liveness: between two ticks at which the arm is free (no move running,
+//    the world not busy putting a thing back) at most one tick period passes,
+//    unless the loop is waiting for a thing outside every location.
+//  - Capacities: no region or container holds more than its capacity (a
+//    container counts 1 in its region) in any state the world shows, with the
+//    capacities read from the scenario, not from the world.
+struct Watch final : EpisodeObserver {
+  const SymbolicWorld& w;
+  const world::Scenario& s;
+  double tick = 0.02;
+  std::optional<double> free_since;  // time of the last tick at which the arm was free
+  std::vector<std::string> problems;
+  Watch(const SymbolicWorld& world, const world::Scenario& scenario, double tick_period)
+      : w(world), s(scenario), tick(tick_period) {}
+
+  bool someone_outside() const {
+    for (const auto& [n, t] : w.truth().things)
+      if (t.location == "none") return true;
+    return false;
+  }
+  int capacity(const std::string& loc) const {
+    if (const auto* r = s.find_region(loc)) return r->capacity;
+    const auto* t = w.truth().location_of(loc);
+    if (!t) return -1;
+    const std::string& cls = w.truth().things.at(loc).cls;
+    for (const auto& c : s.containers)
+      if (c.cls == cls) return c.capacity;
+    return SymbolicWorldOptions{}.added_container_capacity;
+  }
+  void on_tick(double t, bt::Status, const std::string& running) override {
+    if (problems.size() > 3) return;
+    const bool free = running.empty() && w.phase() == Phase::Idle;
+    if (free && free_since && t - *free_since > tick + 1e-9 && !someone_outside())
+      problems.push_back("the arm was free from t = " + std::to_string(*free_since) + " to " + std::to_string(t) +
+                         " with nothing to wait for");
+    free_since = free ? std::optional<double>(t) : std::nullopt;
+    std::map<std::string, int> count;
+    for (const auto& [n, th] : w.truth().things) ++count[th.location];
+    for (const auto& [loc, n] : count) {
+      if (loc == "none" || loc == kInHand) continue;
+      if (const int cap = capacity(loc); cap >= 0 && n > cap)
+        problems.push_back(loc + " holds " + std::to_string(n) + " things at t = " + std::to_string(t) +
+                           ", capacity " + std::to_string(cap));
+    }
+  }
+};
+
 // Episodes whose failure reason was too big for the brute force to confirm.
 int g_unconfirmed = 0;
 
@@ -266,7 +321,9 @@ void check_episode(std::uint64_t seed, bool verbose = false) {
   Case k = random_case(seed);
   SCOPED_TRACE(k.describe);
   SymbolicWorld w(k.scenario, k.world);
-  ReactiveLoop loop(w, k.scenario, k.loop);
+  world::Person person(k.scenario, k.person);
+  PersonWorld acted(w, person);
+  ReactiveLoop loop(acted, k.scenario, k.loop);
   Timeline timeline([](const std::string& line) { std::cout << line << '\n'; });
   if (verbose) {
     std::cout << k.describe << '\n';
@@ -274,7 +331,10 @@ void check_episode(std::uint64_t seed, bool verbose = false) {
   }
   CutPlans cut;
   loop.add_observer(cut);
+  Watch watch(w, k.scenario, k.loop.tick_period);
+  loop.add_observer(watch);
   const EpisodeMetrics& m = loop.run();
+  for (const auto& p : watch.problems) ADD_FAILURE() << p;
   if (verbose) std::cout << "plans cut by the search's time limit: " << cut.count << '\n';
   ASSERT_TRUE(w.check_invariants().empty()) << w.check_invariants();
   ASSERT_NE(m.end, EndReason::Error) << m.reason;
@@ -370,6 +430,31 @@ TEST(ReactiveLoopPropertyOne, SeedFromTheEnvironment) {
   check_episode(std::strtoull(seed, nullptr, 10), true);
 }
 
+// Every tree form counts the same completed moves: with no person and no
+// failures, the four forms (state or action conditions, online or offline
+// changes) end the same way after the same number of moves.
+void check_tree_forms(std::uint64_t seed) {
+  Case k = random_case(seed);
+  k.person.rate = 0;
+  k.world.failure_probability = 0;
+  SCOPED_TRACE(k.describe);
+  std::vector<std::pair<EndReason, int>> ends;
+  for (ConditionMode c : {ConditionMode::Action, ConditionMode::State})
+    for (Reconfiguration r : {Reconfiguration::Online, Reconfiguration::Offline}) {
+      SymbolicWorld w(k.scenario, k.world);
+      LoopOptions o = k.loop;
+      o.conditions = c;
+      o.reconfiguration = r;
+      ReactiveLoop loop(w, k.scenario, o);
+      const EpisodeMetrics& m = loop.run();
+      ends.emplace_back(m.end, m.actions_succeeded);
+    }
+  for (const auto& e : ends) {
+    EXPECT_EQ(e.first, ends.front().first);
+    EXPECT_EQ(e.second, ends.front().second);
+  }
+}
+
 class ReactiveLoopProperty : public ::testing::TestWithParam<int> {};
 
 // 40 shards × 250 episodes = 10,000 random episodes (the Release suite); the
@@ -380,8 +465,10 @@ TEST_P(ReactiveLoopProperty, EveryEpisodeSucceedsCorrectlyOrEndsForAConfirmedRea
   const int shard = GetParam();
   g_unconfirmed = 0;
   for (int i = 0; i < kEpisodesPerShard; ++i) {
-    check_episode(static_cast<std::uint64_t>(shard) * 250 + static_cast<std::uint64_t>(i) + 1);
+    const std::uint64_t seed = static_cast<std::uint64_t>(shard) * 250 + static_cast<std::uint64_t>(i) + 1;
+    check_episode(seed);
     if (::testing::Test::HasFatalFailure()) return;
+    if (i % 10 == 0) check_tree_forms(seed);
   }
   // A failure nobody could decide — the planner's search ran out of time, or the
   // brute force's product was too big — is rare (at most 2 % of the episodes).

@@ -9,8 +9,13 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
+#include <limits>
+#include <utility>
 
+#include "rtamp/exec/person_world.hpp"
 #include "rtamp/exec/symbolic_world.hpp"
+#include "rtamp/util/error.hpp"
 #include "rtamp/world/scenario_io.hpp"
 
 namespace rtamp::exec {
@@ -49,20 +54,44 @@ LoopOptions inline_options() {
   return o;
 }
 
+// An episode on the symbolic world with a person's script (world/person.hpp
+// through exec::PersonWorld), the loop on top.
+struct Scripted {
+  SymbolicWorld w;
+  world::Person person;
+  PersonWorld acted;
+  ReactiveLoop loop;
+  Scripted(const world::Scenario& s, std::vector<world::Intervention> script, LoopOptions o = inline_options())
+      : w(s), person(s, person_with(std::move(script))), acted(w, person), loop(acted, s, std::move(o)) {}
+  static world::PersonOptions person_with(std::vector<world::Intervention> script) {
+    world::PersonOptions po;
+    po.script = std::move(script);
+    return po;
+  }
+};
+
 struct Moves : EpisodeObserver {
   std::vector<std::string> finished, started, plans;
-  std::vector<double> finished_at;
+  std::vector<double> finished_at, started_at;
   void on_action(double t, const char* what, const std::string& action, const std::string&) override {
     if (std::string(what) == "finished") {
       finished.push_back(action);
       finished_at.push_back(t);
     }
-    if (std::string(what) == "start") started.push_back(action);
+    if (std::string(what) == "start") {
+      started.push_back(action);
+      started_at.push_back(t);
+    }
   }
   void on_plan(double, const PlanEvent& e) override {
     std::string s;
     for (const auto& t : e.tuples) s += t.action + " ";
     plans.push_back(s);
+  }
+  std::size_t started_after(const std::string& a, double t) const {
+    std::size_t n = 0;
+    for (std::size_t i = 0; i < started.size(); ++i) n += started[i] == a && started_at[i] > t;
+    return n;
   }
   std::size_t count(const std::string& a) const { return static_cast<std::size_t>(std::count(finished.begin(), finished.end(), a)); }
 };
@@ -108,10 +137,8 @@ TEST(ReactiveLoop, FinishedWorkIsNotRedoneAfterAnIntervention) {
   ASSERT_NE(visit, pm.finished.end());
   const double visited = pm.finished_at[static_cast<std::size_t>(visit - pm.finished.begin())];
   // A person puts o1 back into r1 a second after it has been in r3.
-  SymbolicWorldOptions wo;
-  wo.script = {intervention(world::Intervention::Kind::Relocate, visited + 1.0, "o1", "r1")};
-  SymbolicWorld w(s, wo);
-  ReactiveLoop loop(w, s, inline_options());
+  Scripted e(s, {intervention(world::Intervention::Kind::Relocate, visited + 1.0, "o1", "r1")});
+  ReactiveLoop& loop = e.loop;
   Moves moves;
   loop.add_observer(moves);
   const EpisodeMetrics& m = loop.run();
@@ -122,10 +149,8 @@ TEST(ReactiveLoop, FinishedWorkIsNotRedoneAfterAnIntervention) {
 // The history makes the task unsatisfiable: it ends at once, with the reason.
 TEST(ReactiveLoop, HistoryThatViolatesTheTaskEndsAtOnce) {
   const world::Scenario s = scene("F G all_in_r2 & G !o1_in_r3");
-  SymbolicWorldOptions wo;
-  wo.script = {intervention(world::Intervention::Kind::Relocate, 1.0, "o1", "r3")};
-  SymbolicWorld w(s, wo);
-  ReactiveLoop loop(w, s, inline_options());
+  Scripted e(s, {intervention(world::Intervention::Kind::Relocate, 1.0, "o1", "r3")});
+  ReactiveLoop& loop = e.loop;
   const EpisodeMetrics& m = loop.run();
   EXPECT_FALSE(m.success);
   EXPECT_EQ(m.end, EndReason::Unsatisfiable) << m.reason;
@@ -170,10 +195,9 @@ TEST(ReactiveLoop, TrayRemovedMidCarrySurvives) {
   ASSERT_TRUE(first.run().success);
   ASSERT_NE(pm.finished.front().find("t1"), std::string::npos) << "the plan does not use the tray";
   for (double t = 0.2; t < 6; t += 0.3) {
-    SymbolicWorldOptions wo;
-    wo.script = {intervention(world::Intervention::Kind::RemoveContainer, t, "t1")};
-    SymbolicWorld w(s, wo);
-    ReactiveLoop loop(w, s, inline_options());
+    Scripted e(s, {intervention(world::Intervention::Kind::RemoveContainer, t, "t1")});
+    SymbolicWorld& w = e.w;
+    ReactiveLoop& loop = e.loop;
     const EpisodeMetrics& m = loop.run();
     EXPECT_TRUE(m.success) << "t = " << t << ": " << m.reason;
     EXPECT_TRUE(w.check_invariants().empty());
@@ -184,10 +208,9 @@ TEST(ReactiveLoop, TrayRemovedMidCarrySurvives) {
 TEST(ReactiveLoop, BlockTakenFromTheGripperIsPlannedFromWhereItWasPut) {
   const world::Scenario s = scene("F G all_in_r2", 2);
   for (double t = 0.6; t < 4; t += 0.2) {
-    SymbolicWorldOptions wo;
-    wo.script = {intervention(world::Intervention::Kind::TakeFromGripper, t, "", "r3")};
-    SymbolicWorld w(s, wo);
-    ReactiveLoop loop(w, s, inline_options());
+    Scripted e(s, {intervention(world::Intervention::Kind::TakeFromGripper, t, "", "r3")});
+    SymbolicWorld& w = e.w;
+    ReactiveLoop& loop = e.loop;
     const EpisodeMetrics& m = loop.run();
     EXPECT_TRUE(m.success) << "t = " << t << ": " << m.reason;
     EXPECT_EQ(w.truth().things.at("o1").location, "r2");
@@ -218,12 +241,10 @@ TEST(ReactiveLoop, StopEndsTheEpisodeWithCompleteMetrics) {
 // episode does not wait for it (it used to wait until the time limit).
 TEST(ReactiveLoop, AThingOutsideThatIsRemovedIsForgotten) {
   const world::Scenario s = scene("F G all_in_r2", 3);
-  SymbolicWorldOptions wo;
   world::Intervention out = intervention(world::Intervention::Kind::Relocate, 1.0, "o3");
-  out.position = world::Vec3{1.5, 1.5, 0};  // on the table, outside every region
-  wo.script = {out, intervention(world::Intervention::Kind::Remove, 2.0, "o3")};
-  SymbolicWorld w(s, wo);
-  ReactiveLoop loop(w, s, inline_options());
+  out.position = world::Vec3{0.85, 0.55, 0};  // on the table, outside every region
+  Scripted e(s, {out, intervention(world::Intervention::Kind::Remove, 2.0, "o3")});
+  ReactiveLoop& loop = e.loop;
   const EpisodeMetrics& m = loop.run();
   EXPECT_TRUE(m.success) << m.reason;
   EXPECT_EQ(m.interventions_applied, 2);
@@ -232,11 +253,9 @@ TEST(ReactiveLoop, AThingOutsideThatIsRemovedIsForgotten) {
 
 TEST(ReactiveLoop, RefusedInterventionsAreCountedAsRefused) {
   const world::Scenario s = scene("F G all_in_r2", 2);
-  SymbolicWorldOptions wo;
-  wo.script = {intervention(world::Intervention::Kind::Relocate, 1.0, "nothing", "r1"),
-               intervention(world::Intervention::Kind::Relocate, 2.0, "o2", "r3")};
-  SymbolicWorld w(s, wo);
-  ReactiveLoop loop(w, s, inline_options());
+  Scripted e(s, {intervention(world::Intervention::Kind::Relocate, 1.0, "nothing", "r1"),
+               intervention(world::Intervention::Kind::Relocate, 2.0, "o2", "r3")});
+  ReactiveLoop& loop = e.loop;
   const EpisodeMetrics& m = loop.run();
   EXPECT_TRUE(m.success) << m.reason;
   EXPECT_EQ(m.interventions, 2);
@@ -261,6 +280,305 @@ TEST(ReactiveLoop, AMoveThatFailedIsNotRepeatedWhileTheWorldIsUnchanged) {
   EXPECT_EQ(m.actions_failed, 1);
 }
 
+// ---- liveness: the robot never idles with work to do ----
+
+// A world that forwards to another and lets a test spoil its answers.
+class Forward : public World {
+ public:
+  explicit Forward(World& w) : w_(w) {}
+  double time() const override { return w_.time(); }
+  void advance(double dt) override { w_.advance(dt); }
+  double next_event_time() const override { return w_.next_event_time(); }
+  world::Placement observe() override { return w_.observe(); }
+  void start(const Move& m) override { w_.start(m); }
+  MoveStatus poll(std::string* why) override { return w_.poll(why); }
+  void halt() override { w_.halt(); }
+  bool busy() override { return w_.busy(); }
+  std::string hand() const override { return w_.hand(); }
+  std::vector<WorldEvent> take_events() override { return w_.take_events(); }
+
+ protected:
+  World& w_;
+};
+
+struct Starts : EpisodeObserver {
+  std::vector<double> at;
+  void on_action(double t, const char* what, const std::string&, const std::string&) override {
+    if (std::string(what) == "start") at.push_back(t);
+  }
+};
+
+// A discrete-event world with a person scheduled late: the first move starts
+// at t = 0 (it used to wait for the person), and an unrelated late
+// intervention changes no completion time.
+TEST(ReactiveLoop, TheFirstMoveStartsAtOnceAndALatePersonChangesNothing) {
+  const world::Scenario s = scene("F G all_in_r2", 2);
+  auto episode = [&](std::vector<world::Intervention> script, std::vector<double>* starts) {
+    Scripted e(s, std::move(script));
+    ReactiveLoop& loop = e.loop;
+    Starts st;
+    loop.add_observer(st);
+    EpisodeMetrics m = loop.run();
+    if (starts) *starts = st.at;
+    return m;
+  };
+  std::vector<double> starts;
+  const EpisodeMetrics alone = episode({}, &starts);
+  ASSERT_TRUE(alone.success) << alone.reason;
+  ASSERT_FALSE(starts.empty());
+  EXPECT_EQ(starts.front(), 0.0);
+  // A person adds a tray to r3 long after the task is done, or during it.
+  for (double t : {100.0, 0.7, 3.1}) {
+    std::vector<double> with_starts;
+    const EpisodeMetrics m =
+        episode({intervention(world::Intervention::Kind::AddContainer, t, "t9", "r3", "tray")}, &with_starts);
+    ASSERT_TRUE(m.success) << m.reason;
+    EXPECT_EQ(with_starts.front(), 0.0) << "person at t = " << t;
+    EXPECT_EQ(*m.completion_time, *alone.completion_time) << "person at t = " << t;
+  }
+}
+
+// A task already true at the start is done at t = 0, before a person acts.
+TEST(ReactiveLoop, ATaskTrueAtTheStartIsDoneAtOnce) {
+  const world::Scenario s = scene("F G all_in_r1", 2);
+  Scripted e(s, {intervention(world::Intervention::Kind::Relocate, 10, "o1", "r2")});
+  ReactiveLoop& loop = e.loop;
+  const EpisodeMetrics& m = loop.run();
+  EXPECT_TRUE(m.success) << m.reason;
+  EXPECT_EQ(*m.completion_time, 0.0);
+  EXPECT_EQ(m.actions_succeeded, 0);
+  EXPECT_EQ(m.interventions, 0);
+}
+
+// In worker mode the plan is charged its planning time; the first move starts
+// as soon as the plan is in, not at the person's time.
+TEST(ReactiveLoop, WorkerPlanningStartsAsSoonAsThePlanIsIn) {
+  const world::Scenario s = scene("F G all_in_r2", 2);
+  LoopOptions o = inline_options();
+  o.planning = PlanningMode::Worker;
+  Scripted e(s, {intervention(world::Intervention::Kind::AddContainer, 20, "t9", "r3", "tray")}, o);
+  ReactiveLoop& loop = e.loop;
+  Starts st;
+  loop.add_observer(st);
+  const EpisodeMetrics& m = loop.run();
+  ASSERT_TRUE(m.success) << m.reason;
+  ASSERT_FALSE(st.at.empty());
+  EXPECT_LE(st.at.front(), m.first_plan_seconds + 1e-9);
+}
+
+// ---- failures ----
+
+// A patrol lap whose move always fails: the same move from the same state is
+// tried max_failures_per_move times, whatever succeeds in between, then the
+// episode gives up naming the move and the rule.
+TEST(ReactiveLoop, APatrolWithAMoveThatAlwaysFailsGivesUpNamingIt) {
+  const world::Scenario s = scene("G F o1_in_r2 & G F o1_in_r3", 1);
+  SymbolicWorldOptions wo;
+  wo.fails = [](const Move& m) { return m.to == "r3"; };
+  SymbolicWorld w(s, wo);
+  LoopOptions o = inline_options();
+  o.max_time = 3000;
+  ReactiveLoop loop(w, s, o);
+  Moves moves;
+  loop.add_observer(moves);
+  const EpisodeMetrics& m = loop.run();
+  EXPECT_EQ(m.end, EndReason::GaveUp) << m.reason;
+  EXPECT_NE(m.reason.find("move(o1, r3) failed 5 times from the same state"), std::string::npos) << m.reason;
+  EXPECT_NE(m.reason.find("max_failures_per_move = 5"), std::string::npos) << m.reason;
+  EXPECT_EQ(m.actions_failed, 5);
+}
+
+// Every tree form (state or action conditions, online or offline changes)
+// counts and reports the same completed moves.
+TEST(ReactiveLoop, EveryTreeFormCountsTheSameMoves) {
+  const world::Scenario s = scene("F (red_in_r3 & F G all_in_r2)", 3, true);
+  std::vector<int> counts;
+  for (ConditionMode c : {ConditionMode::Action, ConditionMode::State})
+    for (Reconfiguration r : {Reconfiguration::Online, Reconfiguration::Offline}) {
+      SymbolicWorld w(s);
+      LoopOptions o = inline_options();
+      o.conditions = c;
+      o.reconfiguration = r;
+      ReactiveLoop loop(w, s, o);
+      Moves moves;
+      loop.add_observer(moves);
+      const EpisodeMetrics& m = loop.run();
+      SCOPED_TRACE(std::string(to_string(c)) + (r == Reconfiguration::Online ? " online" : " offline"));
+      ASSERT_TRUE(m.success) << m.reason;
+      EXPECT_EQ(static_cast<std::size_t>(m.actions_succeeded), moves.finished.size());
+      EXPECT_EQ(m.actions_failed, 0);
+      counts.push_back(m.actions_succeeded);
+    }
+  EXPECT_GT(counts.front(), 0);
+  for (int c : counts) EXPECT_EQ(c, counts.front());
+}
+
+// A block dropped on the bare table: no move of it starts, the loop waits the
+// grace, then ends `lost`; the end's placement has the block outside.
+TEST(ReactiveLoop, ABlockDroppedOffTheRegionsIsLostAfterTheGrace) {
+  const world::Scenario s = scene("F G all_in_r2", 2);
+  world::Intervention drop = intervention(world::Intervention::Kind::Relocate, 0.2, "o2");
+  drop.position = world::Vec3{0.85, 0.0, 0};  // on the table, in no region
+  Scripted e(s, {drop});
+  ReactiveLoop& loop = e.loop;
+  struct End : EpisodeObserver {
+    world::Placement placement;
+    void on_end(double, const EpisodeMetrics&, const world::Placement& p) override { placement = p; }
+  } end;
+  Moves moves;
+  loop.add_observer(end);
+  loop.add_observer(moves);
+  const EpisodeMetrics& m = loop.run();
+  EXPECT_EQ(m.end, EndReason::Lost) << m.reason;
+  EXPECT_NEAR(m.world_time, 0.2 + 3.0, 0.05);
+  EXPECT_EQ(moves.started_after("move(o2, r2)", 0.2), 0u);
+  EXPECT_EQ(end.placement.things.at("o2").location, "none");
+}
+
+// ---- a world's answers are checked ----
+
+TEST(ReactiveLoop, AWorldWhoseTimeIsNotANumberOrGoesBackIsAnError) {
+  const world::Scenario s = scene("F G all_in_r2", 2);
+  struct Spoilt : Forward {
+    using Forward::Forward;
+    double bad = 0;  // NaN, or how far time jumps back once past 1 s
+    double time() const override { return w_.time() > 1.0 ? (std::isnan(bad) ? bad : w_.time() - bad) : w_.time(); }
+  };
+  for (double bad : {std::nan(""), 100.0}) {
+    SymbolicWorld inner(s);
+    Spoilt w(inner);
+    w.bad = bad;
+    ReactiveLoop loop(w, s, inline_options());
+    const EpisodeMetrics& m = loop.run();
+    EXPECT_EQ(m.end, EndReason::Error) << m.reason;
+    EXPECT_NE(m.reason.find(std::isnan(bad) ? "time() returned nan" : "time() went back"), std::string::npos)
+        << m.reason;
+  }
+}
+
+TEST(ReactiveLoop, AWorldThatNamesAnUnknownLocationIsAnError) {
+  const world::Scenario s = scene("F G all_in_r2", 2);
+  struct Spoilt : Forward {
+    using Forward::Forward;
+    world::Placement observe() override {
+      world::Placement p = w_.observe();
+      if (w_.time() > 1.0) p.things.at("o1").location = "r9";
+      return p;
+    }
+  };
+  SymbolicWorld inner(s);
+  Spoilt w(inner);
+  ReactiveLoop loop(w, s, inline_options());
+  const EpisodeMetrics& m = loop.run();
+  EXPECT_EQ(m.end, EndReason::Error) << m.reason;
+  EXPECT_NE(m.reason.find("observe() puts 'o1' in 'r9'"), std::string::npos) << m.reason;
+}
+
+// An end caused by a person's intervention names it.
+TEST(ReactiveLoop, AnEndCausedByAnInterventionNamesIt) {
+  const world::Scenario s = scene("F G all_in_r2 & G !o1_in_r3");
+  Scripted e(s, {intervention(world::Intervention::Kind::Relocate, 1.0, "o1", "r3")});
+  ReactiveLoop& loop = e.loop;
+  const EpisodeMetrics& m = loop.run();
+  EXPECT_EQ(m.end, EndReason::Unsatisfiable) << m.reason;
+  EXPECT_NE(m.reason.find("after the intervention at t = 1"), std::string::npos) << m.reason;
+  EXPECT_NE(m.reason.find("move o1 r3"), std::string::npos) << m.reason;
+}
+
+// ---- a user's own world with the intervention capability ----
+
+// A world of the user's, written from the World contract alone: moves take
+// 2 s, a person may relocate things (the capability). The one Person drives
+// it as it drives the built-in worlds.
+class OwnWorld final : public World, public Intervenable {
+ public:
+  explicit OwnWorld(const world::Scenario& s) : place_(world::initial_placement(s)) {}
+  double time() const override { return t_; }
+  void advance(double dt) override {
+    const double target = t_ + dt;
+    if (moving_ && end_ <= target) {
+      t_ = end_;
+      moving_ = false;
+      place_.things.at(move_.thing).location = move_.to;
+      hand_ = move_.to;
+      status_ = MoveStatus::Succeeded;
+    }
+    t_ = std::max(t_, target);
+  }
+  double next_event_time() const override { return moving_ ? end_ : std::numeric_limits<double>::infinity(); }
+  world::Placement observe() override {
+    world::Placement p = place_;
+    if (moving_) p.things.at(move_.thing).location = kInHand;
+    return p;
+  }
+  void start(const Move& m) override {
+    move_ = m;
+    moving_ = true;
+    end_ = t_ + 2.0;
+    status_ = MoveStatus::Running;
+  }
+  MoveStatus poll(std::string*) override { return status_; }
+  void halt() override {
+    moving_ = false;
+    status_ = MoveStatus::Failed;
+  }
+  bool busy() override { return false; }
+  std::string hand() const override { return hand_; }
+  std::vector<WorldEvent> take_events() override { return std::exchange(events_, {}); }
+  Intervenable* intervenable() override { return this; }
+  world::Placement true_placement() override { return observe(); }
+  WorldEvent apply(const world::Intervention& iv) override {
+    WorldEvent e{t_, iv, iv.kind == world::Intervention::Kind::Relocate && place_.things.count(iv.subject) > 0, ""};
+    if (e.applied) {
+      if (moving_ && move_.thing == iv.subject) halt();
+      place_.things.at(iv.subject).location = iv.location;
+    }
+    events_.push_back(e);
+    return e;
+  }
+
+ private:
+  world::Placement place_;
+  double t_ = 0, end_ = 0;
+  bool moving_ = false;
+  Move move_;
+  MoveStatus status_ = MoveStatus::Idle;
+  std::string hand_;
+  std::vector<WorldEvent> events_;
+};
+
+TEST(ReactiveLoop, APersonDrivesAUsersOwnWorldThroughItsCapability) {
+  const world::Scenario s = scene("F G all_in_r2", 2);
+  OwnWorld own(s);
+  world::PersonOptions po;
+  po.script = {intervention(world::Intervention::Kind::Relocate, 3.0, "o1", "r1"),
+               intervention(world::Intervention::Kind::Relocate, 3.0, "o2", "r3")};
+  world::Person person(s, po);
+  PersonWorld acted(own, person);
+  ReactiveLoop loop(acted, s, inline_options());
+  Starts st;
+  loop.add_observer(st);
+  const EpisodeMetrics& m = loop.run();
+  EXPECT_TRUE(m.success) << m.reason;
+  EXPECT_EQ(m.interventions_applied, 2);
+  EXPECT_EQ(st.at.front(), 0.0);
+  EXPECT_EQ(own.true_placement().things.at("o2").location, "r2");
+}
+
+TEST(ReactiveLoop, APersonNeedsAWorldThatTakesInterventions) {
+  const world::Scenario s = scene("F G all_in_r2", 2);
+  SymbolicWorld inner(s);
+  Forward plain(inner);  // forwards everything but the capability
+  world::Person person(s, {});
+  try {
+    PersonWorld acted(plain, person, "my robot");
+    FAIL() << "accepted";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("my robot cannot take a person's interventions"), std::string::npos)
+        << e.what();
+  }
+}
+
 // Every kind of intervention at moments spread over the first moves (so every
 // phase of a move): never an error, and success or a reason that fits.
 TEST(ReactiveLoop, EveryInterventionAtEveryMoment) {
@@ -277,10 +595,9 @@ TEST(ReactiveLoop, EveryInterventionAtEveryMoment) {
     for (double t = 0.1; t < 12; t += 0.35) {
       world::Intervention iv = base;
       iv.time = t;
-      SymbolicWorldOptions wo;
-      wo.script = {iv};
-      SymbolicWorld w(s, wo);
-      ReactiveLoop loop(w, s, inline_options());
+      Scripted e(s, {iv});
+      SymbolicWorld& w = e.w;
+      ReactiveLoop& loop = e.loop;
       const EpisodeMetrics& m = loop.run();
       ++episodes;
       SCOPED_TRACE("kind " + std::to_string(static_cast<int>(iv.kind)) + " " + iv.subject + " at t = " +

@@ -9,10 +9,12 @@
 #include <cmath>
 #include <limits>
 #include <map>
+#include <memory>
 #include <set>
 #include <string>
 #include <vector>
 
+#include "rtamp/exec/person_world.hpp"
 #include "rtamp/exec/subtree_builder.hpp"
 #include "rtamp/task/transition_system.hpp"
 #include "rtamp/util/error.hpp"
@@ -96,14 +98,27 @@ double time_in(Phase p, bool end) {
   return end ? probe.phase_end() : probe.time();
 }
 
+// A symbolic world with a person acting on it (world/person.hpp, through exec::PersonWorld).
+struct Acted {
+  SymbolicWorld w;
+  world::Person person;
+  PersonWorld pw;
+  Acted(const world::Scenario& s, world::PersonOptions po, SymbolicWorldOptions wo = {})
+      : w(s, std::move(wo)), person(s, std::move(po)), pw(w, person) {}
+};
+
+world::PersonOptions script(std::vector<world::Intervention> what) {
+  world::PersonOptions o;
+  o.script = std::move(what);
+  return o;
+}
+
 // tiny() with `what` scripted at time `t`, running move(o1, r1 -> r2).
-SymbolicWorld moving_o1_with(world::Intervention what, double t) {
+std::unique_ptr<Acted> moving_o1_with(world::Intervention what, double t) {
   what.time = t;
-  SymbolicWorldOptions o;
-  o.script = {what};
-  SymbolicWorld w(tiny(), o);
-  w.start(move("o1", "r1", "r2"));
-  return w;
+  auto a = std::make_unique<Acted>(tiny(), script({what}));
+  a->w.start(move("o1", "r1", "r2"));
+  return a;
 }
 
 // ---------------------------------------------------------------- timing
@@ -209,10 +224,8 @@ TEST(SymbolicWorld, StartFailsAtOnceOnBadMoves) {
     EXPECT_FALSE(w.busy());
     EXPECT_EQ(w.truth(), SymbolicWorld(tiny()).truth());
   }
-  world::Intervention add = iv(Kind::AddContainer, "t2", "r4");
-  SymbolicWorldOptions o;
-  o.script = {add};
-  SymbolicWorld w(tiny(), o);
+  Acted a(tiny(), script({iv(Kind::AddContainer, "t2", "r4")}));  // at t = 0: applied at once
+  SymbolicWorld& w = a.w;
   w.start(move("t1", "r1", "t2"));
   std::string why;
   EXPECT_EQ(w.poll(&why), MoveStatus::Failed);
@@ -465,18 +478,36 @@ TEST(SymbolicWorld, RemovingTheHeldTraySpillsItsContents) {
 TEST(SymbolicWorld, APositionOutsideEveryLocationIsNone) {
   SymbolicWorld w(tiny());
   world::Intervention off = iv(Kind::Relocate, "o3");
-  off.position = world::Vec3{0.0, 0.8, 0};
+  off.position = world::Vec3{0.0, 0.6, 0};  // on the table (it ends at y = 0.67), in no region
   ASSERT_TRUE(w.apply(off).applied);
   EXPECT_EQ(loc(w, "o3"), world::kNoLocation);
   EXPECT_FALSE(w.apply(iv(Kind::Relocate, "o4", world::kNoLocation)).applied);  // only by position
   EXPECT_EQ(w.check_invariants(), "");
   w.start(move("o3", world::kNoLocation, "r2"));
-  const world::Vec3 home{0, 0, 0.5}, at{0.0, 0.8, 0};
+  const world::Vec3 home{0, 0, 0.5}, at{0.0, 0.6, 0};
   EXPECT_NEAR(w.phase_end(), 0.5 + dist(home, at) / 0.25, 1e-12);
   run_until_idle(w);
   EXPECT_EQ(w.poll(nullptr), MoveStatus::Succeeded);
   EXPECT_EQ(loc(w, "o3"), "r2");
   EXPECT_EQ(w.check_invariants(), "");
+}
+
+// A position off the table top (world/table.hpp) is refused: the thing would fall to the floor.
+TEST(SymbolicWorld, APositionOffTheTableIsRefused) {
+  SymbolicWorld w(tiny());
+  for (const world::Vec3& p : {world::Vec3{3.0, 0.0, 0}, world::Vec3{0.4, -2.0, 0}, world::Vec3{std::nan(""), 0, 0}}) {
+    world::Intervention off = iv(Kind::Relocate, "o3");
+    off.position = p;
+    const WorldEvent e = w.apply(off);
+    EXPECT_FALSE(e.applied);
+    EXPECT_NE(e.detail.find("is off the table"), std::string::npos) << e.detail;
+    world::Intervention add = iv(Kind::Add, "o9");
+    add.cls = "block";
+    add.position = p;
+    EXPECT_FALSE(w.apply(add).applied);
+  }
+  EXPECT_NE(loc(w, "o3"), world::kNoLocation);
+  EXPECT_EQ(w.observe().things.count("o9"), 0u);
 }
 
 TEST(SymbolicWorld, MovingTheSourceTrayBeforeTheGraspTakesTheThingFromItsNewPlace) {
@@ -560,7 +591,6 @@ TEST(SymbolicWorld, OptionsOutOfRangeAreErrors) {
   EXPECT_THROW(SymbolicWorld(tiny(), with([](auto& o) { o.speed = 0; })), Error);
   EXPECT_THROW(SymbolicWorld(tiny(), with([](auto& o) { o.grasp = -1; })), Error);
   EXPECT_THROW(SymbolicWorld(tiny(), with([](auto& o) { o.failure_probability = 1.5; })), Error);
-  EXPECT_THROW(SymbolicWorld(tiny(), with([](auto& o) { o.random_rate = -1; })), Error);
   EXPECT_THROW(SymbolicWorld(tiny(), with([](auto& o) { o.fails_in = Phase::Retreat; })), Error);
   EXPECT_THROW(SymbolicWorld(tiny(), with([](auto& o) { o.added_container_capacity = 0; })), Error);
   EXPECT_NO_THROW(SymbolicWorld(tiny(), with([](auto& o) { o.grasp = 0; })));
@@ -722,27 +752,28 @@ TEST(SymbolicWorld, TakingTheThingDuringAHaltReturnEndsIt) {
 // ---------------------------------------------------------------- scripted interventions
 
 TEST(SymbolicWorld, ScriptedInterventionsApplyAtTheirExactTime) {
-  SymbolicWorldOptions o;
   world::Intervention late = iv(Kind::Relocate, "o3", "r4");
   late.time = 1.234;
   world::Intervention first = iv(Kind::Add, "x", "r2");
   first.time = 0;
   world::Intervention mid = iv(Kind::Remove, "o4");
   mid.time = 1.234;  // same time: kept in script order
-  o.script = {late, mid, first};
-  SymbolicWorld w(tiny(), o);
+  Acted a(tiny(), script({late, mid, first}));
+  SymbolicWorld& w = a.w;
   EXPECT_EQ(loc(w, "x"), "r2");  // time 0: applied by the constructor
-  EXPECT_EQ(w.next_event_time(), 1.234);
+  EXPECT_EQ(a.person.next_time(), 1.234);
+  EXPECT_EQ(a.pw.next_event_time(), std::numeric_limits<double>::infinity());  // idle: the loop ticks it
   w.start(move("o1", "r1", "r2"));
   const double approach_end = w.phase_end();
   ASSERT_GT(approach_end, 1.234);
-  w.advance(1.0);
+  EXPECT_EQ(a.pw.next_event_time(), 1.234);
+  a.pw.advance(1.0);
   EXPECT_EQ(loc(w, "o3"), "r2");
-  EXPECT_EQ(w.next_event_time(), 1.234);
-  w.advance(w.next_event_time() - w.time());
+  EXPECT_EQ(a.pw.next_event_time(), 1.234);
+  a.pw.advance(a.pw.next_event_time() - a.pw.time());
   EXPECT_EQ(loc(w, "o3"), "r4");
   EXPECT_EQ(loc(w, "o4"), "");
-  const auto events = w.take_events();
+  const auto events = a.pw.take_events();
   ASSERT_EQ(events.size(), 3u);
   EXPECT_EQ(events[0].what.subject, "x");
   EXPECT_EQ(events[0].time, 0);
@@ -751,34 +782,33 @@ TEST(SymbolicWorld, ScriptedInterventionsApplyAtTheirExactTime) {
   EXPECT_EQ(events[2].what.subject, "o4");
   EXPECT_EQ(events[2].time, 1.234);
   EXPECT_EQ(w.phase_end(), approach_end);  // interventions do not change a running phase
-  EXPECT_EQ(w.next_event_time(), approach_end);
-  run_until_idle(w);
+  EXPECT_EQ(a.pw.next_event_time(), approach_end);
+  while (w.phase() != Phase::Idle) a.pw.advance(a.pw.next_event_time() - a.pw.time());
   EXPECT_EQ(w.poll(nullptr), MoveStatus::Succeeded);
-  EXPECT_TRUE(w.take_events().empty());
+  EXPECT_TRUE(a.pw.take_events().empty());
 }
 
 TEST(SymbolicWorld, ScriptedInterventionInsideOneAdvanceInterruptsAtItsTime) {
   // The script takes o1 from the gripper during the carry; one long advance
   // must stop the move at that moment, not at the end of the carry.
   const double t_take = time_in(Phase::Carry, false);
-  SymbolicWorld w = moving_o1_with(iv(Kind::TakeFromGripper, "", "r4"), t_take);
-  w.advance(100);
-  EXPECT_EQ(w.poll(nullptr), MoveStatus::Failed);
-  EXPECT_EQ(loc(w, "o1"), "r4");
-  ASSERT_EQ(w.history().size(), 1u);
-  EXPECT_EQ(w.history()[0].time, t_take);
-  EXPECT_TRUE(w.history()[0].applied);
+  auto a = moving_o1_with(iv(Kind::TakeFromGripper, "", "r4"), t_take);
+  a->pw.advance(100);
+  EXPECT_EQ(a->w.poll(nullptr), MoveStatus::Failed);
+  EXPECT_EQ(loc(a->w, "o1"), "r4");
+  ASSERT_EQ(a->w.history().size(), 1u);
+  EXPECT_EQ(a->w.history()[0].time, t_take);
+  EXPECT_TRUE(a->w.history()[0].applied);
 }
 
 TEST(SymbolicWorld, TheScenarioScriptRunsWhenPassed) {
   const auto s = world::load_scenario("3-block-tray");
-  SymbolicWorldOptions o;
-  o.script = s.interventions;
-  SymbolicWorld w(s, o);
+  Acted a(s, script(s.interventions));
+  SymbolicWorld& w = a.w;
   w.start(move("o2", "r1", "r2"));
-  run_until_idle(w);
+  while (w.phase() != Phase::Idle) a.pw.advance(a.pw.next_event_time() - a.pw.time());
   EXPECT_EQ(loc(w, "o2"), "r2");
-  w.advance(20 - w.time());
+  a.pw.advance(20 - w.time());
   EXPECT_EQ(loc(w, "o2"), "r1");
   ASSERT_EQ(w.history().size(), 1u);
   EXPECT_EQ(w.history()[0].time, 20);
@@ -786,25 +816,26 @@ TEST(SymbolicWorld, TheScenarioScriptRunsWhenPassed) {
 
 TEST(SymbolicWorld, APhaseEndGoesBeforeAnInterventionAtTheSameTime) {
   const double grasp_end = time_in(Phase::Grasp, true);
-  SymbolicWorld w = moving_o1_with(iv(Kind::TakeFromGripper, "", "r4"), grasp_end);
-  w.advance(grasp_end);
-  ASSERT_EQ(w.history().size(), 1u);
-  EXPECT_TRUE(w.history()[0].applied) << w.history()[0].detail;  // o1 was already in the gripper
-  EXPECT_EQ(loc(w, "o1"), "r4");
+  auto a = moving_o1_with(iv(Kind::TakeFromGripper, "", "r4"), grasp_end);
+  a->pw.advance(grasp_end);
+  ASSERT_EQ(a->w.history().size(), 1u);
+  EXPECT_TRUE(a->w.history()[0].applied) << a->w.history()[0].detail;  // o1 was already in the gripper
+  EXPECT_EQ(loc(a->w, "o1"), "r4");
 }
 
 TEST(SymbolicWorld, RandomInterventionsHappenWhenAnnounced) {
-  SymbolicWorldOptions o;
-  o.random_rate = 1;
-  o.seed = 3;
-  SymbolicWorld w(tiny(), o);
+  world::PersonOptions po;
+  po.rate = 1;
+  po.seed = 3;
+  Acted a(tiny(), po);
+  SymbolicWorld& w = a.w;
   w.start(move("o1", "r1", "r2"));
   int mid_phase = 0;
   for (int i = 0; i < 200; ++i) {
-    const double t = w.next_event_time();
+    const double t = std::min(a.pw.next_event_time(), a.person.next_time());
     const bool phase_event = t == w.phase_end();
     const std::size_t before = w.history().size();
-    w.advance(t - w.time());
+    a.pw.advance(t - w.time());
     ASSERT_NEAR(w.time(), t, 1e-9);
     if (!phase_event) {
       ASSERT_EQ(w.history().size(), before + 1);
@@ -1213,9 +1244,12 @@ RandomRun random_run(const world::Scenario& s, std::uint64_t seed, int steps, st
                      std::map<Kind, int>* applied_kinds = nullptr) {
   SymbolicWorldOptions o;
   o.seed = seed;
-  o.random_rate = 0.5;
   o.failure_probability = 0.2;
-  SymbolicWorld w(s, o);
+  world::PersonOptions po;
+  po.seed = seed;
+  po.rate = 0.5;
+  Acted a(s, po, o);
+  SymbolicWorld& w = a.w;
   std::uint64_t r = seed * 7919 + 1;
   auto next = [&r](std::uint64_t n) {
     r = r * 6364136223846793005ull + 1442695040888963407ull;
@@ -1238,8 +1272,8 @@ RandomRun random_run(const world::Scenario& s, std::uint64_t seed, int steps, st
     } else if (next(20) == 0) {
       w.halt();
     }
-    const double t = w.next_event_time();
-    w.advance(std::isfinite(t) ? t - w.time() : 1.0);
+    const double t = std::min(a.pw.next_event_time(), a.person.next_time());
+    a.pw.advance(std::isfinite(t) ? t - w.time() : 1.0);
     *broken = w.check_invariants();
     std::string why;
     const MoveStatus st = w.poll(&why);
@@ -1294,14 +1328,15 @@ TEST(SymbolicWorld, DeterministicPerSeed) {
 }
 
 TEST(SymbolicWorld, RandomInterventionsStayInTheirWindowAndGetFreshNames) {
-  SymbolicWorldOptions o;
-  o.random_rate = 5;
-  o.random_start = 10;
-  o.random_end = 20;
-  o.random_kinds = {Kind::Add};
-  SymbolicWorld w(world::load_scenario("3-block"), o);
-  EXPECT_GE(w.next_event_time(), 10);
-  w.advance(100);
+  world::PersonOptions o;
+  o.rate = 5;
+  o.start = 10;
+  o.end = 20;
+  o.kinds = {Kind::Add};
+  Acted a(world::load_scenario("3-block"), o);
+  SymbolicWorld& w = a.w;
+  EXPECT_GE(a.person.next_time(), 10);
+  a.pw.advance(100);
   ASSERT_FALSE(w.history().empty());
   std::set<std::string> names;
   for (const auto& e : w.history()) {
@@ -1311,7 +1346,7 @@ TEST(SymbolicWorld, RandomInterventionsStayInTheirWindowAndGetFreshNames) {
     EXPECT_TRUE(names.insert(e.what.subject).second);
     EXPECT_EQ(e.what.cls, "block");
   }
-  EXPECT_EQ(w.next_event_time(), std::numeric_limits<double>::infinity());
+  EXPECT_EQ(a.person.next_time(), std::numeric_limits<double>::infinity());
   EXPECT_EQ(w.check_invariants(), "");
 }
 

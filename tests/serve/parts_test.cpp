@@ -94,7 +94,10 @@ TEST(ServeInterventionCheck, RefusesAsTheScenarioFileDoes) {
   const std::vector<Case> cases = {
       {K::Relocate, "o7", "r2", "", {}, "unknown object or container 'o7' at this time (did you mean"},
       {K::Relocate, "o1", "r5", "", {}, "unknown location 'r5' at this time (did you mean"},
-      {K::Relocate, "o1", "r2", "", world::Vec3{50, 50, 0}, "is not inside region 'r2'"},
+      {K::Relocate, "o1", "r2", "", world::Vec3{0.40, 0.32, 0}, "is not inside region 'r2'"},
+      {K::Relocate, "o1", "r2", "", world::Vec3{50, 50, 0}, "position [50, 50, 0] is off the table (x in ["},
+      {K::Relocate, "o1", "", "", world::Vec3{0.4, -3, 0}, "is off the table"},
+      {K::Add, "o9", "", "block", world::Vec3{-2, 0, 0}, "is off the table"},
       {K::Relocate, "r3", "r3", "", {}, "containers do not nest"},
       {K::Remove, "o9", "", "", {}, "unknown object 'o9' at this time"},
       {K::Remove, "r3", "", "", {}, "it is a container: use remove"},

@@ -134,7 +134,7 @@ TEST(SimEpisode, SameSeedSameEpisode) {
   auto run = [](std::uint64_t seed) {
     SessionOptions o;
     o.seed = seed;
-    o.op.random_rate = 0.3;
+    o.person.rate = 0.3;
     o.perception.position_sigma = 0.003;
     Session s(world::load_scenario("3-block-tray"), o);
     auto rep = s.run(parse_actions("move o1 r3; move o2 r2; wait 2"));

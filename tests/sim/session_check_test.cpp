@@ -105,12 +105,12 @@ TEST(SessionCheck, ARandomOperatorRateOutOfRangeIsRefused) {
   const world::Scenario sc = world::load_scenario("3-block");
   for (double bad : {std::nan(""), -1.0, std::numeric_limits<double>::infinity()}) {
     SessionOptions o;
-    o.op.random_rate = bad;
+    o.person.rate = bad;
     try {
       Session s(sc, o);
       ADD_FAILURE() << bad << " accepted";
     } catch (const Error& e) {
-      EXPECT_NE(std::string(e.what()).find("random_rate"), std::string::npos) << e.what();
+      EXPECT_NE(std::string(e.what()).find("the rate of random interventions"), std::string::npos) << e.what();
     }
   }
 }

@@ -152,6 +152,11 @@ TEST(ScenarioErrors, Names) {
          "object name 'my block' is not an identifier"});
   check({"keyword as a name", with_line(6, "  - {name: all, position: [0.4, 0.3, 0]}"), 6, "all", "reserved word"});
   check({"none as a name", with_line(6, "  - {name: none, position: [0.4, 0.3, 0]}"), 6, "none", "reserved word"});
+  check({"hand as a name", with_line(6, "  - {name: hand, position: [0.4, 0.3, 0]}"), 6, "hand", "reserved word"});
+  check({"home as a region", with_line(3, "  - {name: home, center: [0.4, 0.3, 0], size: [0.3, 0.3]}"), 3, "home",
+         "region name 'home' is a reserved word"});
+  check({"hand as a class", with_line(6, "  - {name: o1, class: hand, position: [0.4, 0.3, 0]}"), 6, "hand",
+         "class 'hand' is a reserved word"});
   check({"class object", with_line(6, "  - {name: o1, class: object, position: [0.4, 0.3, 0]}"), 6, "object",
          "class 'object' is reserved"});
   check({"proposition name", with_line(8, "  All: \"all block in r2\""), 8, "All",
@@ -239,6 +244,8 @@ TEST(ScenarioErrors, Operator) {
   check({"position outside its region",
          ops + "  - {time: 1, action: relocate, object: o1, to: r2, position: [0.4, 0.3, 0]}\n", 11, "[0.4",
          "is not inside region 'r2'"});
+  check({"position off the table", ops + "  - {time: 1, action: relocate, object: o1, position: [5, 0.3, 0]}\n", 11,
+         "[5", "position [5, 0.3, 0] is off the table"});
   check({"both object and container", ops + "  - {time: 1, action: relocate, object: o1, container: o1, to: r2}\n", 11,
          "o1, to", "names both an object and a container"});
   check({"added object's class clashes",

@@ -7,6 +7,7 @@
 #include "rtamp/episode/sim_world.hpp"
 #include "rtamp/episode/video_recorder.hpp"
 #include "rtamp/exec/episode_log.hpp"
+#include "rtamp/exec/person_world.hpp"
 #include "rtamp/exec/symbolic_world.hpp"
 #include "rtamp/exec/timeline.hpp"
 #include "rtamp/exec/tree_dump.hpp"
@@ -46,25 +47,6 @@ void randomize_objects(world::Scenario& s, std::mt19937_64& rng) {
   }
 }
 
-world::Intervention random_intervention(const world::Scenario& s, world::Intervention::Kind kind,
-                                        const EpisodeOptions& o, std::mt19937_64& rng) {
-  world::Intervention iv;
-  iv.kind = kind;
-  iv.time = std::uniform_real_distribution<double>(o.change_window_begin, o.change_window_end)(rng);
-  std::vector<std::string> blocks;
-  for (const auto& obj : s.objects) blocks.push_back(obj.name);
-  if (kind == world::Intervention::Kind::Add) {
-    iv.subject = "o_added";
-    iv.cls = "block";
-    iv.location = s.regions.empty() ? std::string{} : s.regions[rng() % s.regions.size()].name;
-  } else if (!blocks.empty()) {
-    iv.subject = blocks[rng() % blocks.size()];
-    if (kind == world::Intervention::Kind::Relocate && !s.regions.empty())
-      iv.location = s.regions[rng() % s.regions.size()].name;
-  }
-  return iv;
-}
-
 }  // namespace
 
 const char* to_string(WorldKind w) { return w == WorldKind::MuJoCo ? "mujoco" : "symbolic"; }
@@ -79,10 +61,13 @@ Episode::Episode(const world::Scenario& input, const EpisodeOptions& opt, const 
   std::mt19937_64 rng(opt.seed * 0x9E3779B97F4A7C15ull + 1);
   world::Scenario& scenario = scenario_;
   if (opt.randomize_initial) randomize_objects(scenario, rng);
-  std::vector<world::Intervention> script;
-  if (opt.scripted_operator) script = scenario.interventions;
-  if (opt.random_change) script.push_back(random_intervention(scenario, *opt.random_change, opt, rng));
-  std::stable_sort(script.begin(), script.end(), [](const auto& a, const auto& b) { return a.time < b.time; });
+  // The person: the scenario's script, random interventions, one random change.
+  world::PersonOptions po;
+  if (opt.scripted_operator) po.script = scenario.interventions;
+  po.rate = opt.random_rate;
+  if (opt.random_change) po.change = world::RandomChange{*opt.random_change, opt.change_window_begin, opt.change_window_end};
+  po.seed = opt.seed;
+  person_ = std::make_unique<world::Person>(scenario, po);
 
   // Every input is checked before any output is opened (a log file is
   // created, a tree directory emptied): the world checks its options, the
@@ -94,22 +79,19 @@ Episode::Episode(const world::Scenario& input, const EpisodeOptions& opt, const 
   if (opt.world == WorldKind::MuJoCo) {
     sim::SessionOptions so;
     so.seed = opt.seed;
-    so.op.script = script;
-    so.op.random_rate = opt.random_rate;
     auto w = std::make_unique<SimWorld>(scenario, so);
     sim_world_ = w.get();
     world_ = std::move(w);
   } else {
     exec::SymbolicWorldOptions so;
     so.seed = opt.seed;
-    so.script = script;
-    so.random_rate = opt.random_rate;
     so.failure_probability = opt.failure_probability;
     auto w = std::make_unique<exec::SymbolicWorld>(scenario, so);
     symbolic_world_ = w.get();
     world_ = std::move(w);
   }
-  if (wrap) wrapper_ = wrap(*world_);
+  acted_ = std::make_unique<exec::PersonWorld>(*world_, *person_, std::string("the ") + to_string(opt.world) + " world");
+  if (wrap) wrapper_ = wrap(*acted_);
 
   exec::LoopOptions lo;
   lo.planner.algorithm = opt.algorithm;
@@ -120,13 +102,13 @@ Episode::Episode(const world::Scenario& input, const EpisodeOptions& opt, const 
   lo.planning = opt.planning;
   lo.max_time = opt.max_time;
   lo.tick_period = opt.tick_period;
-  lo.max_consecutive_failures = opt.max_consecutive_failures;
+  lo.max_failures_per_move = opt.max_failures_per_move;
   lo.outside_grace = opt.outside_grace;
   lo.cycles = opt.cycles;
   lo.seed = opt.seed;
   lo.world_name = to_string(opt.world);
   lo.interrupt = opt.interrupt;
-  loop_ = std::make_unique<exec::ReactiveLoop>(wrapper_ ? *wrapper_ : *world_, scenario, lo);
+  loop_ = std::make_unique<exec::ReactiveLoop>(wrapper_ ? *wrapper_ : *acted_, scenario, lo);
 
   if (!opt.log_path.empty()) log_ = std::make_unique<exec::EpisodeLog>(opt.log_path);
   if (!opt.tree_dir.empty()) trees_ = std::make_unique<exec::TreeDump>(opt.tree_dir);

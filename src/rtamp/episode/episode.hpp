@@ -22,6 +22,7 @@
 #include <string>
 
 #include "rtamp/exec/episode_log.hpp"
+#include "rtamp/exec/person_world.hpp"
 #include "rtamp/exec/episode_metrics.hpp"
 #include "rtamp/exec/plan_tree.hpp"
 #include "rtamp/exec/reactive_loop.hpp"
@@ -29,6 +30,7 @@
 #include "rtamp/exec/timeline.hpp"
 #include "rtamp/exec/tree_dump.hpp"
 #include "rtamp/plan/search.hpp"
+#include "rtamp/world/person.hpp"
 #include "rtamp/world/scenario.hpp"
 
 namespace rtamp::episode {
@@ -49,13 +51,14 @@ struct EpisodeOptions {
   int cycles = 0;                 // recurring tasks: succeed after this many cycles
   bool randomize_initial = false; // shuffle objects inside their initial locations (seeded)
   bool scripted_operator = true;  // apply the scenario's `operator:` interventions
-  // One extra random intervention of this kind on a random present block, at
-  // a uniform random time in change_window (seeded).
+  // One extra random intervention of this kind (world::RandomChange: a
+  // relocated or removed subject is an object), at a uniform random time in
+  // change_window (seeded; world/person.hpp draws it).
   std::optional<world::Intervention::Kind> random_change;
   double change_window_begin = 2, change_window_end = 20;
-  double random_rate = 0;           // random interventions per second (every kind the world knows)
+  double random_rate = 0;           // random interventions per second (world::PersonOptions' six kinds)
   double failure_probability = 0;   // symbolic world: chance that a move fails
-  int max_consecutive_failures = 5;
+  int max_failures_per_move = 5;
   double outside_grace = 3;
   std::string log_path;    // JSON Lines episode log; empty: none
   std::string tree_dir;    // BehaviorTree.CPP XML of the tree after each change; empty: none
@@ -90,7 +93,8 @@ class Episode {
   exec::ReactiveLoop& loop() { return *loop_; }
   // The scenario the episode runs (randomized if asked), its script included.
   const world::Scenario& scenario() const { return scenario_; }
-  exec::World& world() { return *world_; }  // the world itself (not the wrapper)
+  exec::World& world() { return *world_; }  // the world itself (not the wrappers)
+  world::Person& person() { return *person_; }
   SimWorld* sim_world() { return sim_world_; }
   exec::SymbolicWorld* symbolic_world() { return symbolic_world_; }
   // The log (null without log_path) — EpisodeLog::add_sink streams it.
@@ -101,7 +105,10 @@ class Episode {
   std::unique_ptr<exec::EpisodeLog> log_;
   std::unique_ptr<exec::TreeDump> trees_;
   std::unique_ptr<exec::Timeline> timeline_;
-  std::unique_ptr<exec::World> world_, wrapper_;
+  std::unique_ptr<world::Person> person_;
+  std::unique_ptr<exec::World> world_;
+  std::unique_ptr<exec::PersonWorld> acted_;  // world_ with the person acting on it
+  std::unique_ptr<exec::World> wrapper_;
   SimWorld* sim_world_ = nullptr;
   exec::SymbolicWorld* symbolic_world_ = nullptr;
   std::unique_ptr<VideoRecorder> video_;

@@ -9,7 +9,6 @@ SimWorld::SimWorld(const world::Scenario& scenario, sim::SessionOptions options)
 
 void SimWorld::advance(double dt) {
   auto& sim = session_.sim();
-  auto& op = session_.op();
   const int steps = std::max(1, static_cast<int>(std::lround(dt / sim.timestep())));
   Eigen::Vector3d last = sim.tool_pose().translation();
   for (int k = 0; k < steps; ++k) {
@@ -18,8 +17,6 @@ void SimWorld::advance(double dt) {
     const Eigen::Vector3d tool = sim.tool_pose().translation();
     travelled_ += (tool - last).norm();  // the tool path actually travelled
     last = tool;
-    if (op.next_time() <= sim.time())
-      for (const sim::OperatorEvent& e : op.update()) note(e);
   }
 }
 

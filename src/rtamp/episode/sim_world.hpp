@@ -1,8 +1,9 @@
 // The MuJoCo UR5 as an exec::World (exec/world.hpp): the reactive loop's
 // moves run as the sim layer's pick(o) then place(o, l) skills (the paper's
-// skill library, Fig. 2), perception maps body poses to regions, and the
-// human operator (sim::Operator: scripted and random interventions) acts
-// between physics steps. Built on sim::Session.
+// skill library, Fig. 2), perception maps body poses to regions, and a
+// person's interventions are carried out between physics steps (the
+// intervention capability, exec/intervenable.hpp: sim::Operator's physics of
+// applying one; exec::PersonWorld drives it). Built on sim::Session.
 //
 // Failure and preemption never leave the arm in a bad spot:
 //  - a move that fails while holding its thing first puts it back — at its
@@ -21,12 +22,13 @@
 #include <string>
 #include <vector>
 
+#include "rtamp/exec/intervenable.hpp"
 #include "rtamp/exec/world.hpp"
 #include "rtamp/sim/session.hpp"
 
 namespace rtamp::episode {
 
-class SimWorld final : public exec::World {
+class SimWorld final : public exec::World, public exec::Intervenable {
  public:
   SimWorld(const world::Scenario& scenario, sim::SessionOptions options);
 
@@ -40,11 +42,14 @@ class SimWorld final : public exec::World {
   std::string hand() const override { return hand_; }
   double distance_travelled() const override { return travelled_; }
   std::vector<exec::WorldEvent> take_events() override;
+  exec::Intervenable* intervenable() override { return this; }
 
-  // Applies one intervention now, between physics steps, as the scenario's
-  // operator would (sim::Operator::apply); take_events() reports it like a
-  // scripted one, and a thing taken from the arm ends the running move.
-  exec::WorldEvent apply(const world::Intervention& iv);
+  // --- exec::Intervenable
+  // Every present thing where it is (noise-free perception).
+  world::Placement true_placement() override { return session_.true_placement(); }
+  // Applies one intervention now, between physics steps (sim::Operator::apply);
+  // take_events() reports it, and a thing taken from the arm ends the running move.
+  exec::WorldEvent apply(const world::Intervention& iv) override;
 
   sim::Session& session() { return session_; }
   const sim::Session& session() const { return session_; }

@@ -34,7 +34,7 @@ const LoopOptions& check_loop_options(const LoopOptions& o) {
   if (!(o.tick_period > 0 && std::isfinite(o.tick_period))) fail("tick_period", "must be finite and > 0 s", o.tick_period);
   if (!(o.outside_grace >= 0 && std::isfinite(o.outside_grace)))
     fail("outside_grace", "must be finite and >= 0 s", o.outside_grace);
-  if (o.max_consecutive_failures < 1) fail("max_consecutive_failures", "must be >= 1", o.max_consecutive_failures);
+  if (o.max_failures_per_move < 1) fail("max_failures_per_move", "must be >= 1", o.max_failures_per_move);
   if (o.cycles < 0) fail("cycles", "must be >= 0 (0: no cycle count)", o.cycles);
   return o;
 }
@@ -93,6 +93,10 @@ ReactiveLoop::ReactiveLoop(World& world, const world::Scenario& scenario, LoopOp
   runner_->on_event = [this](const char* what, const std::string& action, const std::string& why) {
     for (auto* o : observers_) o->on_action(world_.time(), what, action, why);
   };
+  runner_->placed = [this](const Move& m) {
+    const std::string* at = seen_.location_of(m.thing);
+    return at && *at == m.to;
+  };
   tree_ = std::make_unique<PlanTree>(options_.conditions, options_.reconfiguration, *runner_,
                                      std::make_shared<WorldClock>(world_));
   metrics_.seed = options_.seed;
@@ -133,7 +137,7 @@ void ReactiveLoop::record_run_step(const world::Placement& next, bool things_cha
   if (progress_.dead() || !progress_.can_still_accept())
     finish(EndReason::Unsatisfiable,
            "the task can no longer be satisfied: no run of its automaton is consistent with what happened "
-           "and can still be accepted");
+           "and can still be accepted" + caused_by());
 }
 
 void ReactiveLoop::apply_thing_changes(const std::vector<std::string>& added,
@@ -160,9 +164,16 @@ void ReactiveLoop::apply_thing_changes(const std::vector<std::string>& added,
   }
   add(true);
   add(false);
-  planner_->clear_forbidden_moves();
   rebuild_labeler();
   for (auto* o : observers_) o->on_things_changed(world_.time(), added, removed);
+}
+
+// " (after the intervention at t = T: WHAT)" when a person's intervention
+// changed the world since the last plan, else "".
+std::string ReactiveLoop::caused_by() const {
+  if (!last_intervention_) return {};
+  return " (after the intervention at t = " + seconds_text(last_intervention_->time) + ": " +
+         last_intervention_->what.to_string() + ")";
 }
 
 // ---- the episode ----------------------------------------------------------------
@@ -187,7 +198,13 @@ void ReactiveLoop::finish(EndReason why, std::string reason, bool success) {
   metrics_.motion_cost = world_.distance_travelled();
   metrics_.wall_seconds = seconds_since(wall0_);
   metrics_.real_time_factor = metrics_.wall_seconds > 0 ? metrics_.world_time / metrics_.wall_seconds : 0;
-  for (auto* o : observers_) o->on_end(world_.time(), metrics_, symbolic_);
+  // The end's placement is what the world shows last (after the halt above).
+  world::Placement last = seen_;
+  try {
+    if (begun_ && !seen_.things.empty()) last = world_.observe();
+  } catch (const std::exception&) {
+  }
+  for (auto* o : observers_) o->on_end(world_.time(), metrics_, last);
 }
 
 void ReactiveLoop::wait_for_worker() {
@@ -197,6 +214,8 @@ void ReactiveLoop::wait_for_worker() {
 void ReactiveLoop::begin() {
   begun_ = true;
   wall0_ = Clock::now();
+  if (const double t = world_.time(); !std::isfinite(t))
+    throw Error("the world's time() returned " + format_number(t) + " at the start of the episode");
   EpisodeInfo info;
   info.scenario = scenario_.name;
   info.task = scenario_.task;
@@ -253,6 +272,14 @@ void ReactiveLoop::observe_world(world::Placement& symbolic, std::vector<std::st
                                  std::vector<std::string>& removed) {
   const double now = world_.time();
   world::Placement seen = world_.observe();
+  for (const auto& [name, thing] : seen.things) {
+    const std::string& at = thing.location;
+    if (at == kInHand || at == world::kNoLocation || scenario_.find_region(at)) continue;
+    auto c = seen.things.find(at);
+    if (c == seen.things.end() || !c->second.container || at == name)
+      throw Error("the world's observe() puts '" + name + "' in '" + at +
+                  "', which is no region, present container, '" + kInHand + "' or '" + world::kNoLocation + "'");
+  }
   if (seen != seen_) {
     for (auto* o : observers_) o->on_perceived(now, seen, seen_);
   }
@@ -277,8 +304,9 @@ void ReactiveLoop::observe_world(world::Placement& symbolic, std::vector<std::st
     if (thing.location != kInHand && is_location(scenario_, seen, thing.location)) {
       last_known_[name] = thing.location;
     } else if (auto known = last_known_.find(name); known != last_known_.end()) {
-      thing.location = known->second;  // held: still at its source; outside: where it was
-      if (for_tree.things.at(name).location != kInHand) for_tree.things.at(name).location = known->second;
+      // Held: still at its source; outside: where it was. The tree sees it in
+      // the hand or outside, so it starts no move of a thing that is not there.
+      thing.location = known->second;
     } else {  // new, and in no location yet: ignored until it is
       for_tree.things.erase(name);
       it = symbolic.things.erase(it);
@@ -322,7 +350,6 @@ void ReactiveLoop::perceive() {
   if (things_changed) {
     request_plan("things were added or removed");
   } else if (relocated) {
-    planner_forbidden_dirty_ = true;
     if (const std::string by = tree_->handler(tree_->placement()); !by.empty()) {
       for (auto* o : observers_) o->on_handled_by_tree(world_.time(), by);
     } else {
@@ -354,10 +381,19 @@ bool ReactiveLoop::step() {
       finish(EndReason::TimeLimit, reason);
       return false;
     }
-    advance();
+    // Time passes only after the tree has been ticked on what is now: the
+    // first step after a new plan or tree change ticks at the same moment.
+    if (act_now_ && ++same_time_steps_ <= kMaxSameTimeSteps) {
+      act_now_ = false;
+    } else {
+      act_now_ = false;
+      same_time_steps_ = 0;
+      advance();
+    }
     for (const WorldEvent& e : world_.take_events()) {
       ++metrics_.interventions;
       ++(e.applied ? metrics_.interventions_applied : metrics_.interventions_refused);
+      if (e.applied) last_intervention_ = e;
       for (auto* o : observers_) o->on_intervention(e);
     }
     perceive();
@@ -368,6 +404,7 @@ bool ReactiveLoop::step() {
       if (auto r = tree_->retry_pending(); r && r->applied)
         for (auto* o : observers_) o->on_tree_change(world_.time(), *r, *tree_, true);
     }
+
     // While a replan is pending, no new step of the old plan starts: a running
     // move is still polled, an idle tree waits. A tree that has succeeded waits
     // for the completion check (once the arm is free), not for another pass.
@@ -377,15 +414,21 @@ bool ReactiveLoop::step() {
     if (!wait && status == bt::Status::Success) tree_done_ = true;
     const std::string running = tree_->running_action();
     for (auto* o : observers_) o->on_tick(world_.time(), status, running);
-    if (!running.empty() && running != running_before_) disturbed_ = false;  // a new move began
+    if (!running.empty() && running != running_before_) {  // a new move began
+      disturbed_ = false;
+      move_start_state_ = state_key(symbolic_);
+    }
     running_before_ = running;
     after_moves();
     if (ended()) return false;
     if (collect_plan()) return !ended();  // the status ticked above belongs to the old tree
     if (ended()) return false;
+    if (tree_->has_pending() && running.empty() && !world_.busy()) act_now_ = true;  // a deferred change is due
     if (pending_ || tree_->has_pending()) return true;
     if (status == bt::Status::Failure) {
-      request_plan("no subtree can run in the perceived state");
+      // A thing outside every location is waited for (it comes back, or is lost
+      // after outside_grace); otherwise the plan no longer fits what is seen.
+      if (outside_since_.empty()) request_plan("no subtree can run in the perceived state");
     } else if (tree_done_ && runner_->current().action.empty() && !world_.busy()) {
       tree_done_ = false;
       on_tree_done();
@@ -396,11 +439,14 @@ bool ReactiveLoop::step() {
   return !ended();
 }
 
-// How far time moves in one step: a tick, or up to the next event of a discrete world.
+// How far time moves in one step: a tick, or up to the next event of a
+// discrete world — but never more than a tick while the arm is free and the
+// tree has work (a discrete world must not skip a moment the robot could act).
 void ReactiveLoop::advance() {
   const double now = world_.time();
   double dt = options_.tick_period;
   const double next_event = world_.next_event_time();
+  if (std::isnan(next_event)) throw Error("the world's next_event_time() returned nan at t = " + seconds_text(now));
   if (std::isfinite(next_event)) {
     double next = std::min(next_event, options_.max_time);
     if (pending_) {
@@ -410,6 +456,8 @@ void ReactiveLoop::advance() {
                                                           : 0.0));
     }
     for (const auto& [name, since] : outside_since_) next = std::min(next, since + options_.outside_grace + 1e-6);
+    const bool arm_free = runner_->current().action.empty() && !world_.busy() && !tree_done_;
+    if (arm_free) next = std::min(next, now + options_.tick_period);
     dt = std::max(0.0, next - now);
     zero_steps_ = dt > 0 ? 0 : zero_steps_ + 1;
     if (zero_steps_ > 100) dt = options_.tick_period;  // a world that keeps announcing "now"
@@ -421,34 +469,62 @@ void ReactiveLoop::advance() {
     if (pending_->future.wait_for(wait) == std::future_status::ready) pending_->result = pending_->future.get();
   }
   if (dt > 0) world_.advance(dt);
+  const double after = world_.time();
+  if (!std::isfinite(after))
+    throw Error("the world's time() returned " + format_number(after) + " after advance(" + format_number(dt) +
+                ") at t = " + seconds_text(now));
+  if (after < now)
+    throw Error("the world's time() went back from " + format_number(now) + " to " + format_number(after) +
+                " s after advance(" + format_number(dt) + ")");
 }
 
-// Failed and finished moves: feedback to the planner, giving up.
+// Failed moves: feedback to the planner, giving up.
 void ReactiveLoop::after_moves() {
   if (runner_->failed > failures_seen_) {
     failures_seen_ = runner_->failed;
-    // A move that failed with nobody disturbing it is fed back to the planner
-    // and counts towards giving up; one a person spoiled does neither.
+    // A move that failed with nobody disturbing it is remembered with the
+    // state it started from: the planner avoids it from there while it can,
+    // and too many failures of the same move from the same state end the
+    // episode, whatever succeeded in between. One a person spoiled does neither.
     const Move& m = runner_->last_failed;
+    if (const std::string* at = seen_.location_of(m.thing); !at || *at == world::kNoLocation) disturbed_ = true;
     if (!disturbed_) {
-      ++consecutive_failures_;
-      if (symbolic_.things.count(m.thing) && is_location(scenario_, symbolic_, m.to)) {
-        wait_for_worker();
-        planner_->forbid_move(m.thing, m.to);
+      FailedMove& f = failed_moves_[move_start_state_][m.action];
+      f.thing = m.thing;
+      f.to = m.to;
+      const int n = ++f.count;
+      if (n >= options_.max_failures_per_move) {
+        finish(EndReason::GaveUp, "gave up: " + m.action + " failed " + std::to_string(n) +
+                                      " times from the same state (max_failures_per_move = " +
+                                      std::to_string(options_.max_failures_per_move) +
+                                      "; last: " + runner_->last_failure + ")");
+        return;
       }
     }
     disturbed_ = false;
-    if (consecutive_failures_ >= options_.max_consecutive_failures) {
-      finish(EndReason::GaveUp, "gave up after " + std::to_string(consecutive_failures_) +
-                                    " failed moves in a row (last: " + runner_->last_failure + ")");
-      return;
-    }
-  }
-  if (runner_->succeeded > successes_seen_) {  // a move that works ends a run of failures
-    successes_seen_ = runner_->succeeded;
-    consecutive_failures_ = 0;
   }
   if (!runner_->current().action.empty()) last_move_ = runner_->current();
+}
+
+// The key of a symbolic state for the failure memory: every thing's location.
+std::string ReactiveLoop::state_key(const world::Placement& p) {
+  std::string key;
+  for (const auto& [name, thing] : p.things) key += name + '@' + thing.location + ' ';
+  return key;
+}
+
+// The moves that failed from the states a plan starts from, forbidden to it
+// (plan_from allows them again when no plan avoids them).
+void ReactiveLoop::forbid_failed_moves(const Starts& st) {
+  planner_->clear_forbidden_moves();
+  for (const Start* s : {&st.now, st.ahead ? &*st.ahead : nullptr}) {
+    if (!s) continue;
+    auto it = failed_moves_.find(state_key(s->placement));
+    if (it == failed_moves_.end()) continue;
+    for (const auto& [action, f] : it->second)
+      if (s->placement.things.count(f.thing) && is_location(scenario_, s->placement, f.to))
+        planner_->forbid_move(f.thing, f.to);
+  }
 }
 
 // ---- planning -----------------------------------------------------------------
@@ -486,11 +562,8 @@ ReactiveLoop::Starts ReactiveLoop::starts() {
 
 void ReactiveLoop::request_plan(const std::string& why) {
   if (pending_ || ended()) return;
-  if (planner_forbidden_dirty_) {
-    planner_->clear_forbidden_moves();
-    planner_forbidden_dirty_ = false;
-  }
   Starts st = starts();
+  forbid_failed_moves(st);
   for (auto* o : observers_) o->on_replan_request(world_.time(), why);
   Pending p;
   p.requested_at = world_.time();
@@ -551,7 +624,7 @@ bool ReactiveLoop::collect_plan() {
   metrics_.replan_seconds += r.stats.seconds;
   if (!r.found) {
     finish(r.reason == plan::NoPlanReason::NoAcceptingCycle ? EndReason::Unsatisfiable : EndReason::NoPlan,
-           std::string("no plan: ") + r.message);
+           std::string("no plan: ") + r.message + caused_by());
     return true;
   }
   if (outcome.stop_running_move) tree_->tree().halt();  // the world puts its thing back
@@ -562,6 +635,8 @@ bool ReactiveLoop::collect_plan() {
 void ReactiveLoop::install(plan::PlanResult& r, bool first, const Outcome& outcome) {
   recurring_ = cycle_has_moves(r.plan);
   tree_done_ = false;
+  act_now_ = true;  // the new tree ticks before time passes
+  last_intervention_.reset();  // the plan has taken it in
   const std::vector<plan::ActionTuple> tuples = planner_->action_tuples(r.plan);
   const PlanEvent ev{first, r, tuples, outcome.states, outcome.placement, outcome.hand};
   for (auto* o : observers_) o->on_plan(world_.time(), ev);

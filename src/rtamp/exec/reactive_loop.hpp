@@ -5,7 +5,8 @@
 // attached EpisodeObservers; it links no simulator.
 //
 // One step() is one iteration: let time pass (a tick period, or — in a
-// discrete-event world — up to the next event), observe, decide, tick.
+// discrete-event world — up to the next event, see Liveness), observe,
+// decide, tick.
 //
 // The observed run. The loop keeps the run that actually happened as a
 // sequence of symbolic states (where every thing is; a held thing counts as
@@ -29,9 +30,16 @@
 // way to satisfy the task (no tracked state can reach acceptance), the
 // episode ends with EndReason::Unsatisfiable at once.
 //
-// Failures. A failed move is fed back to the planner (Planner::forbid_move)
-// until the world changes, so the loop never replans an identical failing
-// plan; after max_consecutive_failures failed moves in a row it gives up.
+// Failures. A move that failed undisturbed is remembered with the state it
+// started from: every plan from that state avoids it (Planner::forbid_move)
+// while some plan can, and when max_failures_per_move failures of the same
+// move from the same state have happened — whatever succeeded in between —
+// the episode gives up, naming the move and the rule.
+//
+// Liveness. Time passes only after the tree has been ticked on the present:
+// the first tick comes before any time passes, a new plan or a due tree
+// change ticks at once, and a discrete-event world is advanced at most one
+// tick period while the arm is free (never past a moment the robot could act).
 //
 // Invariants: at most one move runs; the tree is ticked only while the world
 // is not busy; observers see every intervention, plan and tree change; on
@@ -74,7 +82,7 @@ struct LoopOptions {
   PlanningMode planning = PlanningMode::Worker;
   double max_time = 900;       // s of world time before giving up
   double tick_period = 0.02;   // s between ticks (continuous worlds)
-  int max_consecutive_failures = 5;
+  int max_failures_per_move = 5;  // undisturbed failures of one move from one state before giving up
   double outside_grace = 3;    // s a thing may be outside every location
   int cycles = 0;              // recurring tasks: succeed after this many cycles (0: never)
   std::uint64_t seed = 0;      // reported in the metrics
@@ -87,7 +95,7 @@ struct LoopOptions {
 // The loop's numbers, checked before anything runs (a NaN time limit or a
 // zero tick would run forever): throws rtamp::Error "loop option NAME: RULE,
 // found VALUE" unless max_time > 0 (inf: no limit), tick_period finite > 0,
-// outside_grace finite >= 0, max_consecutive_failures >= 1, cycles >= 0.
+// outside_grace finite >= 0, max_failures_per_move >= 1, cycles >= 0.
 // Returns `o`. The loop's constructor calls it; callers that open outputs
 // first (episode::run_episode) call it before.
 const LoopOptions& check_loop_options(const LoopOptions& o);
@@ -150,6 +158,7 @@ class ReactiveLoop {
 
   void begin();
   void finish(EndReason why, std::string reason, bool success = false);
+  std::string caused_by() const;
   void advance();
   void observe_world(world::Placement& symbolic, std::vector<std::string>& added, std::vector<std::string>& removed);
   void perceive();
@@ -159,7 +168,9 @@ class ReactiveLoop {
                        const std::vector<std::string>& removed);
   void apply_thing_changes(const std::vector<std::string>& added, const std::vector<std::string>& removed);
   void after_moves();
+  static std::string state_key(const world::Placement& p);
   Starts starts();
+  void forbid_failed_moves(const Starts& st);
   void request_plan(const std::string& why);
   plan::PlanResult plan_from(const Starts& st, Outcome& out);
   bool collect_plan();
@@ -194,9 +205,19 @@ class ReactiveLoop {
   bool begun_ = false, recurring_ = false;
   bool disturbed_ = false;               // the world changed while the current move ran
   bool tree_done_ = false;               // the tree succeeded: the completion check is due
-  bool planner_forbidden_dirty_ = false;  // the world changed: forget moves that failed before
+  bool act_now_ = false;                 // tick again before time passes (a new tree, a due change)
+  int same_time_steps_ = 0;
+  static constexpr int kMaxSameTimeSteps = 100;
   int zero_steps_ = 0;
-  int failures_seen_ = 0, successes_seen_ = 0, consecutive_failures_ = 0;
+  int failures_seen_ = 0;
+  // Undisturbed failures: state the move started from -> action -> how often.
+  struct FailedMove {
+    std::string thing, to;
+    int count = 0;
+  };
+  std::map<std::string, std::map<std::string, FailedMove>> failed_moves_;
+  std::string move_start_state_;              // state_key of the run when the running move began
+  std::optional<WorldEvent> last_intervention_;  // the last applied one (named by an end it caused)
   std::atomic<int> stop_{0};
   EpisodeMetrics metrics_;
   std::chrono::steady_clock::time_point wall0_;

@@ -52,8 +52,6 @@ void check(const SymbolicWorldOptions& o) {
   if (!(o.speed > 0 && std::isfinite(o.speed))) throw Error("symbolic world: speed must be finite and > 0");
   if (!(o.failure_probability >= 0 && o.failure_probability <= 1))
     throw Error("symbolic world: failure_probability must be in [0, 1]");
-  if (!(o.random_rate >= 0 && std::isfinite(o.random_rate)))
-    throw Error("symbolic world: random_rate must be finite and >= 0");
   if (o.fails_in != Phase::Approach && o.fails_in != Phase::Grasp && o.fails_in != Phase::Carry &&
       o.fails_in != Phase::Place)
     throw Error("symbolic world: fails_in must be approach, grasp, carry or place");
@@ -83,7 +81,7 @@ const char* to_string(Phase p) {
 }
 
 SymbolicWorld::SymbolicWorld(const world::Scenario& scenario, SymbolicWorldOptions options)
-    : options_(std::move(options)), regions_(scenario.regions), geometry_(scenario) {
+    : options_(std::move(options)), regions_(scenario.regions), geometry_(scenario), table_(world::table_top(scenario)) {
   check(options_);
   for (const auto& c : scenario.containers) {
     ContainerInfo info{c.cls, c.capacity, c.size};
@@ -91,18 +89,12 @@ SymbolicWorld::SymbolicWorld(const world::Scenario& scenario, SymbolicWorldOptio
     container_order_.push_back(c.name);
     class_is_container_[c.cls] = true;
     class_template_.emplace(c.cls, info);
-    names_ever_.insert(c.name);
   }
   for (const auto& o : scenario.objects) {
-    if (!class_is_container_.count(o.cls)) {
-      class_is_container_[o.cls] = false;
-      object_classes_.push_back(o.cls);
-    }
+    class_is_container_.emplace(o.cls, false);
     class_object_size_.emplace(o.cls, o.size);
     object_size_[o.name] = o.size;
-    names_ever_.insert(o.name);
   }
-  for (const auto& r : regions_) names_ever_.insert(r.name);
   placement_ = world::initial_placement(scenario);
   for (const auto& o : scenario.objects)
     if (placement_.things[o.name].location == world::kNoLocation) loose_[o.name] = o.position;
@@ -120,35 +112,8 @@ SymbolicWorld::SymbolicWorld(const world::Scenario& scenario, SymbolicWorldOptio
   home_ = {base[0], base[1], base[2] + options_.home_height};
   hand_point_ = home_;
 
-  // Two independent seeded streams (failures, interventions): splitmix64 states.
-  fail_rng_ = options_.seed * 0x9E3779B97F4A7C15ull + 0x632BE59BD9B4E019ull;
-  iv_rng_ = (options_.seed ^ 0xD1B54A32D192ED03ull) * 0xBF58476D1CE4E5B9ull + 1;
-
-  script_ = options_.script;
-  std::stable_sort(
-      script_.begin(), script_.end(),
-      [](const world::Intervention& a, const world::Intervention& b) { return a.time < b.time; });
-  if (options_.random_rate > 0 && !options_.random_kinds.empty()) schedule_random(0);
-  while (next_script_ < script_.size() && script_[next_script_].time <= 0) apply_now(script_[next_script_++]);
-}
-
-// ---------------------------------------------------------------- random streams
-
-std::uint64_t SymbolicWorld::next_u64(std::uint64_t& state) {
-  std::uint64_t z = (state += 0x9E3779B97F4A7C15ull);
-  z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-  z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-  return z ^ (z >> 31);
-}
-
-double SymbolicWorld::next_unit(std::uint64_t& state) {
-  return static_cast<double>(next_u64(state) >> 11) * 0x1.0p-53;
-}
-
-void SymbolicWorld::schedule_random(double from) {
-  const double u = next_unit(iv_rng_);
-  const double t = std::max(from, options_.random_start) - std::log1p(-u) / options_.random_rate;
-  next_random_ = t < options_.random_end ? t : kInf;
+  // The failures' seeded stream (portable).
+  fail_rng_ = SplitMix64(options_.seed * 0x9E3779B97F4A7C15ull + 0x632BE59BD9B4E019ull);
 }
 
 // ---------------------------------------------------------------- locations
@@ -378,8 +343,8 @@ void SymbolicWorld::start(const Move& m) {
   why_.clear();
 
   // Always two draws per move, so that the stream stays aligned whatever the options.
-  const double u = next_unit(fail_rng_);
-  const std::uint64_t k = next_u64(fail_rng_) % 4;
+  const double u = fail_rng_.unit();
+  const std::uint64_t k = fail_rng_.below(4);
   static constexpr Phase kFailPhases[] = {Phase::Approach, Phase::Grasp, Phase::Carry, Phase::Place};
   if (options_.fails && options_.fails(m)) {
     fail_at_ = options_.fails_in;
@@ -498,30 +463,13 @@ void SymbolicWorld::lose_held(const std::string& why) {
 
 // ---------------------------------------------------------------- time
 
-double SymbolicWorld::next_event_time() const {
-  double t = next_random_;
-  if (phase_ != Phase::Idle) t = std::min(t, phase_end_);
-  if (next_script_ < script_.size()) t = std::min(t, std::max(time_, script_[next_script_].time));
-  return t;
-}
+double SymbolicWorld::next_event_time() const { return phase_ != Phase::Idle ? phase_end_ : kInf; }
 
 void SymbolicWorld::advance(double dt) {
   const double target = time_ + std::max(0.0, dt);
-  for (;;) {
-    const double t_phase = phase_ != Phase::Idle ? phase_end_ : kInf;
-    const double t_script =
-        next_script_ < script_.size() ? std::max(time_, script_[next_script_].time) : kInf;
-    const double t = std::min({t_phase, t_script, next_random_});
-    if (!(t <= target + kTimeSlack)) break;
-    time_ = std::max(time_, t);
-    if (t_phase == t) {
-      end_phase();
-    } else if (t_script == t) {
-      apply_now(script_[next_script_++]);
-    } else {
-      apply_now(random_intervention());
-      schedule_random(time_);
-    }
+  while (phase_ != Phase::Idle && phase_end_ <= target + kTimeSlack) {
+    time_ = std::max(time_, phase_end_);
+    end_phase();
   }
   time_ = std::max(time_, target);
 }
@@ -577,6 +525,8 @@ WorldEvent SymbolicWorld::apply_now(world::Intervention iv) {
     return "";
   };
   const std::string* where = iv.subject.empty() ? nullptr : placement_.location_of(iv.subject);
+  if (iv.position)
+    if (std::string off = world::off_table(table_, *iv.position); !off.empty()) return done(false, std::move(off));
 
   switch (iv.kind) {
     case Kind::Relocate: {
@@ -621,10 +571,8 @@ WorldEvent SymbolicWorld::apply_now(world::Intervention iv) {
         container_order_.push_back(iv.subject);
       } else {
         object_size_[iv.subject] = new_body(iv.cls, false).size;
-        if (cls == class_is_container_.end()) object_classes_.push_back(iv.cls);
       }
       class_is_container_[iv.cls] = cont;
-      names_ever_.insert(iv.subject);
       placement_.set(iv.subject, to, iv.cls, cont);
       put(iv.subject, to, p);
       return done(true, iv.subject + " (" + iv.cls + ") added in " + to);
@@ -678,71 +626,6 @@ WorldEvent SymbolicWorld::apply_now(world::Intervention iv) {
       return done(false, "a region cannot be added to a running world (add-region is a change for the planner)");
   }
   return done(false, "unknown intervention");
-}
-
-std::string SymbolicWorld::fresh_name() {
-  for (;;) {
-    std::string n = "x" + std::to_string(++added_);
-    if (!names_ever_.count(n) && !placement_.things.count(n) && !is_region(n)) return n;
-  }
-}
-
-std::string SymbolicWorld::random_target(const std::string& thing, const Body& b, bool regions_only) {
-  std::vector<std::string> all, room;
-  const std::string* at = placement_.location_of(thing);
-  for (const auto& loc : location_names()) {
-    if (regions_only && !is_region(loc)) continue;
-    if (at && *at == loc) continue;
-    all.push_back(loc);
-    if (can_hold(loc, thing, b)) room.push_back(loc);
-  }
-  const auto& from = room.empty() ? all : room;
-  if (from.empty()) return "";
-  return from[next_u64(iv_rng_) % from.size()];
-}
-
-world::Intervention SymbolicWorld::random_intervention() {
-  world::Intervention iv;
-  iv.time = time_;
-  iv.kind = options_.random_kinds[next_u64(iv_rng_) % options_.random_kinds.size()];
-  auto pick = [&](bool containers) -> std::string {
-    std::vector<std::string> names;
-    for (const auto& [n, t] : placement_.things)
-      if (t.container == containers) names.push_back(n);
-    return names.empty() ? "" : names[next_u64(iv_rng_) % names.size()];
-  };
-  switch (iv.kind) {
-    case Kind::Relocate: {
-      std::vector<std::string> names;
-      for (const auto& [n, t] : placement_.things) names.push_back(n);
-      if (!names.empty()) iv.subject = names[next_u64(iv_rng_) % names.size()];
-      iv.location = random_target(iv.subject, body_of(iv.subject), is_container(iv.subject));
-      break;
-    }
-    case Kind::Add:
-      iv.subject = fresh_name();
-      iv.cls =
-          object_classes_.empty() ? "block" : object_classes_[next_u64(iv_rng_) % object_classes_.size()];
-      iv.location = random_target(iv.subject, new_body(iv.cls, false), false);
-      break;
-    case Kind::AddContainer:
-      iv.subject = fresh_name();
-      iv.cls = class_template_.empty() ? "tray" : class_template_.begin()->first;
-      iv.location = random_target(iv.subject, new_body(iv.cls, true), true);
-      break;
-    case Kind::Remove:
-      iv.subject = pick(false);
-      break;
-    case Kind::RemoveContainer:
-      iv.subject = pick(true);
-      break;
-    case Kind::TakeFromGripper:
-      if (next_u64(iv_rng_) % 2) iv.location = random_target(held(), body_of(held()), is_container(held()));
-      break;
-    case Kind::AddRegion:
-      break;  // refused by apply
-  }
-  return iv;
 }
 
 // ---------------------------------------------------------------- invariants

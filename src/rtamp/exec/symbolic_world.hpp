@@ -1,6 +1,8 @@
 // SymbolicWorld: an exec::World (world.hpp) with no physics — an exact
 // symbolic placement, a discrete-event model of the arm's moves, seeded
-// failures and a seeded or scripted person (world::Intervention). It runs the
+// failures, and the rules of applying a person's intervention (the
+// intervention capability, intervenable.hpp; the person who decides what and
+// when is world::Person, driving it through exec::PersonWorld). It runs the
 // reactive loop (the paper's Algorithm 1) thousands of times a second for
 // property tests and is `rtamp run --world symbolic`. docs/symbolic-world.md
 // documents the timing model and every intervention's semantics in full.
@@ -25,7 +27,7 @@
 //  - an intervention is applied whole or refused with a reason, never partly,
 //    never with an exception; a held thing is never silently deleted;
 //  - for a given scenario, options and sequence of calls, everything (times,
-//    failures, random interventions) is the same on every run and platform.
+//    failures) is the same on every run and platform.
 #pragma once
 
 #include <cstdint>
@@ -37,11 +39,14 @@
 #include <string>
 #include <vector>
 
+#include "rtamp/exec/intervenable.hpp"
 #include "rtamp/exec/world.hpp"
+#include "rtamp/util/splitmix.hpp"
 #include "rtamp/world/fit.hpp"
 #include "rtamp/world/geometry.hpp"
 #include "rtamp/world/placement.hpp"
 #include "rtamp/world/scenario.hpp"
+#include "rtamp/world/table.hpp"
 
 namespace rtamp::exec {
 
@@ -74,20 +79,6 @@ struct SymbolicWorldOptions {
   std::function<bool(const Move&)> fails;
   Phase fails_in = Phase::Grasp;
 
-  // Interventions: the script is applied at each entry's time (sorted stably
-  // by time; entries at time <= 0 are applied by the constructor). For the
-  // scenario's own operator, pass scenario.interventions.
-  std::vector<world::Intervention> script;
-  // Random interventions: a Poisson process of `random_rate` per second of
-  // world time in [random_start, random_end), each of a kind drawn uniformly
-  // from random_kinds, with targets drawn among what exists at that time.
-  double random_rate = 0;
-  double random_start = 0;
-  double random_end = std::numeric_limits<double>::infinity();
-  std::vector<world::Intervention::Kind> random_kinds{
-      world::Intervention::Kind::Relocate,        world::Intervention::Kind::Add,
-      world::Intervention::Kind::Remove,          world::Intervention::Kind::AddContainer,
-      world::Intervention::Kind::RemoveContainer, world::Intervention::Kind::TakeFromGripper};
   // Capacity of an added container whose class no scenario container has
   // (otherwise: the capacity of the first scenario container of its class).
   int added_container_capacity = 4;
@@ -101,20 +92,20 @@ struct SymbolicWorldOptions {
   std::uint64_t seed = 1;
 };
 
-class SymbolicWorld final : public World {
+class SymbolicWorld final : public World, public Intervenable {
  public:
   // Throws rtamp::Error if the scenario's initial placement breaks a
   // capacity or an option is out of range (an initial placement that breaks
   // the footprint rules is accepted, as task::System accepts it)
-  // (durations < 0, speed <= 0, a probability outside [0, 1], rate < 0,
+  // (durations < 0, speed <= 0, a probability outside [0, 1],
   // fails_in not one of the four failing phases, capacity < 1).
   explicit SymbolicWorld(const world::Scenario& scenario, SymbolicWorldOptions options = {});
 
   // --- exec::World
   double time() const override { return time_; }
-  // Processes, in time order, every phase end and intervention due by
-  // time() + dt (within 1 ns); a phase end goes before an intervention at the
-  // same time. dt <= 0 only applies what is due now.
+  // Processes, in time order, every phase end due by time() + dt (within
+  // 1 ns); dt <= 0 only processes what is due now. (A PersonWorld applies a
+  // person's interventions between those, a phase end first at equal times.)
   void advance(double dt) override;
   double next_event_time() const override;
   world::Placement observe() override { return placement_; }
@@ -128,6 +119,12 @@ class SymbolicWorld final : public World {
   bool busy() override { return halted_ && phase_ != Phase::Idle; }
   std::string hand() const override { return hand_; }
   std::vector<WorldEvent> take_events() override;
+  Intervenable* intervenable() override { return this; }
+
+  // --- exec::Intervenable
+  world::Placement true_placement() override { return placement_; }
+  // Applies one intervention now (at time()), as a person would.
+  WorldEvent apply(const world::Intervention& iv) override;
 
   // --- for tests and tools
   // The exact placement (a held thing at kInHand); observe() returns a copy.
@@ -139,8 +136,6 @@ class SymbolicWorld final : public World {
   world::Vec3 hand_point() const;
   // Every intervention applied or refused so far, in order.
   const std::vector<WorldEvent>& history() const { return history_; }
-  // Applies one intervention now (at time()), as a person would.
-  WorldEvent apply(const world::Intervention& iv);
   // Capacity of a region or present container; -1 if there is none of that name.
   int capacity(const std::string& location) const;
   // The footprint rules in task::System's units (task::System::kAreaUnit m²,
@@ -211,14 +206,6 @@ class SymbolicWorld final : public World {
   WorldEvent apply_now(world::Intervention iv);
   void erase(const std::string& thing);
   void remove_container_spilling(const std::string& name, std::string* detail);
-  world::Intervention random_intervention();
-  std::string random_target(const std::string& thing, const Body& b, bool regions_only);
-  void schedule_random(double from);
-  std::string fresh_name();
-
-  // Seeded streams.
-  std::uint64_t next_u64(std::uint64_t& state);
-  double next_unit(std::uint64_t& state);  // uniform in [0, 1)
 
   SymbolicWorldOptions options_;
   std::vector<world::Region> regions_;
@@ -226,14 +213,13 @@ class SymbolicWorld final : public World {
   std::vector<std::string> container_order_;  // declaration / addition order of present containers
   std::map<std::string, bool> class_is_container_;
   std::map<std::string, ContainerInfo> class_template_;  // first scenario container of each class
-  std::vector<std::string> object_classes_;
   std::map<std::string, world::Vec3> object_size_;        // present objects
   std::map<std::string, world::Vec3> class_object_size_;  // first scenario object of each class
   std::set<std::string> unmoved_;  // things at the location of the initial placement, never moved since
-  std::set<std::string> names_ever_;
   world::Placement placement_;
   std::map<std::string, world::Vec3> loose_;  // points of things at "none"
   world::Geometry geometry_;                  // for interventions given by position
+  world::TableTop table_;                     // a position off it is refused
   world::Vec3 home_{0, 0, 0};
 
   double time_ = 0;
@@ -253,12 +239,8 @@ class SymbolicWorld final : public World {
   std::string hand_;  // "" = home
   world::Vec3 hand_point_{0, 0, 0};
 
-  // Interventions.
-  std::vector<world::Intervention> script_;
-  std::size_t next_script_ = 0;
-  double next_random_ = kInf;
-  int added_ = 0;
-  std::uint64_t fail_rng_ = 0, iv_rng_ = 0;
+  // Interventions applied (reported by take_events(), kept in history()).
+  SplitMix64 fail_rng_;
   std::vector<WorldEvent> pending_, history_;
 };
 

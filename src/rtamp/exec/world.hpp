@@ -9,7 +9,9 @@
 //  - observes where every present thing is (observe),
 //  - starts one move at a time, polls it, and may halt it (start / poll / halt / busy).
 // People act on the world on their own: the loop learns of their interventions
-// by observing; take_events() only reports them for the log.
+// by observing; take_events() only reports them for the log. A world a
+// simulated person can act on says so (intervenable(), intervenable.hpp); a
+// PersonWorld (person_world.hpp) then drives it — the loop still only observes.
 //
 // Contract (what the loop relies on):
 //  - observe() lists every present thing with its class; a thing the gripper
@@ -26,8 +28,14 @@
 //  - A thing taken out of the gripper by a person ends the running move with
 //    Failed.
 //  - next_event_time() lets a discrete-event world say when something will
-//    next happen (the loop jumps there instead of ticking); continuous worlds
-//    return infinity and are ticked at the loop's tick period.
+//    next happen; continuous worlds return infinity and are ticked at the
+//    loop's tick period. The loop is live: it ticks the tree before it lets
+//    time pass, and while the arm is free it never advances a world more than
+//    one tick period, so a discrete-event world jumps only over moments in
+//    which the robot could not act anyway (a move's phase, a halt's recovery).
+//  - The loop checks the world's answers: time() finite and never going
+//    back, observe() naming only regions, present containers, "hand" and
+//    "none"; otherwise the episode ends with an error naming the method.
 #pragma once
 
 #include <limits>
@@ -38,6 +46,8 @@
 #include "rtamp/world/scenario.hpp"
 
 namespace rtamp::exec {
+
+class Intervenable;
 
 // One pick-and-place move as the loop asks for it: pick `thing` (where the
 // plan believes it is: `from`) and place it at location `to`.
@@ -86,6 +96,9 @@ class World {
   virtual double distance_travelled() const { return 0; }
   // Interventions applied or refused since the last call (for logs).
   virtual std::vector<WorldEvent> take_events() { return {}; }
+  // The optional capability to take a person's interventions
+  // (intervenable.hpp); null if people act on this world on their own.
+  virtual Intervenable* intervenable() { return nullptr; }
 };
 
 }  // namespace rtamp::exec

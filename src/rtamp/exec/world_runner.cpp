@@ -25,7 +25,11 @@ bt::Status WorldRunner::running(const plan::ActionTuple&) {
 
 void WorldRunner::halt(const plan::ActionTuple&) {
   if (current_.action.empty()) return;
-  if (!waiting_) {
+  if (!waiting_ && placed && placed(current_)) {
+    world_.halt();  // only the retreat is cut short
+    ++succeeded;
+    event("finished", current_.action, "placed; halted while the arm retreated");
+  } else if (!waiting_) {
     world_.halt();
     event("halted", current_.action, "");
   }

@@ -4,7 +4,10 @@
 // A move the tree starts while the world is still busy (making the arm safe
 // after a halt) waits and begins once the world is free. Every start, end and
 // halt is reported through on_event ("start" | "finished" | "failed" |
-// "halted", action, reason).
+// "halted", action, reason). A move halted after it has put its thing where
+// it was going (placed(), e.g. a state-form tree whose post-condition holds
+// while the arm retreats) is done: it counts and is reported as "finished",
+// whatever tree form halted it.
 // Invariants: at most one move is current(); current() is "" when none runs
 // or waits; succeeded + failed counts every move that began and ended.
 #pragma once
@@ -33,6 +36,8 @@ class WorldRunner final : public ActionRunner {
   std::string last_failure;  // "move(o1, r2): why"
   Move last_failed;          // the move that failed last
   std::function<void(const char*, const std::string&, const std::string&)> on_event;
+  // Whether the running move's thing is already at its destination (as last perceived).
+  std::function<bool(const Move&)> placed;
 
  private:
   bt::Status begin();

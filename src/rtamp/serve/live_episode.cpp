@@ -188,19 +188,15 @@ void LiveEpisode::handle(const Request& r, Reply reply) {
   playback_.wake();
 }
 
-world::Placement LiveEpisode::present() const {
-  if (const exec::SymbolicWorld* w = episode_->symbolic_world()) return w->truth();
-  // MuJoCo: the bodies in the scene (the check needs names and kinds, not locations).
-  world::Placement p;
-  const sim::Simulation& sim = episode_->sim_world()->session().sim();
-  for (const sim::Thing& t : sim.things())
-    if (t.present && !t.name.empty()) p.set(t.name, "", t.cls, t.container);
-  return p;
-}
+// What is where now, through the world's intervention capability.
+world::Placement LiveEpisode::present() { return hands().true_placement(); }
 
-exec::WorldEvent LiveEpisode::apply(const world::Intervention& iv) {
-  if (exec::SymbolicWorld* w = episode_->symbolic_world()) return w->apply(iv);
-  return episode_->sim_world()->apply(iv);
+exec::WorldEvent LiveEpisode::apply(const world::Intervention& iv) { return hands().apply(iv); }
+
+exec::Intervenable& LiveEpisode::hands() {
+  exec::Intervenable* h = episode_->world().intervenable();
+  if (!h) throw Error("the served world cannot take interventions");
+  return *h;
 }
 
 void LiveEpisode::service() {

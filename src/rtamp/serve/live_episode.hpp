@@ -11,8 +11,8 @@
 //    `frame_record_period` s of world time (replays move things with them);
 //  - playback state after each control.
 // Pages' interventions (request.hpp) are queued and applied on the loop's
-// thread between slices of world time, through the world — SimWorld::apply
-// (the MuJoCo operator) or SymbolicWorld::apply — after InterventionCheck: so
+// thread between slices of world time, through the world's intervention
+// capability (exec/intervenable.hpp) after InterventionCheck: so
 // they enter the log as `intervention` records exactly like scripted ones, and
 // the loop reacts to them as to any person's. Each gets one reply: refused
 // (the check's or the world's reason), or applied, with the server-side
@@ -33,6 +33,7 @@
 #include <vector>
 
 #include "rtamp/episode/episode.hpp"
+#include "rtamp/exec/intervenable.hpp"
 #include "rtamp/serve/frame_source.hpp"
 #include "rtamp/serve/hub.hpp"
 #include "rtamp/serve/intervention_check.hpp"
@@ -80,8 +81,9 @@ class LiveEpisode final : public RequestHandler {
   void service();           // loop thread: apply queued interventions
   void after_slice();       // loop thread: frames
   void emit_frame(bool force);
-  world::Placement present() const;  // the things present now, exactly
+  world::Placement present();  // the things present now, exactly
   exec::WorldEvent apply(const world::Intervention& iv);
+  exec::Intervenable& hands();  // the world's intervention capability
   void publish_state();
 
   // Declared in the order things may refer to each other: the loop (in

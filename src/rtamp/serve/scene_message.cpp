@@ -11,6 +11,7 @@
 #include "rtamp/sim/mjcf_builder.hpp"
 #include "rtamp/sim/scene_style.hpp"
 #include "rtamp/world/geometry.hpp"
+#include "rtamp/world/table.hpp"
 
 namespace rtamp::serve {
 
@@ -33,7 +34,7 @@ std::string class_colour_hex(const std::string& cls) { return hex(sim::class_col
 
 std::string hello_fields(const world::Scenario& s, const automata::Automaton& ba, const std::string& mode,
                          const std::string& world_name, std::optional<double> replay_duration) {
-  const sim::TableTop top = sim::table_top(s);
+  const world::TableTop top = world::table_top(s);
   json scene;
   scene["table"] = {{"center", {(top.xmin + top.xmax) / 2, (top.ymin + top.ymax) / 2, -0.025}},
                     {"size", {top.xmax - top.xmin, top.ymax - top.ymin, 0.05}}};

@@ -2,6 +2,7 @@
 #include "rtamp/sim/scene_style.hpp"
 
 #include "rtamp/sim/ur5_model.hpp"
+#include "rtamp/world/table.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -135,22 +136,6 @@ std::array<double, 3> region_colour(std::size_t i) {
   return palette[i % palette.size()];
 }
 
-TableTop table_top(const world::Scenario& s) {
-  double xmin = s.robot.base[0] - 0.25, xmax = s.robot.base[0] + 0.25;
-  double ymin = s.robot.base[1] - 0.25, ymax = s.robot.base[1] + 0.25;
-  auto grow = [&](const world::Vec3& c, const world::Vec3& sz) {
-    xmin = std::min(xmin, c[0] - sz[0] / 2);
-    xmax = std::max(xmax, c[0] + sz[0] / 2);
-    ymin = std::min(ymin, c[1] - sz[1] / 2);
-    ymax = std::max(ymax, c[1] + sz[1] / 2);
-  };
-  for (const auto& r : s.regions) grow(r.center, r.size);
-  for (const auto& c : s.containers) grow(c.position, c.size);
-  for (const auto& o : s.objects) grow(o.position, o.size);
-  xmin -= 0.15, xmax += 0.15, ymin -= 0.15, ymax += 0.15;
-  return {xmin, xmax, ymin, ymax};
-}
-
 world::Vec3 parking_position(int index) { return {3.0 + 0.5 * index, 3.0, -3.0}; }
 
 double object_base_z(const world::Scenario& s, const world::Object& o) {
@@ -170,7 +155,7 @@ std::string build_mjcf(const world::Scenario& s, const MjcfOptions& opt) {
   for (const auto& o : s.objects) check_name(o.name, o.where);
 
   // Extent of everything on the table, for the table top and the camera.
-  const TableTop top = table_top(s);
+  const world::TableTop top = world::table_top(s);
   const double xmin = top.xmin, xmax = top.xmax, ymin = top.ymin, ymax = top.ymax;
   const double cx = (xmin + xmax) / 2, cy = (ymin + ymax) / 2;
 

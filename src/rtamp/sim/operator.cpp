@@ -8,6 +8,7 @@
 
 #include "rtamp/util/error.hpp"
 #include "rtamp/util/format.hpp"
+#include "rtamp/world/table.hpp"
 
 namespace rtamp::sim {
 
@@ -31,42 +32,7 @@ std::string fmt(const world::Vec3& p) {
 
 }  // namespace
 
-Operator::Operator(Simulation& sim, OperatorOptions options)
-    : sim_(sim), options_(std::move(options)), rng_(options_.seed) {
-  std::stable_sort(options_.script.begin(), options_.script.end(),
-                   [](const auto& a, const auto& b) { return a.time < b.time; });
-  if (!(options_.random_rate >= 0 && std::isfinite(options_.random_rate)))
-    throw Error("operator: random_rate must be finite and >= 0 per second, found " +
-                format_number(options_.random_rate));
-  next_random_ = std::numeric_limits<double>::infinity();
-  if (options_.random_rate > 0) {
-    next_random_ = options_.random_start;
-    schedule_random();
-  }
-}
-
-void Operator::schedule_random() {
-  std::exponential_distribution<double> gap(options_.random_rate);
-  next_random_ += gap(rng_);
-}
-
-double Operator::next_time() const {
-  double t = next_random_;
-  if (next_script_ < options_.script.size()) t = std::min(t, options_.script[next_script_].time);
-  return t;
-}
-
-std::vector<OperatorEvent> Operator::update() {
-  std::vector<OperatorEvent> out;
-  const double now = sim_.time();
-  while (next_script_ < options_.script.size() && options_.script[next_script_].time <= now)
-    out.push_back(apply(options_.script[next_script_++]));
-  while (next_random_ <= now) {
-    out.push_back(apply(random_intervention()));
-    schedule_random();
-  }
-  return out;
-}
+Operator::Operator(Simulation& sim) : sim_(sim) {}
 
 world::Geometry Operator::current_geometry() const { return sim::current_geometry(sim_); }
 
@@ -130,55 +96,12 @@ bool Operator::overlaps_anything(const world::Vec3& base, const world::Vec3& siz
   return false;
 }
 
-std::string Operator::random_location(const std::string& avoid) {
-  std::vector<std::string> locs;
+std::optional<world::Vec3> Operator::first_spot(const std::string& avoid, const world::Vec3& size,
+                                                const std::vector<int>& exclude) {
   for (const auto& r : sim_.scenario().regions)
-    if (r.name != avoid) locs.push_back(r.name);
-  for (const auto& t : sim_.things())
-    if (t.container && t.present && !t.name.empty() && t.name != avoid) locs.push_back(t.name);
-  if (locs.empty()) return avoid;
-  std::uniform_int_distribution<std::size_t> pick(0, locs.size() - 1);
-  return locs[pick(rng_)];
-}
-
-world::Intervention Operator::random_intervention() {
-  world::Intervention iv;
-  iv.time = sim_.time();
-  std::uniform_int_distribution<std::size_t> kind(0, options_.random_kinds.size() - 1);
-  iv.kind = options_.random_kinds.empty() ? Kind::Relocate : options_.random_kinds[kind(rng_)];
-  std::vector<std::string> objects;
-  for (std::size_t i = 0; i < sim_.things().size(); ++i) {
-    const Thing& t = sim_.things()[i];
-    if (!t.container && t.present && !t.name.empty() && sim_.held() != static_cast<int>(i))
-      objects.push_back(t.name);
-  }
-  auto any_object = [&]() -> std::string {
-    if (objects.empty()) return "";
-    std::uniform_int_distribution<std::size_t> pick(0, objects.size() - 1);
-    return objects[pick(rng_)];
-  };
-  switch (iv.kind) {
-    case Kind::Relocate:
-    case Kind::Remove:
-      iv.subject = any_object();
-      break;
-    case Kind::Add:
-      iv.subject = "added" + std::to_string(++added_);
-      iv.cls = "block";
-      break;
-    case Kind::AddContainer:
-      iv.subject = "tray" + std::to_string(++added_);
-      iv.cls = "tray";
-      break;
-    case Kind::RemoveContainer:
-      for (const auto& t : sim_.things())
-        if (t.container && t.present && !t.name.empty()) iv.subject = t.name;
-      break;
-    case Kind::TakeFromGripper:
-    case Kind::AddRegion:  // refused by apply
-      break;
-  }
-  return iv;
+    if (r.name != avoid)
+      if (auto p = spot_in(r.name, size, exclude)) return p;
+  return std::nullopt;
 }
 
 OperatorEvent Operator::apply(const world::Intervention& iv) {
@@ -204,9 +127,12 @@ OperatorEvent Operator::apply(const world::Intervention& iv) {
       if (overlaps_anything(*iv.position, size, exclude)) return std::nullopt;
       return *iv.position;
     }
-    std::string loc = iv.location.empty() ? random_location(avoid) : iv.location;
-    return spot_in(loc, size, exclude);
+    return iv.location.empty() ? first_spot(avoid, size, exclude) : spot_in(iv.location, size, exclude);
   };
+
+  if (iv.position)
+    if (std::string off = world::off_table(world::table_top(sim_.scenario()), *iv.position); !off.empty())
+      return refuse(std::move(off));
 
   switch (iv.kind) {
     case Kind::Relocate: {

@@ -1,13 +1,16 @@
-// The human operator (paper Section IV-A "unexpected human intervention", Section V's
-// operator who relocates, adds and removes blocks and hands over a tray): applies
-// world::Intervention's to the simulation at scripted times and, optionally, random
-// ones at seeded Poisson times.
+// How a person's intervention (paper Section IV-A "unexpected human intervention",
+// Section V's operator who relocates, adds and removes blocks and hands over a tray)
+// is carried out in the MuJoCo scene: the physics of applying one. Who intervenes
+// and when — a script, random interventions — is world::Person's (world/person.hpp),
+// which drives the simulation through episode::SimWorld's intervention capability
+// or sim::Session.
 //
 // Semantics of each kind (world::Intervention):
-//  - Relocate: move `subject` to `position`, else to a free spot of `location`, else to
-//    a free spot of a random other location. Moving a container carries its contents.
+//  - Relocate: move `subject` to `position`, else to a free spot of `location`, else
+//    (no location given) of the first other region with one. Moving a container carries
+//    its contents.
 //  - Add / AddContainer: a reserved spare body gets the name and appears at `position`
-//    or a free spot of `location` (a random region when none is given).
+//    or a free spot of `location` (the first region with one when none is given).
 //  - Remove / RemoveContainer: the thing is hidden; a removed tray's contents drop to
 //    the table where it stood — or, for a tray in the gripper, are set down in free
 //    spots of the region under it, else of the nearest region with room (removed too
@@ -23,7 +26,6 @@
 
 #include <cstdint>
 #include <optional>
-#include <random>
 #include <string>
 #include <vector>
 
@@ -32,16 +34,6 @@
 #include "rtamp/world/scenario.hpp"
 
 namespace rtamp::sim {
-
-struct OperatorOptions {
-  std::vector<world::Intervention> script;  // applied when sim time reaches .time
-  double random_rate = 0;                   // random interventions per second of sim time
-  double random_start = 0;                  // no random intervention before this time
-  std::vector<world::Intervention::Kind> random_kinds{world::Intervention::Kind::Relocate,
-                                                      world::Intervention::Kind::Add,
-                                                      world::Intervention::Kind::Remove};
-  std::uint64_t seed = 1;
-};
 
 struct OperatorEvent {
   double time = 0;  // sim time it was applied
@@ -52,14 +44,10 @@ struct OperatorEvent {
 
 class Operator {
  public:
-  Operator(Simulation& sim, OperatorOptions options = {});
+  explicit Operator(Simulation& sim);
 
-  // Applies every intervention due by the current sim time; returns them (empty if none).
-  std::vector<OperatorEvent> update();
-  // Applies one intervention now.
+  // Applies one intervention now (between physics steps).
   OperatorEvent apply(const world::Intervention& iv);
-  // Time of the next scripted or random intervention (infinity if none).
-  double next_time() const;
   const std::vector<OperatorEvent>& history() const { return history_; }
 
  private:
@@ -71,16 +59,11 @@ class Operator {
   bool overlaps_anything(const world::Vec3& base, const world::Vec3& size, const std::vector<int>& exclude) const;
   std::vector<int> contents_of(int container) const;
   world::Geometry current_geometry() const;
-  std::string random_location(const std::string& avoid);
-  world::Intervention random_intervention();
-  void schedule_random();
+  // A free spot for `size` in the first region other than `avoid` that has one.
+  std::optional<world::Vec3> first_spot(const std::string& avoid, const world::Vec3& size,
+                                        const std::vector<int>& exclude);
 
   Simulation& sim_;
-  OperatorOptions options_;
-  std::mt19937_64 rng_;
-  std::size_t next_script_ = 0;
-  double next_random_ = 0;
-  int added_ = 0;
   std::vector<OperatorEvent> history_;
 };
 

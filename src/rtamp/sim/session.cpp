@@ -15,9 +15,9 @@ namespace {
 
 SessionOptions seeded(SessionOptions o, const world::Scenario& s) {
   o.perception.seed = o.seed * 2654435761u + 1;
-  o.op.seed = o.seed * 40503u + 7;
+  o.person.seed = o.seed * 40503u + 7;
   if (o.scripted_operator)
-    o.op.script.insert(o.op.script.end(), s.interventions.begin(), s.interventions.end());
+    o.person.script.insert(o.person.script.end(), s.interventions.begin(), s.interventions.end());
   return o;
 }
 
@@ -106,7 +106,9 @@ Session::Session(const world::Scenario& scenario, SessionOptions options)
       controller_(sim_, options_.controller),
       runner_(sim_, controller_, options_.skills),
       perception_(sim_, options_.perception),
-      operator_(sim_, options_.op) {
+      truth_(sim_, {}),
+      operator_(sim_),
+      person_(scenario, options_.person) {
   if (!options_.video_path.empty()) {
     renderer_ = std::make_unique<Renderer>(sim_, options_.render);
     video_ = std::make_unique<VideoWriter>(options_.video_path, renderer_->width(), renderer_->height(),
@@ -117,11 +119,11 @@ Session::Session(const world::Scenario& scenario, SessionOptions options)
 
 Session::~Session() = default;
 
+world::Placement Session::true_placement() { return truth_.observe().placement(); }
+
 void Session::after_step() {
-  if (operator_.next_time() <= sim_.time()) {
-    auto ev = operator_.update();
-    events_.insert(events_.end(), ev.begin(), ev.end());
-  }
+  if (person_.next_time() <= sim_.time())
+    while (auto iv = person_.due(sim_.time(), true_placement())) events_.push_back(operator_.apply(*iv));
   if (video_ && sim_.time() >= next_frame_) {
     renderer_->render(frame_);
     video_->add(frame_);

@@ -12,8 +12,8 @@
 // against the running simulation's names (the scenario's, and those an
 // operator added since), so a bad list moves nothing. Each action runs to SUCCESS or FAILURE; a failed action does not stop the list (the
 // next one starts from whatever state the world is in), so outcomes are reported per
-// action. Operator interventions (scripted and random) are applied between physics
-// steps whenever they are due. Rendering happens only when a video is being recorded.
+// action. The person's interventions (world/person.hpp: scripted and random) are
+// applied between physics steps whenever they are due. Rendering happens only when a video is being recorded.
 // Determinism: the same scenario, options and seed give the same episode.
 #pragma once
 
@@ -29,6 +29,7 @@
 #include "rtamp/sim/renderer.hpp"
 #include "rtamp/sim/skill_runner.hpp"
 #include "rtamp/world/names.hpp"
+#include "rtamp/world/person.hpp"
 
 namespace rtamp::sim {
 
@@ -49,9 +50,11 @@ struct SessionOptions {
   SkillRunnerOptions skills;
   ControllerOptions controller;
   PerceptionOptions perception;
-  OperatorOptions op;
-  bool scripted_operator = false;  // apply the scenario's interventions
-  std::uint64_t seed = 1;          // seeds perception and operator (overrides theirs)
+  // A person acting while the actions run (its script, random interventions);
+  // an episode leaves it empty and drives the world with exec::PersonWorld.
+  world::PersonOptions person;
+  bool scripted_operator = false;  // the person also applies the scenario's interventions
+  std::uint64_t seed = 1;          // seeds perception and the person (overrides theirs)
   std::string video_path;          // record the run when set
   int video_fps = 30;
   RenderOptions render;
@@ -79,6 +82,8 @@ class Session {
   SkillRunner& skills() { return runner_; }
   Perception& perception() { return perception_; }
   Operator& op() { return operator_; }
+  // Every present thing where it truly is (noise-free perception; held: "hand").
+  world::Placement true_placement();
 
   // Runs one action to completion. Throws rtamp::Error ("action:1:COL: ...",
   // column in a.text) before anything moves if it names an unknown thing or
@@ -105,7 +110,9 @@ class Session {
   Controller controller_;
   SkillRunner runner_;
   Perception perception_;
+  Perception truth_;  // noise-free
   Operator operator_;
+  world::Person person_;
   std::vector<OperatorEvent> events_;
   std::unique_ptr<Renderer> renderer_;
   std::unique_ptr<VideoWriter> video_;

@@ -6,6 +6,7 @@
 #include "rtamp/world/geometry.hpp"
 #include "rtamp/world/names.hpp"
 #include "rtamp/world/suggest.hpp"
+#include "rtamp/world/table.hpp"
 
 namespace rtamp::world {
 
@@ -59,6 +60,8 @@ void check_intervention(const Intervention& iv, const Scenario& s, const Interve
       fail("", yaml ? std::string("names no object (give ") + field + ": NAME)" : "names no object (give a 'subject')");
   };
   auto check_target = [&](bool subject_is_container) {
+    if (iv.position)
+      if (const std::string off = off_table(table_top(s), *iv.position); !off.empty()) fail("position", off);
     if (iv.location.empty()) {
       if (!iv.position && iv.kind != K::TakeFromGripper)
         fail("", yaml ? "needs a target: 'to: LOCATION' or 'position: [x, y, z]'"

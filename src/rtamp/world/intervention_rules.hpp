@@ -14,7 +14,8 @@
 // and add_container; take_from_gripper names no subject; add_region is
 // refused (a change for the planner, not a person's); a target is a region
 // or a present container (a container only into a region, nothing into
-// itself) or a position; a position given with a region lies inside it.
+// itself) or a position; a position lies on the table top (table.hpp) and,
+// given with a region, inside it.
 //
 // Errors are rtamp::Error, located by `locate(field)` (fields as the scenario
 // file spells them: "object", "container", "to", "position", "class"), with a

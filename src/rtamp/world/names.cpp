@@ -75,9 +75,11 @@ std::size_t offset_of(std::string_view text, std::string_view name, Role role) {
 
 }  // namespace
 
-bool is_valid_name(std::string_view name) {
-  return is_identifier(name) && !is_prop_keyword(name) && name != kNoLocation;
+bool is_reserved_name(std::string_view name) {
+  return name == kNoLocation || name == "hand" || name == "home" || is_prop_keyword(name);
 }
+
+bool is_valid_name(std::string_view name) { return is_identifier(name) && !is_reserved_name(name); }
 
 bool is_valid_proposition_name(std::string_view name) {
   if (!is_identifier(name) || name == "true" || name == "false") return false;
@@ -89,7 +91,7 @@ void check_new_name(std::string_view name, std::string_view kind, const SourceLo
   const std::string k(kind);
   if (name.empty()) throw Error(k + " has no name", where, detail);
   if (is_valid_name(name)) return;
-  if (name == kNoLocation || is_prop_keyword(name))
+  if (is_reserved_name(name))
     throw Error(k + " name " + shown(name) + " is a reserved word", where, detail);
   throw Error(k + " name " + shown(name) +
                   " is not an identifier (letters, digits and '_', not starting with a digit, at most 64 characters)",
@@ -104,7 +106,7 @@ void check_class_name(std::string_view cls, std::string_view owner, const Source
                 where, detail);
   if (cls.empty()) throw Error(o + ": the class is empty", where, detail);
   if (is_valid_name(cls)) return;
-  if (cls == kNoLocation || is_prop_keyword(cls))
+  if (is_reserved_name(cls))
     throw Error(o + ": class " + shown(cls) + " is a reserved word", where, detail);
   throw Error(o + ": class " + shown(cls) + " is not an identifier (letters, digits and '_', at most 64 characters)",
               where, detail);

@@ -8,7 +8,9 @@
 //
 // Rules: a name (region, container, object, class) is an identifier
 // [A-Za-z_][A-Za-z0-9_]* of at most 64 characters that is not a keyword of the
-// proposition grammar (in all any count true false) and not "none"; a class is
+// proposition grammar (in all any count true false) and not a word the worlds
+// use for a place ("none": outside every location, "hand": held, "home": the
+// arm's rest); a class is
 // a name other than "object" (which means "every object that is not a
 // container" in expressions); a proposition name is an identifier starting
 // with a lower-case letter or '_', other than true/false.
@@ -30,6 +32,7 @@ namespace rtamp::world {
 
 inline constexpr std::size_t kMaxNameLength = 64;
 
+bool is_reserved_name(std::string_view name);           // none hand home, and the grammar's keywords
 bool is_valid_name(std::string_view name);              // regions, containers, objects, classes
 bool is_valid_proposition_name(std::string_view name);  // atoms of the LTL task
 
