@@ -22,6 +22,8 @@
 #include "rtamp/batch/runner.hpp"
 #include "rtamp/batch/summary.hpp"
 #include "rtamp/batch/trials.hpp"
+#include "rtamp/episode/episode.hpp"
+#include "rtamp/exec/plan_tree.hpp"
 #include "rtamp/task/validate.hpp"
 #include "rtamp/util/error.hpp"
 #include "rtamp/world/scenario_io.hpp"
@@ -255,16 +257,14 @@ rtamp::cli::Registrar reg{
       sub.add_option("--merge", a->merge, "Join these CSV files (slices of sharded runs) instead of running")
           ->expected(1, -1);
       rtamp::cli::add_integer(sub, "--trials,-n", a->trials, 1, 1000000, "Trials per cell (each with its own seed)");
-      a->change_opt = sub.add_option("--change", a->changes,
-                                     "Random change per episode: relocate, remove, add, none (repeatable; default: "
-                                     "relocate remove add)")
-                          ->check(CLI::IsMember({"relocate", "remove", "add", "none"}));
+      std::vector<rtamp::cli::Choice> changes = rtamp::cli::choices_of(rtamp::world::random_change_kinds());
+      changes.push_back({"none", "no change"});
+      a->change_opt = rtamp::cli::add_choices(sub, "--change", a->changes, changes,
+                                              "Random change per episode (repeatable; default: relocate remove add):");
       a->algo_opt = rtamp::cli::add_choices(sub, "--algo", a->algos, rtamp::cli::algorithm_choices(),
                                             "Search algorithm (repeatable; default: all):");
-      a->bt_opt = sub.add_option("--bt", a->bts,
-                                 "BT variant: online-action, online-state, offline (repeatable; default: "
-                                 "online-action)")
-                      ->check(CLI::IsMember({"online-action", "online-state", "offline"}));
+      a->bt_opt = rtamp::cli::add_choices(sub, "--bt", a->bts, rtamp::cli::choices_of(rtamp::exec::tree_variants()),
+                                          "BT variant (repeatable; default: online-action):");
       rtamp::cli::add_seed(sub, "--seed", a->seed, "Base seed; trial k's seed is derived from (k, base seed)");
       sub.add_option("--shard", a->shard, "Run only the K-th of N interleaved slices of the trial list (K/N, 1-based)");
       rtamp::cli::add_integer(sub, "--jobs,-j", a->jobs, 1, 256, "Episodes run in parallel (worker threads)");
@@ -282,9 +282,7 @@ rtamp::cli::Registrar reg{
                            "Seconds of world time before an episode gives up");
       rtamp::cli::add_choice(sub, "--cost", a->cost, rtamp::cli::cost_model_choices(), "Planner motion-cost model:");
       sub.add_option("--log-dir", a->log_dir, "Write each episode's JSON Lines log into this directory");
-      sub.add_option("--world", a->world, "World: mujoco (simulated UR5) | symbolic (no physics, milliseconds an episode)")
-          ->check(CLI::IsMember({"mujoco", "symbolic"}))
-          ->capture_default_str();
+      rtamp::cli::add_choice(sub, "--world", a->world, rtamp::cli::choices_of(rtamp::episode::worlds()), "World:");
       sub.add_flag("--scripted", a->scripted, "Also apply the scenario's own operator script in every episode");
       sub.add_flag("--no-randomize", a->no_randomize, "Keep the scenario's initial object positions");
       sub.add_flag("--quiet,-q", a->quiet, "No progress on standard error");

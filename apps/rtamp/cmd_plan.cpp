@@ -147,9 +147,8 @@ rtamp::cli::Registrar reg{
       auto a = std::make_shared<PlanArgs>();
       rtamp::cli::add_scenario(sub, a->scenario)->required();
       rtamp::cli::add_choice(sub, "--algo", a->algo, rtamp::cli::algorithm_choices(), "Search algorithm:");
-      sub.add_option("--graph", a->graph, "Product construction: partial (on the fly) or full (before searching)")
-          ->check(CLI::IsMember({"partial", "full"}))
-          ->capture_default_str();
+      rtamp::cli::add_choice(sub, "--graph", a->graph, rtamp::cli::choices_of(rtamp::plan::graph_constructions()),
+                             "Product construction:");
       rtamp::cli::add_choice(sub, "--cost", a->cost, rtamp::cli::cost_model_choices(), "Motion-cost model:");
       sub.add_option("--change", a->changes,
                      "A change applied after the previous plan, followed by a replan (repeatable, in order): "
@@ -165,7 +164,7 @@ rtamp::cli::Registrar reg{
       return [a]() -> int {
         plan::PlannerOptions opt;
         opt.algorithm = plan::parse_algorithm(a->algo);
-        opt.graph = a->graph == "full" ? plan::GraphConstruction::Full : plan::GraphConstruction::Partial;
+        opt.graph = parse_name(plan::graph_constructions(), a->graph, "graph");
         opt.cost = a->cost;
         opt.limits.max_nodes = a->max_nodes;
         opt.limits.time_limit = a->time_limit;

@@ -2,27 +2,23 @@
 
 #include "options.hpp"
 #include "rtamp/plan/registry.hpp"
+#include "rtamp/world/scenario.hpp"
 
 namespace rtamp::cli {
 
 void add_episode_options(CLI::App& app, EpisodeArgs& o, const std::string& log_help) {
   add_scenario(app, o.scenario)->required();
-  app.add_option("--world", o.world, "World: mujoco (simulated UR5) | symbolic (no physics)")
-      ->check(CLI::IsMember({"mujoco", "symbolic"}));
+  add_choice(app, "--world", o.world, choices_of(episode::worlds()), "World:");
   add_choice(app, "--algo", o.algo, algorithm_choices(), "Search algorithm:");
-  app.add_option("--bt", o.bt,
-                 "Tree variant: online-action (Algorithm 2, action conditions) | online-state (state "
-                 "conditions) | offline (rebuild from scratch)")
-      ->check(CLI::IsMember({"online-action", "online-state", "offline"}));
+  add_choice(app, "--bt", o.bt, choices_of(exec::tree_variants()), "Tree variant:");
   add_choice(app, "--cost", o.cost, cost_model_choices(), "Planner motion-cost model:");
-  app.add_option("--planning", o.planning,
-                 "worker: plan on a thread, charging its time to world time (default for mujoco) | inline: "
-                 "plan synchronously, charged nothing, deterministic (default for symbolic)")
-      ->check(CLI::IsMember({"worker", "inline"}));
-  add_seed(app, "--seed", o.seed, "Seed of the episode (operator, perception, random initial layout)");
-  app.add_option("--change", o.change, "Add one random intervention: relocate | add | remove")
-      ->check(CLI::IsMember({"relocate", "add", "remove"}));
-  add_real(app, "--rate", o.rate, {0, 100}, "Random interventions per second of world time, of every kind");
+  add_choice(app, "--planning", o.planning, choices_of(exec::planning_modes()),
+             "Planning (default: worker for mujoco, inline for symbolic):");
+  add_seed(app, "--seed", o.seed, "Seed of the episode (the person, perception, random initial layout)");
+  add_choice(app, "--change", o.change, choices_of(world::random_change_kinds()),
+             "Add one random intervention at a random time in 2-20 s:");
+  add_real(app, "--rate", o.rate, {0, 100},
+           "Random interventions per second of world time, of every kind (docs/person.md)");
   add_real(app, "--failures", o.failures, {0, 1}, "Symbolic world: probability that a move fails");
   add_integer(app, "--cycles", o.cycles, 0, 1000000,
               "Recurring tasks (plans that cycle through moves): succeed after K completed cycles "
@@ -36,13 +32,14 @@ void add_episode_options(CLI::App& app, EpisodeArgs& o, const std::string& log_h
 
 episode::EpisodeOptions to_episode_options(const EpisodeArgs& o) {
   episode::EpisodeOptions opt;
-  opt.world = o.world == "symbolic" ? episode::WorldKind::Symbolic : episode::WorldKind::MuJoCo;
+  opt.world = parse_name(episode::worlds(), o.world, "world");
   opt.algorithm = plan::parse_algorithm(o.algo);
-  opt.conditions = o.bt == "online-state" ? exec::ConditionMode::State : exec::ConditionMode::Action;
-  opt.reconfiguration = o.bt == "offline" ? exec::Reconfiguration::Offline : exec::Reconfiguration::Online;
-  const std::string planning =
-      !o.planning.empty() ? o.planning : (opt.world == episode::WorldKind::Symbolic ? "inline" : "worker");
-  opt.planning = planning == "inline" ? exec::PlanningMode::Inline : exec::PlanningMode::Worker;
+  const exec::TreeVariant bt = parse_name(exec::tree_variants(), o.bt, "tree variant");
+  opt.conditions = bt.conditions;
+  opt.reconfiguration = bt.reconfiguration;
+  opt.planning = !o.planning.empty() ? parse_name(exec::planning_modes(), o.planning, "planning mode")
+                 : opt.world == episode::WorldKind::Symbolic ? exec::PlanningMode::Inline
+                                                             : exec::PlanningMode::Worker;
   opt.cost = o.cost;
   opt.seed = o.seed;
   opt.max_time = o.max_time;
@@ -51,9 +48,7 @@ episode::EpisodeOptions to_episode_options(const EpisodeArgs& o) {
   opt.failure_probability = o.failures;
   opt.randomize_initial = o.random_initial;
   opt.scripted_operator = !o.no_operator;
-  if (o.change == "relocate") opt.random_change = world::Intervention::Kind::Relocate;
-  if (o.change == "add") opt.random_change = world::Intervention::Kind::Add;
-  if (o.change == "remove") opt.random_change = world::Intervention::Kind::Remove;
+  if (!o.change.empty()) opt.random_change = parse_name(world::random_change_kinds(), o.change, "change");
   opt.log_path = o.log;
   opt.tree_dir = o.trees;
   return opt;

@@ -22,6 +22,8 @@
 #include <string_view>
 #include <vector>
 
+#include "rtamp/util/names_table.hpp"
+
 namespace rtamp::cli {
 
 struct RealRange {
@@ -57,6 +59,13 @@ struct Choice {
 };
 // The algorithms / cost models of the registry, in its order.
 std::vector<Choice> algorithm_choices();
+// The names of a library table (util/names_table.hpp), in its order.
+template <class E>
+std::vector<Choice> choices_of(const NameTable<E>& table) {
+  std::vector<Choice> out;
+  for (const auto& n : table) out.push_back({n.name, n.description});
+  return out;
+}
 std::vector<Choice> cost_model_choices();
 // A name from `choices` (an unknown one: "unknown VALUE 'x' (did you mean 'y'?)").
 // The help text lists the names, with their descriptions when there are any.

@@ -74,7 +74,7 @@ void bind_batch(py::module_& m) {
           o.cost = cost;
           o.randomize_initial = randomize_initial;
           o.scripted_operator = scripted_operator;
-          o.world = parse_choice(kWorlds, world, "world");
+          o.world = parse_name(episode::worlds(), world, "world");
           std::vector<batch::EpisodeRecord> records;
           {
             py::gil_scoped_release release;

@@ -21,7 +21,7 @@ namespace {
 using exec::MoveStatus;
 
 MoveStatus as_status(const py::handle& h) {
-  if (py::isinstance<py::str>(h)) return parse_choice(kMoveStatus, h.cast<std::string>(), "move status");
+  if (py::isinstance<py::str>(h)) return parse_name(exec::move_statuses(), h.cast<std::string>(), "move status");
   return h.cast<MoveStatus>();
 }
 
@@ -350,9 +350,9 @@ void bind_loop(py::module_& m) {
              PlannerConfig pc = planner_config(s, algorithm, cost, "partial", true, true, time_limit, 20'000'000);
              exec::LoopOptions o;
              o.planner = pc.options;
-             o.conditions = parse_choice(kConditions, conditions, "condition mode");
-             o.reconfiguration = parse_choice(kReconfigurations, reconfiguration, "reconfiguration");
-             o.planning = parse_choice(kPlanning, planning, "planning mode");
+             o.conditions = parse_name(exec::condition_modes(), conditions, "condition mode");
+             o.reconfiguration = parse_name(exec::reconfigurations(), reconfiguration, "reconfiguration");
+             o.planning = parse_name(exec::planning_modes(), planning, "planning mode");
              o.max_time = max_time;
              o.tick_period = tick_period;
              o.max_failures_per_move = max_failures;

@@ -88,7 +88,7 @@ PlannerConfig planner_config(const world::Scenario& scenario, const std::string&
                              std::size_t max_nodes) {
   plan::PlannerOptions o;
   o.algorithm = plan::parse_algorithm(algorithm);
-  o.graph = parse_choice(kGraphs, graph, "graph construction");
+  o.graph = parse_name(plan::graph_constructions(), graph, "graph construction");
   o.symmetry = symmetry;
   o.diagnose_capacity = diagnose_capacity;
   o.limits.time_limit = time_limit;

@@ -28,7 +28,7 @@ py::object location_tuple(const SourceLocation& w) {
 }  // namespace
 
 Intervention::Kind parse_intervention_kind(const std::string& s) {
-  return parse_choice(kInterventionKinds, s, "intervention kind");
+  return parse_name(world::intervention_kinds(), s, "intervention kind");
 }
 const char* intervention_kind_name(Intervention::Kind k) { return world::to_string(k); }
 

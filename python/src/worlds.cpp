@@ -32,7 +32,7 @@ void bind_worlds(py::module_& m) {
              o.seed = seed;
              o.failure_probability = failure_probability;
              if (fails) o.fails = *fails;
-             o.fails_in = parse_choice(kPhases, fails_in, "phase");
+             o.fails_in = parse_name(exec::phases(), fails_in, "phase");
              o.speed = speed;
              o.approach_base = approach_base;
              o.grasp = grasp;
@@ -47,7 +47,7 @@ void bind_worlds(py::module_& m) {
            py::arg("approach_base") = 0.5, py::arg("grasp") = 0.5, py::arg("carry_base") = 0.5,
            py::arg("place") = 0.5, py::arg("retreat") = 0.5, py::arg("return_base") = 0.5)
       .def_property_readonly("truth", &exec::SymbolicWorld::truth, "The exact placement (a held thing in 'hand').")
-      .def_property_readonly("phase", [](const exec::SymbolicWorld& w) { return choice_name(kPhases, w.phase()); },
+      .def_property_readonly("phase", [](const exec::SymbolicWorld& w) { return name_of(exec::phases(), w.phase()); },
                              "The arm's phase: 'idle', 'approach', 'grasp', 'carry', 'place', 'retreat', 'return'.")
       .def("apply", &exec::SymbolicWorld::apply, py::arg("intervention"),
            "Applies an intervention now, as a person would; returns the WorldEvent (applied or refused).")
@@ -121,6 +121,27 @@ void bind_worlds(py::module_& m) {
       .def(py::init([](exec::World& w, world::Person& p) { return std::make_unique<exec::PersonWorld>(w, p); }),
            py::arg("world"), py::arg("person"), py::keep_alive<1, 2>(), py::keep_alive<1, 3>());
 
+  m.def("choices", [] {
+    py::dict d;
+    auto add = [&](const char* key, const auto& table) {
+      py::dict t;
+      for (const auto& n : table) t[py::str(n.name)] = py::str(n.description);
+      d[py::str(key)] = t;
+    };
+    add("world", episode::worlds());
+    add("bt", exec::tree_variants());
+    add("conditions", exec::condition_modes());
+    add("reconfiguration", exec::reconfigurations());
+    add("planning", exec::planning_modes());
+    add("graph", plan::graph_constructions());
+    add("change", world::random_change_kinds());
+    add("intervention", world::intervention_kinds());
+    add("phase", exec::phases());
+    add("move_status", exec::move_statuses());
+    return d;
+  }, "Every named choice (the CLI's and run_episode's option values) -> {name: one-line description},\n"
+     "from the same tables the command line reads. algorithms() and cost_models() list the planner's.");
+
   m.def("run_episode",
         [](const world::Scenario& s, const std::string& world, const std::string& algorithm, const std::string& cost,
            const std::string& conditions, const std::string& reconfiguration, const std::string& planning,
@@ -130,12 +151,12 @@ void bind_worlds(py::module_& m) {
            const std::string& trees, const std::string& video,
            std::optional<std::function<void(const std::string&)>> timeline) {
           episode::EpisodeOptions o;
-          o.world = parse_choice(kWorlds, world, "world");
+          o.world = parse_name(episode::worlds(), world, "world");
           o.algorithm = plan::parse_algorithm(algorithm);
           o.cost = cost;
-          o.conditions = parse_choice(kConditions, conditions, "condition mode");
-          o.reconfiguration = parse_choice(kReconfigurations, reconfiguration, "reconfiguration");
-          o.planning = parse_choice(kPlanning, planning, "planning mode");
+          o.conditions = parse_name(exec::condition_modes(), conditions, "condition mode");
+          o.reconfiguration = parse_name(exec::reconfigurations(), reconfiguration, "reconfiguration");
+          o.planning = parse_name(exec::planning_modes(), planning, "planning mode");
           o.seed = seed;
           o.max_time = max_time;
           o.tick_period = tick_period;

@@ -57,3 +57,46 @@ def test_mujoco_episode_short(tmp_path):
     s = rtamp.load_scenario("3-block")
     m = rtamp.run_episode(s, world="mujoco", seed=1, max_time=60, scripted_operator=False)
     assert m.success and m.world_time > 1 and m.real_time_factor > 0
+
+
+def test_choices_are_the_tables_the_command_line_reads():
+    import subprocess
+    c = rtamp.choices()
+    assert list(c["bt"]) == ["online-action", "online-state", "offline"]
+    assert list(c["world"]) == ["mujoco", "symbolic"]
+    assert list(c["change"]) == ["relocate", "remove", "add"]
+    assert "take-from-gripper" in c["intervention"] and all(c["planning"].values())
+    rtamp_bin = os.environ.get("RTAMP_BINARY")  # set by ctest
+    if rtamp_bin:
+        helptext = subprocess.run([rtamp_bin, "run", "--help"], capture_output=True, text=True).stdout
+        for key in ("bt", "world", "planning", "change"):
+            for name, description in c[key].items():
+                assert name in helptext and description in " ".join(helptext.split()), (key, name)
+
+
+def test_one_person_acts_alike_on_a_python_world_and_the_symbolic_world():
+    from rtamp.toy import ToyWorld
+    s = rtamp.load_scenario("3-block")
+
+    def drive(world):
+        person = rtamp.Person(s, rate=0.5, end=10, kinds=["relocate"], seed=4)
+        w = rtamp.PersonWorld(world, person)
+        seen = []
+        while w.time() < 10:
+            w.advance(0.02)
+            seen += [(round(e.time, 9), e.what.subject, e.what.location, e.applied) for e in w.take_events()]
+        return seen
+
+    python_world = drive(ToyWorld(s))
+    symbolic = drive(rtamp.SymbolicWorld(s))
+    assert len(python_world) >= 2
+    assert python_world == symbolic
+
+
+def test_a_person_needs_a_world_that_takes_interventions():
+    class Plain(rtamp.World):
+        def time(self):
+            return 0.0
+
+    with pytest.raises(rtamp.Error, match="cannot take a person's interventions"):
+        rtamp.PersonWorld(Plain(), rtamp.Person(rtamp.load_scenario("3-block")))

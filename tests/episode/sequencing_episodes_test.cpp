@@ -19,6 +19,7 @@
 // RTAMP_SEQUENCING_ONLY=<task>/<kind>/<phase> (e.g. tray-red/remove-container/place)
 // runs the matching episodes alone, with their timeline.
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <cstdlib>
@@ -102,6 +103,13 @@ std::vector<Task> tasks() {
   c.scenario.task = "F (red_in_r3 & F G all_in_r2)";
   out.push_back(c);
   return out;
+}
+
+// A directory of this process's own (two runs of the test at once do not share logs).
+std::filesystem::path scratch_dir() {
+  const auto d = std::filesystem::temp_directory_path() / ("rtamp_seq_" + std::to_string(::getpid()));
+  std::filesystem::create_directories(d);
+  return d;
 }
 
 std::vector<json> read_log(const std::string& path) {
@@ -357,7 +365,7 @@ void check(const world::Scenario& s, const Outcome& e, const world::Intervention
 
 TEST(SequencingEpisodes, MidMoveInterventionsOfEveryKind) {
   const char* only = std::getenv("RTAMP_SEQUENCING_ONLY");
-  const auto dir = std::filesystem::temp_directory_path();
+  const auto dir = scratch_dir();
   struct Kinded {
     Kind kind;
     bool with_location;
@@ -425,7 +433,7 @@ TEST(SequencingEpisodes, MidMoveInterventionsOfEveryKind) {
 TEST(SequencingEpisodes, LoadedTrayTakenInTheAir) {
   world::Scenario base = world::load_scenario("3-block-tray");
   base.interventions.clear();
-  const std::string log_path = (std::filesystem::temp_directory_path() / "rtamp_seq_tray_in_air.jsonl").string();
+  const std::string log_path = (scratch_dir() / "rtamp_seq_tray_in_air.jsonl").string();
   const Outcome plain = run_one(base, 1, log_path, false);
   const auto moves = move_windows(plain.log);
   const auto tray = std::find_if(moves.begin(), moves.end(), [](const Window& w) { return w.thing == "r3"; });

@@ -3,36 +3,55 @@
 #include <algorithm>
 #include <charconv>
 
+#include "rtamp/exec/plan_tree.hpp"
 #include "rtamp/util/error.hpp"
+#include "rtamp/world/scenario.hpp"
 
 namespace rtamp::batch {
 
 namespace {
 
-constexpr std::string_view kChanges[] = {"relocate", "remove", "add", "none"};
-constexpr std::string_view kBtVariants[] = {"online-action", "online-state", "offline"};
-
-template <std::size_t N>
-int rank_in(const std::string_view (&names)[N], std::string_view s) {
-  for (std::size_t i = 0; i < N; ++i)
-    if (names[i] == s) return static_cast<int>(i);
-  return static_cast<int>(N);
+// The names, in the grid's canonical order, from the tables their layers own
+// (world::random_change_kinds() then "none"; exec::tree_variants()).
+std::vector<std::string_view> change_names() {
+  std::vector<std::string_view> out;
+  for (const auto& n : world::random_change_kinds()) out.push_back(n.name);
+  out.push_back("none");
+  return out;
+}
+std::vector<std::string_view> bt_names() {
+  std::vector<std::string_view> out;
+  for (const auto& n : exec::tree_variants()) out.push_back(n.name);
+  return out;
+}
+const std::vector<std::string_view>& changes() {
+  static const auto v = change_names();
+  return v;
+}
+const std::vector<std::string_view>& bt_variants() {
+  static const auto v = bt_names();
+  return v;
 }
 
-template <std::size_t N>
-std::string joined(const std::string_view (&names)[N]) {
+int rank_in(const std::vector<std::string_view>& names, std::string_view s) {
+  for (std::size_t i = 0; i < names.size(); ++i)
+    if (names[i] == s) return static_cast<int>(i);
+  return static_cast<int>(names.size());
+}
+
+std::string joined(const std::vector<std::string_view>& names) {
   std::string out;
-  for (std::size_t i = 0; i < N; ++i) {
+  for (std::size_t i = 0; i < names.size(); ++i) {
     if (i) out += ", ";
     out += names[i];
   }
   return out;
 }
 
-template <typename E, std::size_t N>
-E parse_in(const std::string_view (&names)[N], std::string_view s, const char* what) {
+template <typename E>
+E parse_in(const std::vector<std::string_view>& names, std::string_view s, const char* what) {
   const int r = rank_in(names, s);
-  if (r == static_cast<int>(N))
+  if (r == static_cast<int>(names.size()))
     throw Error("unknown " + std::string(what) + " '" + std::string(s) + "' (expected one of: " + joined(names) + ")");
   return static_cast<E>(r);
 }
@@ -62,11 +81,11 @@ int parse_int(std::string_view s, std::string_view whole) {
 
 }  // namespace
 
-const char* to_string(ChangeKind c) { return kChanges[static_cast<int>(c)].data(); }
-const char* to_string(BtVariant v) { return kBtVariants[static_cast<int>(v)].data(); }
+const char* to_string(ChangeKind c) { return changes()[static_cast<std::size_t>(c)].data(); }
+const char* to_string(BtVariant v) { return bt_variants()[static_cast<std::size_t>(v)].data(); }
 
-ChangeKind parse_change_kind(std::string_view s) { return parse_in<ChangeKind>(kChanges, s, "change kind"); }
-BtVariant parse_bt_variant(std::string_view s) { return parse_in<BtVariant>(kBtVariants, s, "BT variant"); }
+ChangeKind parse_change_kind(std::string_view s) { return parse_in<ChangeKind>(changes(), s, "change kind"); }
+BtVariant parse_bt_variant(std::string_view s) { return parse_in<BtVariant>(bt_variants(), s, "BT variant"); }
 
 int algorithm_rank(std::string_view name) {
   const auto& all = plan::algorithms();
@@ -74,8 +93,8 @@ int algorithm_rank(std::string_view name) {
     if (all[i].name == name) return static_cast<int>(i);
   return static_cast<int>(all.size());
 }
-int change_rank(std::string_view name) { return rank_in(kChanges, name); }
-int bt_rank(std::string_view name) { return rank_in(kBtVariants, name); }
+int change_rank(std::string_view name) { return rank_in(changes(), name); }
+int bt_rank(std::string_view name) { return rank_in(bt_variants(), name); }
 
 std::uint64_t trial_seed(int index, std::uint64_t base) {
   // Two rounds so that neighbouring (index, base) pairs land far apart and

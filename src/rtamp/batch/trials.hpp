@@ -32,7 +32,8 @@ namespace rtamp::batch {
 // A ChangeKind is the kind of random change a trial makes (or none), a grid
 // axis: which change, where and when is drawn from the trial's seed when the
 // episode runs (episode::EpisodeOptions::random_change), so it is a choice and
-// not a change of the world (world::Change).
+// not a change of the world (world::Change). Their names and order come from
+// world::random_change_kinds() (then "none") and exec::tree_variants().
 enum class ChangeKind { Relocate, Remove, Add, None };          // relocate | remove | add | none
 enum class BtVariant { OnlineAction, OnlineState, Offline };    // online-action | online-state | offline
 

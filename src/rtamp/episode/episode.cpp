@@ -49,7 +49,15 @@ void randomize_objects(world::Scenario& s, std::mt19937_64& rng) {
 
 }  // namespace
 
-const char* to_string(WorldKind w) { return w == WorldKind::MuJoCo ? "mujoco" : "symbolic"; }
+const NameTable<WorldKind>& worlds() {
+  static const NameTable<WorldKind> t = {
+      {"mujoco", WorldKind::MuJoCo, "the simulated UR5 in MuJoCo"},
+      {"symbolic", WorldKind::Symbolic, "a discrete-event world with no physics (milliseconds an episode)"},
+  };
+  return t;
+}
+
+const char* to_string(WorldKind w) { return name_of(worlds(), w); }
 
 EpisodeMetrics run_episode(const world::Scenario& scenario, const EpisodeOptions& opt) {
   return Episode(scenario, opt).run();

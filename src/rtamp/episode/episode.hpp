@@ -36,6 +36,7 @@
 namespace rtamp::episode {
 
 enum class WorldKind { MuJoCo, Symbolic };
+const NameTable<WorldKind>& worlds();  // mujoco symbolic
 const char* to_string(WorldKind w);
 
 struct EpisodeOptions {

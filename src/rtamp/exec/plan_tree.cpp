@@ -4,6 +4,23 @@
 
 namespace rtamp::exec {
 
+const NameTable<Reconfiguration>& reconfigurations() {
+  static const NameTable<Reconfiguration> t = {
+      {"online", Reconfiguration::Online, "Algorithm 2: update, insert and remove subtrees between moves"},
+      {"offline", Reconfiguration::Offline, "rebuild the whole tree from scratch (the paper's baseline)"},
+  };
+  return t;
+}
+
+const NameTable<TreeVariant>& tree_variants() {
+  static const NameTable<TreeVariant> t = {
+      {"online-action", {ConditionMode::Action, Reconfiguration::Online}, "Algorithm 2 with action conditions"},
+      {"online-state", {ConditionMode::State, Reconfiguration::Online}, "Algorithm 2 with full-state conditions"},
+      {"offline", {ConditionMode::Action, Reconfiguration::Offline}, "rebuild the tree from scratch"},
+  };
+  return t;
+}
+
 PlanTree::PlanTree(ConditionMode mode, Reconfiguration reconfiguration, ActionRunner& runner,
                    std::shared_ptr<const bt::Clock> clock)
     : mode_(mode), reconfiguration_(reconfiguration), runner_(runner),

@@ -42,6 +42,16 @@
 namespace rtamp::exec {
 
 enum class Reconfiguration { Online, Offline };
+const NameTable<Reconfiguration>& reconfigurations();  // online offline
+
+// A tree variant as the command line and the paper's figures name it: a
+// condition form with a way of changing the tree.
+struct TreeVariant {
+  ConditionMode conditions = ConditionMode::Action;
+  Reconfiguration reconfiguration = Reconfiguration::Online;
+  bool operator==(const TreeVariant&) const = default;
+};
+const NameTable<TreeVariant>& tree_variants();  // online-action online-state offline
 
 // What one call to set_plan() (or a deferred retry) did.
 struct ReconfigurationReport {

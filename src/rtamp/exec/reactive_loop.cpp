@@ -26,6 +26,14 @@ std::optional<world::PropExpr> parse_atom(const std::string& atom) {
 
 }  // namespace
 
+const NameTable<PlanningMode>& planning_modes() {
+  static const NameTable<PlanningMode> t = {
+      {"worker", PlanningMode::Worker, "plan on a thread while the tree ticks, charging its time to world time"},
+      {"inline", PlanningMode::Inline, "plan synchronously, charged nothing: deterministic"},
+  };
+  return t;
+}
+
 const LoopOptions& check_loop_options(const LoopOptions& o) {
   auto fail = [](const char* name, const std::string& rule, double v) {
     throw Error(std::string("loop option ") + name + ": " + rule + ", found " + format_number(v));
@@ -221,7 +229,7 @@ void ReactiveLoop::begin() {
   info.task = scenario_.task;
   info.algorithm = plan::to_string(options_.planner.algorithm);
   info.conditions = to_string(options_.conditions);
-  info.reconfiguration = options_.reconfiguration == Reconfiguration::Online ? "online" : "offline";
+  info.reconfiguration = name_of(reconfigurations(), options_.reconfiguration);
   info.world = options_.world_name;
   info.seed = options_.seed;
   for (auto* o : observers_) o->on_begin(info);

@@ -74,6 +74,7 @@ enum class PlanningMode {
            // measured wall time has passed in world time (the paper's setting)
   Inline,  // synchronously, charged nothing: deterministic (tests, symbolic batches)
 };
+const NameTable<PlanningMode>& planning_modes();  // worker inline
 
 struct LoopOptions {
   plan::PlannerOptions planner;                     // algorithm, cost model, limits

@@ -2,7 +2,15 @@
 
 namespace rtamp::exec {
 
-const char* to_string(ConditionMode m) { return m == ConditionMode::State ? "state" : "action"; }
+const NameTable<ConditionMode>& condition_modes() {
+  static const NameTable<ConditionMode> t = {
+      {"action", ConditionMode::Action, "action conditions (Fig. 3b): a running move completes"},
+      {"state", ConditionMode::State, "full-state conditions (Fig. 3a): any change preempts the move"},
+  };
+  return t;
+}
+
+const char* to_string(ConditionMode m) { return name_of(condition_modes(), m); }
 
 bool holds(const std::vector<plan::Condition>& conditions, const world::Placement& placement) {
   for (const plan::Condition& c : conditions) {

@@ -30,6 +30,7 @@
 
 #include "rtamp/bt/bt.hpp"
 #include "rtamp/plan/action_tuple.hpp"
+#include "rtamp/util/names_table.hpp"
 #include "rtamp/world/placement.hpp"
 
 namespace rtamp::exec {
@@ -38,6 +39,7 @@ inline constexpr const char* kPlacementKey = "placement";
 inline constexpr const char* kInHand = "hand";  // location of a held thing (same as sim::kInHand)
 
 enum class ConditionMode { State, Action };
+const NameTable<ConditionMode>& condition_modes();  // state action
 const char* to_string(ConditionMode m);
 
 // Runs one move on the robot; called by the Move action node.

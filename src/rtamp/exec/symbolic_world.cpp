@@ -60,25 +60,20 @@ void check(const SymbolicWorldOptions& o) {
 
 }  // namespace
 
-const char* to_string(Phase p) {
-  switch (p) {
-    case Phase::Idle:
-      return "idle";
-    case Phase::Approach:
-      return "approach";
-    case Phase::Grasp:
-      return "grasp";
-    case Phase::Carry:
-      return "carry";
-    case Phase::Place:
-      return "place";
-    case Phase::Retreat:
-      return "retreat";
-    case Phase::Return:
-      return "return";
-  }
-  return "?";
+const NameTable<Phase>& phases() {
+  static const NameTable<Phase> t = {
+      {"idle", Phase::Idle, "no move"},
+      {"approach", Phase::Approach, "the hand goes to the thing"},
+      {"grasp", Phase::Grasp, "the gripper closes on it"},
+      {"carry", Phase::Carry, "the thing goes to its destination"},
+      {"place", Phase::Place, "the thing is set down"},
+      {"retreat", Phase::Retreat, "the empty hand backs off"},
+      {"return", Phase::Return, "a held thing is carried back and put down after a failure or a halt"},
+  };
+  return t;
 }
+
+const char* to_string(Phase p) { return name_of(phases(), p); }
 
 SymbolicWorld::SymbolicWorld(const world::Scenario& scenario, SymbolicWorldOptions options)
     : options_(std::move(options)), regions_(scenario.regions), geometry_(scenario), table_(world::table_top(scenario)) {

@@ -55,6 +55,7 @@ namespace rtamp::exec {
 // empty gripper); Return: a held thing carried back and put down after a
 // failure or a halt.
 enum class Phase { Idle, Approach, Grasp, Carry, Place, Retreat, Return };
+const NameTable<Phase>& phases();  // idle approach grasp carry place retreat return
 const char* to_string(Phase p);
 
 struct SymbolicWorldOptions {

@@ -42,6 +42,7 @@
 #include <string>
 #include <vector>
 
+#include "rtamp/util/names_table.hpp"
 #include "rtamp/world/placement.hpp"
 #include "rtamp/world/scenario.hpp"
 
@@ -57,6 +58,7 @@ struct Move {
 };
 
 enum class MoveStatus { Idle, Running, Succeeded, Failed };
+const NameTable<MoveStatus>& move_statuses();  // idle running succeeded failed
 const char* to_string(MoveStatus s);
 
 // An intervention of a person, as the world applied (or refused) it.

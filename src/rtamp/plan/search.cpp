@@ -35,7 +35,15 @@ const char* to_string(Algorithm a) {
   return "?";
 }
 
-const char* to_string(GraphConstruction g) { return g == GraphConstruction::Full ? "full" : "partial"; }
+const NameTable<GraphConstruction>& graph_constructions() {
+  static const NameTable<GraphConstruction> t = {
+      {"partial", GraphConstruction::Partial, "product successors built as the search expands them (the paper's)"},
+      {"full", GraphConstruction::Full, "the whole product built first (the baseline)"},
+  };
+  return t;
+}
+
+const char* to_string(GraphConstruction g) { return name_of(graph_constructions(), g); }
 
 void LassoSearch::Space::ensure(std::size_t n) {
   if (stamp.size() >= n) return;

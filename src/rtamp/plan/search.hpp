@@ -91,12 +91,14 @@
 #include "rtamp/plan/heuristic.hpp"
 #include "rtamp/plan/plan.hpp"
 #include "rtamp/plan/product_graph.hpp"
+#include "rtamp/util/names_table.hpp"
 
 namespace rtamp::plan {
 
 enum class Algorithm { Dijkstra, AStar, AStarExperience };
 enum class GraphConstruction { Partial, Full };
 const char* to_string(Algorithm a);
+const NameTable<GraphConstruction>& graph_constructions();  // partial full
 const char* to_string(GraphConstruction g);
 
 // What a long query reports while it runs (SearchLimits::on_progress).

@@ -244,6 +244,29 @@ const char* to_string(Change::Kind k) {
   return "?";
 }
 
+const NameTable<Change::Kind>& intervention_kinds() {
+  using K = Change::Kind;
+  static const NameTable<K> t = {
+      {"relocate", K::Relocate, "move a thing (a container with its contents) to a location or position"},
+      {"add", K::Add, "a new object appears"},
+      {"remove", K::Remove, "an object disappears"},
+      {"add-container", K::AddContainer, "a new container appears in a region"},
+      {"remove-container", K::RemoveContainer, "a container disappears; its contents fall where it stood"},
+      {"take-from-gripper", K::TakeFromGripper, "take the held thing and put it somewhere, or away"},
+  };
+  return t;
+}
+
+const NameTable<Change::Kind>& random_change_kinds() {
+  using K = Change::Kind;
+  static const NameTable<K> t = {
+      {"relocate", K::Relocate, "a random present object to another location"},
+      {"remove", K::Remove, "a random present object disappears"},
+      {"add", K::Add, "a new object in a random location"},
+  };
+  return t;
+}
+
 // ---- Text, rules, effect -----------------------------------------------------
 
 Change parse_change(std::string_view text, const SourceLocation& where) {

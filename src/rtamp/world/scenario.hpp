@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "rtamp/util/error.hpp"
+#include "rtamp/util/names_table.hpp"
 #include "rtamp/util/text_layout.hpp"
 
 namespace rtamp::world {
@@ -138,6 +139,11 @@ struct Change {
 // The kind's name in logs and the Python API: relocate, add, remove,
 // add-container, remove-container, take-from-gripper, add-region.
 const char* to_string(Change::Kind k);
+// The kinds a person's intervention can be (every kind but add-region), by name.
+const NameTable<Change::Kind>& intervention_kinds();
+// The kinds of an episode's one random change (`--change`; the paper's Table I
+// changes, in its order): relocate remove add.
+const NameTable<Change::Kind>& random_change_kinds();
 
 // A scripted change of the world at a time (the paper's "human
 // intervention"): the scenario's `interventions:`, a world's random ones.
