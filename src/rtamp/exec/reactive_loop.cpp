@@ -412,7 +412,6 @@ bool ReactiveLoop::step() {
       if (auto r = tree_->retry_pending(); r && r->applied)
         for (auto* o : observers_) o->on_tree_change(world_.time(), *r, *tree_, true);
     }
-
     // While a replan is pending, no new step of the old plan starts: a running
     // move is still polled, an idle tree waits. A tree that has succeeded waits
     // for the completion check (once the arm is free), not for another pass.
