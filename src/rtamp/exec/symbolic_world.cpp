@@ -33,19 +33,6 @@ bool loose_ok(const world::Intervention& iv, const std::string& to) {
 
 bool holding_phase(Phase p) { return p == Phase::Carry || p == Phase::Place || p == Phase::Return; }
 
-std::string format_m(double v) {
-  char b[32];
-  std::snprintf(b, sizeof b, "%.3f", v);
-  return b;
-}
-
-// Area units (task::System::kAreaUnit) in m².
-std::string format_area(std::int64_t units) {
-  char b[32];
-  std::snprintf(b, sizeof b, "%.4f", static_cast<double>(units) * task::System::kAreaUnit);
-  return b;
-}
-
 void check(const SymbolicWorldOptions& o) {
   for (double d : {o.approach_base, o.grasp, o.carry_base, o.place, o.retreat, o.return_base})
     if (!(d >= 0 && std::isfinite(d))) throw Error("symbolic world: phase durations must be finite and >= 0");
@@ -186,9 +173,9 @@ std::int64_t SymbolicWorld::used_at(const std::string& loc, const std::string& e
 }
 
 // ---------------------------------------------------------------- footprint rules
-// world/fit.hpp's functions, called and rounded exactly as task::System's
-// fit tables are built (transition_system.cpp, build_fit_tables): the tests
-// check that both agree on every thing and location.
+// The rule book's (world/space_rules.hpp) cells and rooms, the integers
+// task::System's fit tables hold (transition_system.cpp, build_fit_tables):
+// the tests check that both agree on every thing and location.
 
 SymbolicWorld::Body SymbolicWorld::body_of(const std::string& thing) const {
   if (auto c = containers_.find(thing); c != containers_.end()) return {c->second.size, true};
@@ -214,12 +201,11 @@ world::Extent SymbolicWorld::usable(const std::string& loc) const {
 }
 
 std::int64_t SymbolicWorld::cell_of(const Body& b) const {
-  return static_cast<std::int64_t>(
-      std::floor(world::cell_area(b.size, b.container, options_.fit) / task::System::kAreaUnit));
+  return world::cell_units(b, options_.fit);
 }
 
 std::int64_t SymbolicWorld::room_of(const world::Extent& u) const {
-  return static_cast<std::int64_t>(std::ceil(world::room_area(u, options_.fit) / task::System::kAreaUnit));
+  return world::room_units(u, options_.fit);
 }
 
 bool SymbolicWorld::fits(const std::string& thing, const std::string& location) const {
@@ -247,28 +233,20 @@ std::string SymbolicWorld::refusal(const std::string& thing, const std::string& 
 
 bool SymbolicWorld::can_hold(const std::string& loc, const std::string& thing, const Body& b,
                              std::string* why) const {
-  auto refuse = [&](std::string w) {
-    if (why) *why = std::move(w);
-    return false;
-  };
-  if (!is_region(loc)) {
-    if (!is_container(loc))
-      return refuse(loc.empty() ? "no location" : loc + " is not a location in the world");
-    if (loc == thing) return refuse(thing + " cannot go into itself");
-    if (b.container) return refuse(thing + " is a container and " + loc + " is one: containers do not nest");
-    if (*placement_.location_of(loc) == kInHand) return refuse(loc + " is in the gripper");
+  // The rule book (world/space_rules.hpp) decides, on this world's counts.
+  world::LocationNow at;
+  if (is_region(loc) || is_container(loc)) {
+    at.kind = is_region(loc) ? world::LocationNow::Kind::Region : world::LocationNow::Kind::Container;
+    at.held = at.kind == world::LocationNow::Kind::Container && *placement_.location_of(loc) == kInHand;
+    at.usable = usable(loc);
+    at.capacity = capacity(loc);
+    at.count = count_at(loc, thing);
+    at.used = used_at(loc, thing);
   }
-  const world::Extent u = usable(loc);
-  if (!world::fits(b.size, u))
-    return refuse(thing + " does not fit in " + loc + " (" + format_m(b.size[0]) + " x " +
-                  format_m(b.size[1]) + " m; usable " + format_m(u.x) + " x " + format_m(u.y) + " m)");
-  const int cap = capacity(loc);
-  if (count_at(loc, thing) >= cap) return refuse(loc + " has no room (capacity " + std::to_string(cap) + ")");
-  const std::int64_t used = used_at(loc, thing), need = cell_of(b), room = room_of(u);
-  if (used + need > room)
-    return refuse(loc + " has no room for " + thing + " (area: " + format_area(used) + " used + " +
-                  format_area(need) + " > " + format_area(room) + " m²)");
-  return true;
+  std::string w = world::refusal(thing, b, loc, at, options_.fit);
+  if (w.empty()) return true;
+  if (why) *why = std::move(w);
+  return false;
 }
 
 world::Vec3 SymbolicWorld::point_of_location(const std::string& loc) const {

@@ -42,6 +42,7 @@
 #include "rtamp/world/geometry.hpp"
 #include "rtamp/world/placement.hpp"
 #include "rtamp/world/scenario.hpp"
+#include "rtamp/world/space_rules.hpp"
 
 namespace rtamp::exec {
 
@@ -153,7 +154,7 @@ class SymbolicWorld final : public World {
   std::int64_t used(const std::string& location) const;
   // "" if `location` would take `thing` (present) now, else why not: the rules
   // every place, put-back and intervention follows (location kind, nesting,
-  // fit, capacity, room).
+  // fit, capacity, room: world/space_rules.hpp's refusal(), the rule book).
   std::string refusal(const std::string& thing, const std::string& location) const;
   // "" if every invariant of the header holds, else what is wrong (one line each).
   std::string check_invariants() const;
@@ -166,10 +167,7 @@ class SymbolicWorld final : public World {
     world::Vec3 size = world::Container{}.size;
   };
   // What the footprint rules need of a thing (present or about to be added).
-  struct Body {
-    world::Vec3 size = world::Object{}.size;
-    bool container = false;
-  };
+  using Body = world::Body;
 
   // Locations and room.
   bool is_region(const std::string& loc) const;

@@ -5,7 +5,8 @@
 //
 // Semantics of each kind (world::Intervention):
 //  - Relocate: move `subject` to `position`, else to a free spot of `location`, else to
-//    a free spot of a random other location. Moving a container carries its contents.
+//    a free spot of a random other location with room. Moving a container carries its
+//    contents.
 //  - Add / AddContainer: a reserved spare body gets the name and appears at `position`
 //    or a free spot of `location` (a random region when none is given).
 //  - Remove / RemoveContainer: the thing is hidden; a removed tray's contents drop to
@@ -15,10 +16,13 @@
 //  - TakeFromGripper: the weld is released and the held thing goes to a free spot of
 //    `location` (a tray with its contents, keeping its yaw), or is removed when no
 //    location is given (a tray's contents are then set down as for a remove).
-// Invariant: an intervention never puts two things in the same spot: targets come from
-// world::free_spot over the footprints of every present thing (the subject and its
-// contents excluded), and an explicit `position` that overlaps something is refused
-// (the event says why). Every event is reported, applied or not.
+// Invariants: an intervention never puts a thing where the rule book
+// (world/space_rules.hpp: nesting, fit, capacity, room) refuses it — the location named,
+// or where an explicit position falls — and is then refused with the symbolic world's
+// words (sim::space_refusal). It never puts two things in the same spot: targets come
+// from sim::free_spot with the arm's clearance (world::kPlaceGap) over the footprints of
+// every present thing (the subject and its contents excluded), and an explicit
+// `position` that overlaps something is refused. Every event is reported, applied or not.
 #pragma once
 
 #include <cstdint>
@@ -30,6 +34,7 @@
 #include "rtamp/sim/simulation.hpp"
 #include "rtamp/world/geometry.hpp"
 #include "rtamp/world/scenario.hpp"
+#include "rtamp/world/space_rules.hpp"
 
 namespace rtamp::sim {
 
@@ -71,7 +76,8 @@ class Operator {
   bool overlaps_anything(const world::Vec3& base, const world::Vec3& size, const std::vector<int>& exclude) const;
   std::vector<int> contents_of(int container) const;
   world::Geometry current_geometry() const;
-  std::string random_location(const std::string& avoid);
+  std::string random_location(const std::string& thing, const world::Body& body, const std::vector<int>& exclude,
+                              const std::string& avoid);
   world::Intervention random_intervention();
   void schedule_random();
 

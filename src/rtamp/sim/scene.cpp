@@ -58,6 +58,46 @@ std::vector<int> contents_of(const Simulation& sim, int container) {
   return in;
 }
 
+int container_capacity(const Simulation& sim, int container) {
+  const Thing& t = sim.thing(container);
+  if (const auto* c = sim.scenario().find_container(t.name)) return c->capacity;
+  for (const auto& c : sim.scenario().containers)
+    if (c.cls == t.cls) return c.capacity;
+  return 4;
+}
+
+std::string space_refusal(const Simulation& sim, const std::string& thing, const world::Body& body,
+                          const std::string& location, const std::vector<int>& exclude) {
+  world::LocationNow at;
+  const world::FitRules rules;
+  const int target = sim.find(location);
+  if (const world::Region* r = sim.scenario().find_region(location)) {
+    at.kind = world::LocationNow::Kind::Region;
+    at.usable = world::usable_extent(*r);
+    at.capacity = r->capacity;
+  } else if (target >= 0 && sim.thing(target).container && sim.thing(target).present) {
+    at.kind = world::LocationNow::Kind::Container;
+    world::Container c;
+    c.size = sim.thing(target).size;
+    at.usable = world::usable_extent(c, rules);
+    at.capacity = container_capacity(sim, target);
+    at.held = sim.held() == target;
+  }
+  if (at.kind != world::LocationNow::Kind::Unknown) {
+    const world::Geometry g = current_geometry(sim);
+    for (std::size_t i = 0; i < sim.things().size(); ++i) {
+      const Thing& t = sim.things()[i];
+      const int ii = static_cast<int>(i);
+      if (!t.present || t.name.empty() || sim.held() == ii || t.name == thing) continue;
+      if (std::find(exclude.begin(), exclude.end(), ii) != exclude.end()) continue;
+      if (location_of(sim, g, ii) != location) continue;
+      ++at.count;
+      at.used += world::cell_units({t.size, t.container}, rules);
+    }
+  }
+  return world::refusal(thing, body, location, at, rules);
+}
+
 std::optional<world::Vec3> free_spot(const Simulation& sim, const std::string& location, const world::Vec3& size,
                                      const std::vector<int>& exclude, double gap,
                                      const std::vector<world::Footprint>& keep_clear) {
@@ -75,7 +115,7 @@ std::optional<world::Vec3> free_spot(const Simulation& sim, const std::string& l
     const Eigen::Vector3d p = sim.position(ii);
     // Things keep `gap` from each other (their footprints grow by it on every side);
     // from a tray standing in the area, at most 1.5 cm (only its rim is in the way).
-    const double gg = t.container ? std::min(gap, 0.015) : gap;
+    const double gg = t.container ? std::min(gap, world::kContainerGap) : gap;
     occupied.push_back(world::footprint_at({p.x(), p.y(), 0}, {t.size[0] + 2 * gg, t.size[1] + 2 * gg, 0}));
   }
   if (into_container) {

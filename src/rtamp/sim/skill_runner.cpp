@@ -101,6 +101,16 @@ bool SkillRunner::start_place(const std::string& location) {
     controller_.fail("cannot place '" + object + "' into itself");
     return false;
   }
+  // The rule book first (capacity, room, fit, nesting), in the symbolic world's words.
+  const Thing& t = sim_.thing(i);
+  std::vector<int> riding{i};
+  riding.insert(riding.end(), carried_.begin(), carried_.end());
+  if (std::string why = options_.space_rules ? space_refusal(sim_, object, {t.size, t.container}, location, riding)
+                                             : std::string();
+      !why.empty()) {
+    controller_.fail("cannot place " + object + ": " + why);
+    return false;
+  }
   sim_.clear_reserved_spot();  // our own earlier reservation is no obstacle
   auto spot = place_spot(i, location);
   if (!spot) {

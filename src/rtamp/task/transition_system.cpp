@@ -78,7 +78,7 @@ void System::build_fit_tables() {
   rooms_.assign(L, std::numeric_limits<std::int64_t>::max() / 4);
   for (unsigned t = 0; t < T; ++t) {
     if (!options_.ignore_geometry)
-      cells_[t] = static_cast<std::int64_t>(std::floor(world::cell_area(size_of(t), is_container(t), rules) / kAreaUnit));
+      cells_[t] = world::cell_units({size_of(t), is_container(t)}, rules);
     for (unsigned l = 0; l < L; ++l) {
       const bool f = options_.ignore_geometry || world::fits(size_of(t), usable[l]);
       fits_[std::size_t{t} * L + l] = f;
@@ -88,7 +88,7 @@ void System::build_fit_tables() {
   }
   if (!options_.ignore_geometry)
     for (unsigned l = 0; l < L; ++l)
-      rooms_[l] = static_cast<std::int64_t>(std::ceil(world::room_area(usable[l], rules) / kAreaUnit));
+      rooms_[l] = world::room_units(usable[l], rules);
 }
 
 void System::forbid_move(unsigned thing, unsigned loc) {

@@ -53,6 +53,7 @@
 
 #include "rtamp/task/state.hpp"
 #include "rtamp/world/fit.hpp"
+#include "rtamp/world/space_rules.hpp"
 #include "rtamp/world/placement.hpp"
 #include "rtamp/world/scenario.hpp"
 
@@ -111,7 +112,7 @@ class System {
   bool fits(unsigned thing, unsigned loc) const { return fits_[thing * num_locations() + loc] != 0; }
   std::int64_t cell(unsigned thing) const { return cells_[thing]; }
   std::int64_t room(unsigned loc) const { return rooms_[loc]; }
-  static constexpr double kAreaUnit = 1e-8;  // m²
+  static constexpr double kAreaUnit = world::kAreaUnit;  // m² (the rule book's, world/space_rules.hpp)
 
   // Forbidden moves. forbid_move(t, l) excludes move(t, l) from for_each_move
   // and enabled(); out-of-range indices are ignored. If t is in a symmetry

@@ -28,12 +28,17 @@
 
 namespace rtamp::world {
 
-// The defaults are the simulation's values (SkillRunnerOptions::place_gap,
-// the 1.5 cm kept from a tray in sim::free_spot, sim's kTrayRim).
+// The clearances of space: one set of constants for the planner, both worlds,
+// the arm's places (SkillRunnerOptions::place_gap) and the MuJoCo person's
+// (sim/operator.cpp), and sim::free_spot's distance kept from a tray.
+inline constexpr double kPlaceGap = 0.035;      // m, between two things (room for the fingers)
+inline constexpr double kContainerGap = 0.015;  // m, kept from a container standing in the same region
+inline constexpr double kContainerRim = 0.008;  // m, rim thickness of a container (sim's kTrayRim)
+
 struct FitRules {
-  double gap = 0.035;            // m, between two things the arm places
-  double container_gap = 0.015;  // m, kept from a container standing in the same region
-  double rim = 0.008;            // m, rim thickness of a container (every side)
+  double gap = kPlaceGap;                // m, between two things the arm places
+  double container_gap = kContainerGap;  // m, kept from a container standing in the same region
+  double rim = kContainerRim;            // m, rim thickness of a container (every side)
 };
 
 // x, y extents of an area.
