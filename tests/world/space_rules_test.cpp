@@ -40,9 +40,13 @@ TEST(SpaceRules, RefusalsInTheirOrderAndWords) {
   EXPECT_EQ(refusal("t2", kTray, "r1", region(0.2, 0, 5, 1'000'000'000)),
             "t2 does not fit in r1 (0.300 x 0.160 m; usable 0.200 x 0.200 m)");
   EXPECT_EQ(refusal("o1", kBlock, "r1", region(0.2, 2, 2, 1'000'000'000)), "r1 has no room (capacity 2)");
-  const std::int64_t room = room_units({0.2, 0.2});
-  EXPECT_EQ(refusal("o1", kBlock, "r1", region(0.2, 99, 1, room - cell_units(kBlock) + 1)).rfind("r1 has no room for o1 (area: ", 0), 0u);
-  EXPECT_EQ(refusal("o1", kBlock, "r1", region(0.2, 99, 1, room - cell_units(kBlock))), "");
+  // A 20 cm region holds a 3 x 3 grid of 4 cm blocks 3.5 cm apart: nine fit, a tenth never.
+  const std::int64_t share = cell_units(kBlock, {0.2, 0.2}, false);
+  EXPECT_GT(share, kRoomUnits / 10);
+  EXPECT_LE(share, kRoomUnits / 9);
+  EXPECT_EQ(refusal("o9", kBlock, "r1", region(0.2, 99, 8, 8 * share)), "");
+  EXPECT_EQ(refusal("o10", kBlock, "r1", region(0.2, 99, 9, 9 * share)),
+            "r1 has no room for o10 (it takes 10 % of r1; 92 % is taken)");
   // A thing exactly as large as the usable extent fits (edges may touch).
   EXPECT_EQ(refusal("o1", kBlock, "r1", region(0.04, 1)), "");
 }
@@ -54,7 +58,8 @@ TEST(SpaceRules, LocationNowCountsTheThingsDirectlyThere) {
   EXPECT_EQ(r1.kind, LocationNow::Kind::Region);
   EXPECT_EQ(r1.capacity, 4);
   EXPECT_EQ(r1.count, 4);
-  EXPECT_EQ(r1.used, 3 * cell_units(body_of(s, "o1")) + cell_units(body_of(s, "r3")));
+  const Extent u1 = usable_extent(*s.find_region("r1"));
+  EXPECT_EQ(r1.used, 3 * cell_units(body_of(s, "o1"), u1, false) + cell_units(body_of(s, "r3"), u1, false));
   EXPECT_EQ(location_now(s, p, "r1", "o2").count, 3);
   p.things["o1"].location = "r3";  // on the tray: counts there, not in r1
   EXPECT_EQ(location_now(s, p, "r1", "").count, 3);

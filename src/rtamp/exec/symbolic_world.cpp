@@ -168,7 +168,7 @@ int SymbolicWorld::count_at(const std::string& loc, const std::string& except) c
 std::int64_t SymbolicWorld::used_at(const std::string& loc, const std::string& except) const {
   std::int64_t n = 0;
   for (const auto& [name, t] : placement_.things)
-    if (t.location == loc && name != except) n += cell_of(body_of(name));
+    if (t.location == loc && name != except) n += cell_of(body_of(name), loc);
   return n;
 }
 
@@ -200,12 +200,8 @@ world::Extent SymbolicWorld::usable(const std::string& loc) const {
   return world::usable_extent(c, options_.fit);
 }
 
-std::int64_t SymbolicWorld::cell_of(const Body& b) const {
-  return world::cell_units(b, options_.fit);
-}
-
-std::int64_t SymbolicWorld::room_of(const world::Extent& u) const {
-  return world::room_units(u, options_.fit);
+std::int64_t SymbolicWorld::cell_of(const Body& b, const std::string& loc) const {
+  return world::cell_units(b, usable(loc), is_container(loc), options_.fit);
 }
 
 bool SymbolicWorld::fits(const std::string& thing, const std::string& location) const {
@@ -213,12 +209,13 @@ bool SymbolicWorld::fits(const std::string& thing, const std::string& location) 
   return world::fits(body_of(thing).size, usable(location));
 }
 
-std::int64_t SymbolicWorld::cell(const std::string& thing) const {
-  return placement_.things.count(thing) ? cell_of(body_of(thing)) : -1;
+std::int64_t SymbolicWorld::cell(const std::string& thing, const std::string& location) const {
+  if (!placement_.things.count(thing) || (!is_region(location) && !is_container(location))) return -1;
+  return cell_of(body_of(thing), location);
 }
 
 std::int64_t SymbolicWorld::room(const std::string& location) const {
-  return is_region(location) || is_container(location) ? room_of(usable(location)) : -1;
+  return is_region(location) || is_container(location) ? world::kRoomUnits : -1;
 }
 
 std::int64_t SymbolicWorld::used(const std::string& location) const {
@@ -770,10 +767,10 @@ std::string SymbolicWorld::check_invariants() const {
       if (!stayed && !world::fits(body_of(name).size, usable(loc)))
         bad(name + " was put in " + loc + " where it does not fit");
     }
-    const std::int64_t u = used_at(loc, ""), r = room_of(usable(loc));
+    const std::int64_t u = used_at(loc, ""), r = world::kRoomUnits;
     if (u > r && !all_unmoved)
       bad(loc + " is over its room (" + std::to_string(u) + " > " + std::to_string(r) +
-          " area units) and holds things put there since the start");
+          " room units) and holds things put there since the start");
   }
   const bool running = status_ == MoveStatus::Running;
   if (running != (phase_ != Phase::Idle && !halted_)) bad("status and phase disagree");

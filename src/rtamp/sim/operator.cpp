@@ -72,13 +72,13 @@ world::Geometry Operator::current_geometry() const { return sim::current_geometr
 
 std::vector<int> Operator::contents_of(int container) const { return sim::contents_of(sim_, container); }
 
-std::optional<world::Vec3> Operator::spot_in(const std::string& location, const world::Vec3& size,
+std::optional<world::Vec3> Operator::spot_in(const std::string& location, const world::Body& body,
                                              const std::vector<int>& exclude) {
   // Keep clear of the gripper's fingers when the hand is low over the table.
   std::vector<world::Footprint> keep_clear;
   const Eigen::Vector3d tool = sim_.tool_pose().translation();
   if (tool.z() < 0.25) keep_clear.push_back(world::footprint_at({tool.x(), tool.y(), 0}, {0.1, 0.12, 0}));
-  return sim::free_spot(sim_, location, size, exclude, world::kPlaceGap, keep_clear);
+  return sim::free_spot(sim_, location, body, exclude, world::kPlaceGap, keep_clear);
 }
 
 std::string Operator::set_down(const std::vector<int>& things, const Eigen::Vector3d& where) {
@@ -100,7 +100,7 @@ std::string Operator::set_down(const std::vector<int>& things, const Eigen::Vect
     std::string loc;
     for (const auto& [d, name] : regions)
       if (space_refusal(sim_, t.name, {t.size, t.container}, name, exclude).empty() &&
-          (to = spot_in(name, t.size, exclude))) {
+          (to = spot_in(name, {t.size, t.container}, exclude))) {
         loc = name;
         break;
       }
@@ -230,7 +230,7 @@ OperatorEvent Operator::apply(const world::Intervention& iv) {
       why = "no free spot for '" + name + "' at " + fmt(*iv.position);
       return std::nullopt;
     }
-    auto spot = spot_in(loc, body.size, exclude);
+    auto spot = spot_in(loc, body, exclude);
     if (!spot) why = "no free spot for '" + name + "'";
     return spot;
   };

@@ -68,7 +68,7 @@ class Operator {
   const std::vector<OperatorEvent>& history() const { return history_; }
 
  private:
-  std::optional<world::Vec3> spot_in(const std::string& location, const world::Vec3& size,
+  std::optional<world::Vec3> spot_in(const std::string& location, const world::Body& body,
                                      const std::vector<int>& exclude);
   // Sets down things that were in the air (a removed tray's contents) near `where`;
   // returns the detail to append to the event ("; 'o1' set down in r1 at (...)").

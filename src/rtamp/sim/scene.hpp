@@ -2,8 +2,8 @@
 // share: the symbolic geometry with the containers where they are NOW, which things a
 // container holds, whether a location may take a thing now (the rule book,
 // world/space_rules.hpp, on the scene's counts), and free spots that overlap nothing (a
-// 5 mm grid search over the location, nearest its centre or, for small things in a
-// region, nearest the robot, against the footprints of every present thing).
+// search over the location, nearest its centre or, for objects in a region, nearest
+// its corner by the robot, against the footprints of every present thing).
 // Invariant: a spot returned by free_spot() keeps `gap` from every present thing's
 // footprint except the excluded ones and the target container itself.
 #pragma once
@@ -46,13 +46,16 @@ int container_capacity(const Simulation& sim, int container);
 std::string space_refusal(const Simulation& sim, const std::string& thing, const world::Body& body,
                           const std::string& location, const std::vector<int>& exclude);
 
-// A free spot (centre of the base) for a thing of `size` in `location`: inside its
-// footprint, keeping `gap` from every present thing (except `exclude`) and not
-// overlapping `keep_clear` (or a target tray's rims); of all such spots on a 5 mm grid,
-// the one nearest the location's centre — except for small things put into a region,
-// which pack from the region's corner nearest the robot's base, leaving the middle to
-// trays. nullopt if the location is unknown or full.
-std::optional<world::Vec3> free_spot(const Simulation& sim, const std::string& location, const world::Vec3& size,
+// A free spot (centre of the base) for a thing of `body` in `location`: inside its
+// footprint, keeping `gap` from every present thing (except `exclude`; from a container
+// standing there at most world::kContainerGap) and not overlapping `keep_clear` (or a
+// target tray's rims); of all such spots on a 5 mm grid and those touching an occupied
+// footprint's edge, the one nearest the anchor: for an object put into a region, the
+// region's corner nearest the robot's base (so things of one size fill the grid of
+// world/fit.hpp's room rule, leaving the middle to trays); for a container, or
+// anything put into a container, the area's centre. nullopt if the location is unknown
+// or full.
+std::optional<world::Vec3> free_spot(const Simulation& sim, const std::string& location, const world::Body& body,
                                      const std::vector<int>& exclude, double gap = world::kPlaceGap,
                                      const std::vector<world::Footprint>& keep_clear = {});
 

@@ -57,7 +57,7 @@ std::optional<world::Vec3> SkillRunner::place_spot(int i, const std::string& loc
       keep_clear.push_back(world::footprint_at({z.x(), z.y(), 0}, {0.026, kFingerPad + 0.002, 0}));
     }
   }
-  return free_spot(sim_, location, t.size, exclude, options_.place_gap, keep_clear);
+  return free_spot(sim_, location, {t.size, t.container}, exclude, options_.place_gap, keep_clear);
 }
 
 bool SkillRunner::start_pick(const std::string& object) {

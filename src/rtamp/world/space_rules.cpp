@@ -13,20 +13,21 @@ std::string metres(double v) {
   return b;
 }
 
-std::string square_metres(std::int64_t units) {
+std::string percent(std::int64_t units) {
   char b[32];
-  std::snprintf(b, sizeof b, "%.4f", static_cast<double>(units) * kAreaUnit);
+  std::snprintf(b, sizeof b, "%.0f %%", 100.0 * static_cast<double>(units) / static_cast<double>(kRoomUnits));
   return b;
 }
 
 }  // namespace
 
-std::int64_t cell_units(const Body& b, const FitRules& rules) {
-  return static_cast<std::int64_t>(std::floor(cell_area(b.size, b.container, rules) / kAreaUnit));
-}
-
-std::int64_t room_units(const Extent& usable, const FitRules& rules) {
-  return static_cast<std::int64_t>(std::ceil(room_area(usable, rules) / kAreaUnit));
+std::int64_t cell_units(const Body& b, const Extent& usable, bool into_container, const FitRules& rules) {
+  const int k = grid_count(b.size, b.container, into_container, usable, rules);
+  const double area = std::min(1.0, cell_area(b.size, b.container, rules) / room_area(usable, rules));
+  const auto area_share = static_cast<std::int64_t>(std::floor(area * static_cast<double>(kRoomUnits)));
+  if (k == 0) return area_share;  // it does not fit (an initial placement may put it there)
+  const std::int64_t share = std::max(area_share, kRoomUnits / (k + 1) + 1);
+  return std::min(share, kRoomUnits / k);  // k always fit (cell / room <= 1 / k up to rounding)
 }
 
 std::string refusal(std::string_view thing_name, const Body& b, std::string_view loc_name, const LocationNow& at,
@@ -42,10 +43,11 @@ std::string refusal(std::string_view thing_name, const Body& b, std::string_view
     return thing + " does not fit in " + loc + " (" + metres(b.size[0]) + " x " + metres(b.size[1]) + " m; usable " +
            metres(at.usable.x) + " x " + metres(at.usable.y) + " m)";
   if (at.count >= at.capacity) return loc + " has no room (capacity " + std::to_string(at.capacity) + ")";
-  const std::int64_t need = cell_units(b, rules), room = room_units(at.usable, rules);
-  if (at.used + need > room)
-    return loc + " has no room for " + thing + " (area: " + square_metres(at.used) + " used + " + square_metres(need) +
-           " > " + square_metres(room) + " m²)";
+  const bool into_container = at.kind == LocationNow::Kind::Container;
+  const std::int64_t need = cell_units(b, at.usable, into_container, rules);
+  if (at.used + need > kRoomUnits)
+    return loc + " has no room for " + thing + " (it takes " + percent(need) + " of " + loc + "; " + percent(at.used) +
+           " is taken)";
   return "";
 }
 
@@ -85,7 +87,7 @@ LocationNow location_now(const Scenario& s, const Placement& p, std::string_view
   for (const auto& [name, t] : p.things) {
     if (t.location != loc || name == without) continue;
     ++at.count;
-    at.used += cell_units(body_of(s, name), rules);
+    at.used += cell_units(body_of(s, name), at.usable, at.kind == LocationNow::Kind::Container, rules);
   }
   return at;
 }

@@ -5,7 +5,7 @@
 // planner change (world/change.hpp check_change_room), so that every world
 // refuses the same things with the same words. The transition system
 // (task::System) applies the same rules as precomputed tables: cell_units()
-// and room_units() are its integers.
+// are its integers.
 //
 // Rules, in the order they are checked (the first broken one is the refusal):
 //  1. the location is a region or a present container; a thing never goes
@@ -15,9 +15,11 @@
 //     extent, no rotation;
 //  3. capacity: fewer things directly at the location than its capacity (a
 //     container counts 1 in its region, its contents count only in it);
-//  4. room (fit.hpp's area bound): the cells of the things directly there plus
-//     the thing's own cell within the location's room, in area units
-//     (kAreaUnit m², cells rounded down, rooms up: rounding never refuses more).
+//  4. room (fit.hpp's shares): the shares of the things directly there plus
+//     the thing's own within the whole location, in room units (a location is
+//     kRoomUnits; a thing of which k fit on the arm's grid takes the larger of
+//     its area share and kRoomUnits / (k + 1) + 1, at most kRoomUnits / k: k
+//     of one size always fit, k + 1 never do).
 // A location's state is given "without the thing": what is there if the thing
 // is not (so asking about where a thing already is asks whether it may stay).
 #pragma once
@@ -32,7 +34,7 @@
 
 namespace rtamp::world {
 
-inline constexpr double kAreaUnit = 1e-8;  // m², the unit of cells and rooms
+inline constexpr std::int64_t kRoomUnits = std::int64_t{1} << 40;  // the whole room of a location
 
 // What the rules need of a thing: its size (x, y used) and whether it is a container.
 struct Body {
@@ -47,13 +49,13 @@ struct LocationNow {
   Extent usable;          // usable_extent() of the region or container
   int capacity = 0;       // the location's capacity
   int count = 0;          // things directly there
-  std::int64_t used = 0;  // the sum of their cell_units()
+  std::int64_t used = 0;  // the sum of their cell_units() here
   bool held = false;      // a container that is in the gripper
 };
 
-// fit.hpp's cell_area() and room_area() in area units.
-std::int64_t cell_units(const Body& b, const FitRules& rules = {});
-std::int64_t room_units(const Extent& usable, const FitRules& rules = {});
+// The share of a location of `usable` extent (a container if `into_container`)
+// that a thing of body `b` takes, in room units (its area share if it does not fit).
+std::int64_t cell_units(const Body& b, const Extent& usable, bool into_container, const FitRules& rules = {});
 
 // "" if `location` (named `loc`, in state `at`) may take `thing` (of body `b`)
 // now, else why not, one line naming the thing and the location, e.g.
