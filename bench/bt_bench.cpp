@@ -1,4 +1,4 @@
-// Behavior-tree engine benchmarks (issue 6 bar: one tick of a 1,000-subtree tree
+// Behavior-tree engine benchmarks (the bar: one tick of a 1,000-subtree tree
 // under 20 us with no allocation per tick; insertion/removal/replacement of
 // subtrees in such a tree under 1 ms). The tree has the paper's action-condition
 // shape (Fig. 3b): root over 1,000 subtrees

@@ -1,6 +1,6 @@
 // The floor of a replan after a change to the *set of things* (an object
 // added or removed) on 3-block-tray with the `euclid` model: what even a
-// perfect heuristic cannot avoid. Issue 4 asks A* with experience to be 10x
+// perfect heuristic cannot avoid. The planning bar asks A* with experience to be 10x
 // faster than cold A* on replans; this benchmark measures how fast any A*-type
 // replan can be when the change makes a new transition system, so that no
 // node of the old product graph is ever reached again.

@@ -1,4 +1,4 @@
-// `rtamp serve`'s cost (issue 14's bars, docs/benchmarks.md):
+// `rtamp serve`'s cost (the bars in docs/benchmarks.md):
 //
 //   BM_ServeOverhead/W/C   one whole episode of 3-block-tray per iteration, at
 //                          speed 0 (as fast as possible: a paced episode's wall

@@ -1,4 +1,4 @@
-"""rtamp.batch: the trial grid of `rtamp batch`, run on a Dask cluster (issue 12 item 4).
+"""rtamp.batch: the trial grid of `rtamp batch`, run on a Dask cluster.
 
     from dask.distributed import Client
     import rtamp.batch

@@ -1,4 +1,4 @@
-// The C++ half of rtamp.batch (python/rtamp/batch.py, issue 12 item 4): the
+// The C++ half of rtamp.batch (python/rtamp/batch.py): the
 // trial grid of `rtamp batch` (batch/trials.hpp: algorithms x changes x BT
 // variants x trials, seeds by trial index), running a list of trials (each an
 // independent episode, batch::run_batch, without the GIL) to CSV rows, and

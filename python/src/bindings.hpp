@@ -1,4 +1,4 @@
-// Shared declarations of the Python module's binding files (issue 12 item 3):
+// Shared declarations of the Python module's binding files:
 // one bind_<area>() per file, called in dependency order by module.cpp, and
 // the helpers that several areas use (name <-> enum tables, GIL-safe
 // ownership of Python objects held by C++).

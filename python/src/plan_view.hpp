@@ -1,4 +1,4 @@
-// Python-side views of planning results (issue 12 item 3): a plan::PlanResult
+// Python-side views of planning results: a plan::PlanResult
 // with every step named ("move(o1, r2)", states as "o1@r1 o2@r3 hand@r2") and
 // its action tuples (plan/action_tuple.hpp), made while the planner that
 // produced it is at hand, so a Python user never needs the TS to read a plan.

@@ -134,7 +134,7 @@ TEST(Composites, EmptyOutcomes) {
   EXPECT_EQ(tick_empty(std::make_unique<Fallback>()), Status::Failure);
   EXPECT_EQ(tick_empty(std::make_unique<ReactiveFallback>()), Status::Failure);
   EXPECT_EQ(tick_empty(std::make_unique<Chooser>()), Status::Failure);
-  // An empty Parallel succeeds whatever its thresholds (issue 12: (1, 1) used to fail).
+  // An empty Parallel succeeds whatever its thresholds ((1, 1) used to fail).
   for (int sc = -3; sc <= 3; ++sc) {
     for (int fc = -3; fc <= 3; ++fc) {
       EXPECT_EQ(tick_empty(std::make_unique<Parallel>("par", sc, fc)), Status::Success) << sc << " " << fc;

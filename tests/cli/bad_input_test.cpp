@@ -1,4 +1,4 @@
-// A table of bad inputs for every entry point of the rtamp binary (issue 13,
+// A table of bad inputs for every entry point of the rtamp binary (the checks of
 // "How it is checked"): scenario files (malformed, hostile and wrong YAML;
 // operator scripts), the LTL task and its quoted atoms through plan, run,
 // batch and sim, `plan --change`, `sim --do`, `gen --task` / `--prop`, and
@@ -449,6 +449,14 @@ void change_cases(std::vector<Case>& t) {
   add({"remove-container r3", "move o1 r3"}, "--change #2:1:9:", "unknown location 'r3'");
   add({"add-region r9 2 2", "add-region r8 2 2.05"}, "--change #2:1:15:", "overlaps region 'r9'");
   add({"move o1 r2", "move o2 r2", "move o3 r9"}, "--change #3:1:9:", "unknown location 'r9'");
+  // The rules of space (world/space_rules.hpp): a change that would overfill a location.
+  add({"add o4 block r1"}, "--change #1:1:14:", "cannot put 'o4' in 'r1': r1 has no room (capacity 4)");
+  add({"add-container t9 tray r1"}, "--change #1:1:23:", "cannot put 't9' in 'r1': r1 has no room (capacity 4)");
+  add({"move o1 r3", "move o2 r3", "move o3 r3", "add o4 block r3"}, "--change #4:1:14:",
+      "r3 has no room (capacity 3)");
+  add({"move r3 r2", "add o4 block r2", "add o5 block r2", "add o6 block r2", "move o1 r3", "move o2 r3",
+       "remove-container r3"},
+      "--change #7:1:18:", "cannot put 'o2' in 'r2': r2 has no room (capacity 4)");
   t.push_back({"change",
                {"plan", "3-block-tray", "--json", "--change", "add-region r9 0.40 0.32"},
                "--change #1:1:15:",

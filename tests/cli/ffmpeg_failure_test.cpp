@@ -1,5 +1,5 @@
 // An ffmpeg that fails while `rtamp run --video` or `rtamp sim --video` runs
-// (issue 13, "external encoders fail with a clean error, never a signal"). A
+// ("external encoders fail with a clean error, never a signal"). A
 // fake `ffmpeg` first on PATH either exits at once, reads a few frames and
 // exits non-zero, or reads every frame and exits non-zero at the end. For
 // each, and for both commands: rtamp exits (no signal, not SIGPIPE's 141)

@@ -26,7 +26,7 @@ namespace {
 using Kind = world::Intervention::Kind;
 
 // r1 (cap 3): o1 and tray t1 (cap 2) holding o2; r2 (cap 3): o3; r3 (cap 1): o4 (full); r4 (cap 2): empty.
-// The tray (24 x 16 cm) fits r1, r2 and r4 (r4: room for two such trays), not r3 (20 x 20 cm).
+// The tray (24 x 16 cm) fits r1, r2 and r4 (r4: room for one such tray), not r3 (20 x 20 cm).
 constexpr const char* kTiny = R"(
 name: tiny
 robot: {model: ur5, base: [0, 0, 0], yaw: 0}
@@ -524,7 +524,7 @@ TEST(SymbolicWorld, MovingTheSourceTrayBeforeTheGraspTakesTheThingFromItsNewPlac
 TEST(SymbolicWorld, AddedContainersGetTheCapacityOfTheirClass) {
   SymbolicWorld w(tiny());
   ASSERT_TRUE(w.apply(iv(Kind::AddContainer, "t2", "r4")).applied);
-  ASSERT_TRUE(w.apply(iv(Kind::AddContainer, "b1", "r4", "box")).applied);
+  ASSERT_TRUE(w.apply(iv(Kind::AddContainer, "b1", "r2", "box")).applied);
   EXPECT_EQ(w.capacity("t2"), 2);  // like t1
   EXPECT_EQ(w.capacity("b1"), 4);  // added_container_capacity
   EXPECT_EQ(w.capacity("r3"), 1);
@@ -893,10 +893,11 @@ TEST(SymbolicWorld, TheFittingScenarioIsAsDescribed) {
   EXPECT_FALSE(w.fits("t3", "small"));
   EXPECT_TRUE(w.fits("t3", "pair"));
   EXPECT_FALSE(w.fits("b1", "t3"));
-  EXPECT_LE(w.used("pair") + w.cell("o1"), w.room("pair"));
-  EXPECT_GT(w.used("pair") + w.cell("t3"), w.room("pair"));
+  EXPECT_LE(w.used("pair") + w.cell("o1", "pair"), w.room("pair"));
+  EXPECT_GT(w.used("pair") + w.cell("t3", "pair"), w.room("pair"));
   EXPECT_EQ(w.fits("nothing", "a"), false);
-  EXPECT_EQ(w.cell("nothing"), -1);
+  EXPECT_EQ(w.cell("nothing", "a"), -1);
+  EXPECT_EQ(w.cell("o1", "nowhere"), -1);
   EXPECT_EQ(w.room("nowhere"), -1);
   EXPECT_EQ(w.used("nowhere"), -1);
 }
@@ -919,8 +920,8 @@ TEST(SymbolicWorld, InterventionsFollowTheFootprintRules) {
       {"a tray added to far", iv(Kind::AddContainer, "x", "far"), "", "far"},
       {"an added container of a new class (24 x 16 cm) does not fit small",
        iv(Kind::AddContainer, "x", "small", "box"), "x does not fit in small", ""},
-      {"an added container of a new class (smaller) has room in pair",
-       iv(Kind::AddContainer, "x", "pair", "box"), "", "pair"},
+      {"an added container of a new class (24 x 16 cm) has no room in pair either (a third beside two)",
+       iv(Kind::AddContainer, "x", "pair", "box"), "pair has no room for x", ""},
       {"an added brick (b1's size) does not fit a tray", iv(Kind::Add, "x", "t3", "brick"),
        "x does not fit in t3", ""},
       {"an added brick fits a region", iv(Kind::Add, "x", "a", "brick"), "", "a"},
@@ -977,8 +978,8 @@ TEST(SymbolicWorld, PutBacksGoToTheClosestLocationWhereTheThingFitsAndHasRoom) {
   SymbolicWorld w(fitting());
   w.start(move("t3", "a", "pair"));  // no room in pair: the place fails
   to_middle_of(w, Phase::Carry);
-  // While t3 is carried, a fills up: o1 and three trays leave no room for t3 (capacity 6 would allow it).
-  for (const char* x : {"x1", "x2", "x3"}) ASSERT_TRUE(w.apply(iv(Kind::AddContainer, x, "a")).applied);
+  // While t3 is carried, a fills up: o1 and two trays leave no room for t3 (capacity 6 would allow it).
+  for (const char* x : {"x1", "x2"}) ASSERT_TRUE(w.apply(iv(Kind::AddContainer, x, "a")).applied);
   EXPECT_NE(w.refusal("t3", "a").find("a has no room for t3"), std::string::npos) << w.refusal("t3", "a");
   EXPECT_NE(w.refusal("t3", "small").find("does not fit"), std::string::npos);
   // The gripper cannot hand it over into small either: the move goes on.
@@ -999,14 +1000,15 @@ TEST(SymbolicWorld, PutBacksGoToTheClosestLocationWhereTheThingFitsAndHasRoom) {
 }
 
 TEST(SymbolicWorld, SpilledContentsGoWhereTheyHaveRoom) {
-  // snug (32 x 18 cm, room 0.0763 m²) holds the tray (cell 0.0457 m²) and 5
-  // blocks (0.0056 m² each); the tray holds 10. Without the tray snug has
-  // room for 13 blocks: 8 of the 10 spill into snug, 2 into side.
+  // The tray t (30 x 16 cm) holds three 4 cm blocks in a row (room, not its
+  // capacity 12); snug (32 x 18 cm, capacity 5) holds the tray and three blocks
+  // (room, not capacity). Removing the tray spills its three blocks: two into
+  // snug (then at its capacity 5), one into side.
   world::Scenario s = world::parse_scenario(R"(
 name: snug
 robot: {model: ur5, base: [0, 0, 0], yaw: 0}
 regions:
-  - {name: snug, center: [0.40, 0.30, 0], size: [0.32, 0.18], capacity: 20}
+  - {name: snug, center: [0.40, 0.30, 0], size: [0.32, 0.18], capacity: 5}
   - {name: side, center: [0.40, -0.30, 0], size: [0.40, 0.40], capacity: 20}
 containers:
   - {name: t, class: tray, position: [0.40, 0.30, 0], size: [0.30, 0.16, 0.03], capacity: 12}
@@ -1017,15 +1019,15 @@ task: "F done"
 )",
                                             "snug.yaml");
   SymbolicWorld w(s);
-  for (int i = 0; i < 10; ++i) ASSERT_TRUE(w.apply(iv(Kind::Add, "in" + std::to_string(i), "t")).applied);
-  EXPECT_FALSE(w.apply(iv(Kind::Add, "in10", "t")).applied);  // room, not capacity (12)
-  for (int i = 0; i < 5; ++i) ASSERT_TRUE(w.apply(iv(Kind::Add, "by" + std::to_string(i), "snug")).applied);
-  EXPECT_FALSE(w.apply(iv(Kind::Add, "by5", "snug")).applied);  // room, not capacity (20)
+  for (int i = 0; i < 3; ++i) ASSERT_TRUE(w.apply(iv(Kind::Add, "in" + std::to_string(i), "t")).applied);
+  EXPECT_NE(w.apply(iv(Kind::Add, "in3", "t")).detail.find("t has no room for in3"), std::string::npos);
+  for (int i = 0; i < 3; ++i) ASSERT_TRUE(w.apply(iv(Kind::Add, "by" + std::to_string(i), "snug")).applied);
+  EXPECT_NE(w.apply(iv(Kind::Add, "by3", "snug")).detail.find("snug has no room for by3"), std::string::npos);
   const WorldEvent e = w.apply(iv(Kind::RemoveContainer, "t"));
   ASSERT_TRUE(e.applied);
   std::map<std::string, int> spilled;
-  for (int i = 0; i < 10; ++i) ++spilled[loc(w, "in" + std::to_string(i))];
-  EXPECT_EQ(spilled, (std::map<std::string, int>{{"side", 2}, {"snug", 8}})) << e.detail;
+  for (int i = 0; i < 3; ++i) ++spilled[loc(w, "in" + std::to_string(i))];
+  EXPECT_EQ(spilled, (std::map<std::string, int>{{"side", 1}, {"snug", 2}})) << e.detail;
   EXPECT_NE(e.detail.find("(snug has no room)"), std::string::npos) << e.detail;
   EXPECT_EQ(w.check_invariants(), "");
 }
@@ -1175,9 +1177,9 @@ TEST(SymbolicWorld, AgreesWithTheTransitionSystemOnFitAndRoom) {
       }
       for (unsigned t = 0; t < ts.num_things(); ++t) {
         const std::string& tn = ts.thing_name(t);
-        ASSERT_EQ(w.cell(tn), ts.cell(t)) << tn;
         for (unsigned l = 0; l < ts.num_locations(); ++l) {
           const std::string& ln = ts.location_name(l);
+          ASSERT_EQ(w.cell(tn, ln), ts.cell(t, l)) << tn << " in " << ln;
           ASSERT_EQ(w.fits(tn, ln), ts.fits(t, l)) << tn << " in " << ln;
           if (ts.location(st, t) == l) continue;
           const std::string why = w.refusal(tn, ln);

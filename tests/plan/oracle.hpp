@@ -1,6 +1,6 @@
 // An independent brute-force planner for tests: its own state representation
 // (a vector of location names' indices), its own action rules (capacities and
-// footprints: fit and the area bound, in doubles), its own
+// footprints: fit and the grid shares of the room rule, in doubles), its own
 // motion-cost formulas written from docs/planning.md, labels from the world
 // layer's reference evaluator, an explicit product with the automaton, and
 // the minimum lasso cost by Dijkstra from the start plus, for every accepting
@@ -36,13 +36,36 @@ struct World {
   // Footprints (docs/planning.md "Footprints", its constants written out here):
   // a thing fits a location iff its x and y sizes are within the location's usable
   // extents (a region's size; a container's size less an 8 mm rim a side); room:
-  // the cells of the things directly at a location, with the new one's, are at
-  // most the location's room.
+  // k things of a thing's size fit a location on a grid keeping d (3.5 cm; 1.5 cm
+  // for containers) apart — per axis floor((u + d) / (s + d)) in a region,
+  // 1 + 2 floor((u - s) / 2 / (s + d)) in a container; its area share is
+  // (sx + p)(sy + p) / ((ux + 3.5 cm)(uy + 3.5 cm)), p = 3.5 cm for an object and
+  // 2 * 1.5 cm - 3.5 cm for a container; it takes max(area share, just over
+  // 1/(k + 1)), and the shares of the things directly at a location, with the new
+  // one's, are at most 1. (The rule was once the area share alone.)
   static constexpr double kGap = 0.035, kTrayGap = 0.015, kRim = 0.008;
   std::vector<std::array<double, 2>> size;    // per thing
   std::vector<std::array<double, 2>> usable;  // per location
-  std::vector<double> cell;                   // per thing
-  std::vector<double> room;                   // per location
+
+  // The share of location l that thing t takes.
+  double share(std::size_t t, std::size_t l) const {
+    const bool in_container = static_cast<int>(l) >= R;
+    const bool fits = size[t][0] <= usable[l][0] + 1e-12 && size[t][1] <= usable[l][1] + 1e-12;
+    const double d = container[t] ? std::min(kGap, kTrayGap) : kGap;
+    const double p = container[t] ? 2 * std::min(kGap, kTrayGap) - kGap : kGap;
+    double k = 1, cell = 1, room = 1;
+    for (std::size_t a = 0; a < 2; ++a) {
+      const double u = usable[l][a], sz = size[t][a];
+      k *= in_container ? 1 + 2 * std::floor((u - sz) / 2 / (sz + d) + 1e-9)
+                        : std::max(1.0, std::floor((u + d) / (sz + d) + 1e-9));
+      cell *= std::max(0.0, sz + p);
+      room *= u + kGap;
+    }
+    // The least share above 1/(k + 1), or the area share if larger; at most 1/k
+    // (a thing that does not fit, as an initial placement may have it: its area share).
+    if (!fits) return std::min(1.0, cell / room);
+    return std::min(1 / k, std::max(std::min(1.0, cell / room), 1 / (k + 1) + 1e-8));
+  }
 
   std::vector<std::vector<int>> groups;  // interchangeable objects (same class, never named)
 
@@ -69,14 +92,11 @@ struct World {
       classes.push_back(cls);
       container.push_back(is_container);
       size.push_back({sz[0], sz[1]});
-      const double p = is_container ? 2 * std::min(kGap, kTrayGap) - kGap : kGap;
-      cell.push_back(std::max(0.0, sz[0] + p) * std::max(0.0, sz[1] + p));
     };
     auto add_loc = [&](const std::string& name, int capacity, double ux, double uy) {
       locs.push_back(name);
       cap.push_back(capacity);
       usable.push_back({ux, uy});
-      room.push_back((ux + kGap) * (uy + kGap));
     };
     for (const auto& o : s.objects) add_thing(o.name, o.cls, false, o.size);
     for (const auto& c : s.containers) add_thing(c.name, c.cls, true, c.size);
@@ -138,7 +158,7 @@ inline std::vector<std::pair<int, int>> moves(const World& w, const St& s) {
   std::vector<double> used(w.locs.size(), 0.0);
   for (std::size_t t = 0; t < s.loc.size(); ++t) {
     ++count[static_cast<std::size_t>(s.loc[t])];
-    used[static_cast<std::size_t>(s.loc[t])] += w.cell[t];
+    used[static_cast<std::size_t>(s.loc[t])] += w.share(t, static_cast<std::size_t>(s.loc[t]));
   }
   for (std::size_t t = 0; t < w.things.size(); ++t)
     for (int l = 0; l < static_cast<int>(w.locs.size()); ++l) {
@@ -147,7 +167,7 @@ inline std::vector<std::pair<int, int>> moves(const World& w, const St& s) {
       if (w.container[t] && l >= w.R) continue;
       if (count[li] >= w.cap[li]) continue;
       if (w.size[t][0] > w.usable[li][0] + 1e-12 || w.size[t][1] > w.usable[li][1] + 1e-12) continue;  // does not fit
-      if (used[li] + w.cell[t] > w.room[li] + 1e-9) continue;                                         // no room
+      if (used[li] + w.share(t, li) > 1 + 1e-9) continue;                                             // no room
       out.emplace_back(static_cast<int>(t), l);
     }
   return out;

@@ -77,7 +77,7 @@ TEST(ServeRequest, RefusesWhatIsNotARequest) {
   EXPECT_EQ(reply["ok"], false);
 }
 
-// Issue 13: a page's intervention and the same intervention scripted in the
+// A page's intervention and the same intervention scripted in the
 // scenario file (validate.cpp) are refused with the same words — the part of
 // the message after its owner ("intervention 'add': " / "operator action
 // 'add' at t=0: "), kind names spelled each input's way.

@@ -1,4 +1,4 @@
-// `rtamp serve` through the built binary under SIGINT and SIGTERM (issue 14):
+// `rtamp serve` through the built binary under SIGINT and SIGTERM:
 // a live symbolic episode at speed 1, with a page-like WebSocket client
 // connected or none, is interrupted mid-episode; the process exits 130
 // (SIGINT) or 143 (SIGTERM) — it does not hang on a connected client — and

@@ -1,4 +1,4 @@
-// sim::Session checks an action list before anything moves (issue 13: the C++
+// sim::Session checks an action list before anything moves (the C++
 // API refuses what `rtamp sim --do` refuses, with the same words): run()
 // checks every action of the list first, execute() its one action, against
 // the names of the running simulation; a bad list leaves the world exactly as

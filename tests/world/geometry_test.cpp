@@ -111,7 +111,7 @@ bool fits(const Footprint& area, const std::vector<Footprint>& occupied, const F
 
 TEST(FreeSpot, EmptyAreaGivesTheGridPointNearestTheCentre) {
   // 0.3 wide: six columns of pitch 0.05 (no column at the centre); 0.25 deep: five rows (one at the centre).
-  const auto spot = free_spot(Footprint{0.4, 0.3, 0.3, 0.25}, 0.05, {}, {0.04, 0.04, 0.04});
+  const auto spot = free_spot(Footprint{0.4, 0.3, 0.3, 0.25}, 0.05, {}, {0.04, 0.04, 0.04}, 0.01);
   ASSERT_TRUE(spot);
   EXPECT_NEAR(std::abs((*spot)[0] - 0.4), 0.025, 1e-12);
   EXPECT_NEAR((*spot)[1], 0.3, 1e-12);
@@ -122,15 +122,16 @@ TEST(FreeSpot, FillsAGridThenRefusesWhenFull) {
   // A 0.2 x 0.1 area holds a 4 x 2 grid of 4 cm blocks with 1 cm gaps.
   const Footprint area{0, 0, 0.2, 0.1};
   const Vec3 block{0.04, 0.04, 0.04};
+  const double gap = 0.01;
   std::vector<Footprint> occupied;
   for (int i = 0; i < 8; ++i) {
-    const auto spot = free_spot(area, 0, occupied, block);
+    const auto spot = free_spot(area, 0, occupied, block, gap);
     ASSERT_TRUE(spot) << i;
     const Footprint f = footprint_at(*spot, block);
-    ASSERT_TRUE(fits(area, occupied, f, kSpotGap)) << i;
+    ASSERT_TRUE(fits(area, occupied, f, gap)) << i;
     occupied.push_back(f);
   }
-  EXPECT_FALSE(free_spot(area, 0, occupied, block));
+  EXPECT_FALSE(free_spot(area, 0, occupied, block, gap));
   EXPECT_FALSE(free_spot(area, 0, {}, {0.3, 0.04, 0.04}));  // too big
   EXPECT_FALSE(free_spot(area, 0, {}, {0, 0.04, 0.04}));    // degenerate
 }
@@ -152,17 +153,17 @@ TEST(FreeSpot, AgreesWithBruteForce) {
     const auto spot = free_spot(area, 0, occupied, size);
     if (spot) {
       ++found;
-      EXPECT_TRUE(fits(area, occupied, footprint_at(*spot, size), kSpotGap)) << trial;
+      EXPECT_TRUE(fits(area, occupied, footprint_at(*spot, size), kPlaceGap)) << trial;
       continue;
     }
     ++full;
     // free_spot's finest grid has a step of a quarter pitch; a free spot that
     // survives a margin of one step in every direction must lie near a grid point.
-    const double step = (std::min(size[0], size[1]) + kSpotGap) / 4;
+    const double step = (std::min(size[0], size[1]) + kPlaceGap) / 4;
     const Vec3 grown{size[0] + 2 * step, size[1] + 2 * step, size[2]};
     for (double x = area.min_x(); x <= area.max_x(); x += 0.002)
       for (double y = area.min_y(); y <= area.max_y(); y += 0.002)
-        ASSERT_FALSE(fits(area, occupied, footprint_at({x, y, 0}, grown), kSpotGap))
+        ASSERT_FALSE(fits(area, occupied, footprint_at({x, y, 0}, grown), kPlaceGap))
             << "trial " << trial << ": free at " << x << ", " << y;
   }
   EXPECT_GT(found, 50);

@@ -1,5 +1,5 @@
 // rtamp::bt::XmlElement / parse_xml — a small element tree read with expat, for
-// the BehaviorTree.CPP XML importer and schema writer (issue 12 item 5).
+// the BehaviorTree.CPP XML importer and schema writer.
 //
 // Keeps what a behavior-tree file needs: element names, attributes in document
 // order, character data, and the 1-based line and column of every start tag;

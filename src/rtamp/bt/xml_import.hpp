@@ -1,6 +1,6 @@
 // rtamp::bt::from_btcpp_xml — build a tree from BehaviorTree.CPP v4 XML (a file
 // drawn in Groot2, or one written by to_btcpp_xml), for every node kind the
-// engine has (issue 12 item 5).
+// engine has.
 //
 // Mapping (the inverse of xml_export.hpp, see docs/behavior-trees.md):
 //   Sequence, ReactiveSequence, Fallback, ReactiveFallback,

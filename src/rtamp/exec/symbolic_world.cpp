@@ -33,19 +33,6 @@ bool loose_ok(const world::Intervention& iv, const std::string& to) {
 
 bool holding_phase(Phase p) { return p == Phase::Carry || p == Phase::Place || p == Phase::Return; }
 
-std::string format_m(double v) {
-  char b[32];
-  std::snprintf(b, sizeof b, "%.3f", v);
-  return b;
-}
-
-// Area units (task::System::kAreaUnit) in m².
-std::string format_area(std::int64_t units) {
-  char b[32];
-  std::snprintf(b, sizeof b, "%.4f", static_cast<double>(units) * task::System::kAreaUnit);
-  return b;
-}
-
 void check(const SymbolicWorldOptions& o) {
   for (double d : {o.approach_base, o.grasp, o.carry_base, o.place, o.retreat, o.return_base})
     if (!(d >= 0 && std::isfinite(d))) throw Error("symbolic world: phase durations must be finite and >= 0");
@@ -141,14 +128,14 @@ int SymbolicWorld::count_at(const std::string& loc, const std::string& except) c
 std::int64_t SymbolicWorld::used_at(const std::string& loc, const std::string& except) const {
   std::int64_t n = 0;
   for (const auto& [name, t] : placement_.things)
-    if (t.location == loc && name != except) n += cell_of(body_of(name));
+    if (t.location == loc && name != except) n += cell_of(body_of(name), loc);
   return n;
 }
 
 // ---------------------------------------------------------------- footprint rules
-// world/fit.hpp's functions, called and rounded exactly as task::System's
-// fit tables are built (transition_system.cpp, build_fit_tables): the tests
-// check that both agree on every thing and location.
+// The rule book's (world/space_rules.hpp) cells and rooms, the integers
+// task::System's fit tables hold (transition_system.cpp, build_fit_tables):
+// the tests check that both agree on every thing and location.
 
 SymbolicWorld::Body SymbolicWorld::body_of(const std::string& thing) const {
   if (auto c = containers_.find(thing); c != containers_.end()) return {c->second.size, true};
@@ -173,13 +160,8 @@ world::Extent SymbolicWorld::usable(const std::string& loc) const {
   return world::usable_extent(c, options_.fit);
 }
 
-std::int64_t SymbolicWorld::cell_of(const Body& b) const {
-  return static_cast<std::int64_t>(
-      std::floor(world::cell_area(b.size, b.container, options_.fit) / task::System::kAreaUnit));
-}
-
-std::int64_t SymbolicWorld::room_of(const world::Extent& u) const {
-  return static_cast<std::int64_t>(std::ceil(world::room_area(u, options_.fit) / task::System::kAreaUnit));
+std::int64_t SymbolicWorld::cell_of(const Body& b, const std::string& loc) const {
+  return world::cell_units(b, usable(loc), is_container(loc), options_.fit);
 }
 
 bool SymbolicWorld::fits(const std::string& thing, const std::string& location) const {
@@ -187,12 +169,13 @@ bool SymbolicWorld::fits(const std::string& thing, const std::string& location) 
   return world::fits(body_of(thing).size, usable(location));
 }
 
-std::int64_t SymbolicWorld::cell(const std::string& thing) const {
-  return placement_.things.count(thing) ? cell_of(body_of(thing)) : -1;
+std::int64_t SymbolicWorld::cell(const std::string& thing, const std::string& location) const {
+  if (!placement_.things.count(thing) || (!is_region(location) && !is_container(location))) return -1;
+  return cell_of(body_of(thing), location);
 }
 
 std::int64_t SymbolicWorld::room(const std::string& location) const {
-  return is_region(location) || is_container(location) ? room_of(usable(location)) : -1;
+  return is_region(location) || is_container(location) ? world::kRoomUnits : -1;
 }
 
 std::int64_t SymbolicWorld::used(const std::string& location) const {
@@ -207,28 +190,20 @@ std::string SymbolicWorld::refusal(const std::string& thing, const std::string& 
 
 bool SymbolicWorld::can_hold(const std::string& loc, const std::string& thing, const Body& b,
                              std::string* why) const {
-  auto refuse = [&](std::string w) {
-    if (why) *why = std::move(w);
-    return false;
-  };
-  if (!is_region(loc)) {
-    if (!is_container(loc))
-      return refuse(loc.empty() ? "no location" : loc + " is not a location in the world");
-    if (loc == thing) return refuse(thing + " cannot go into itself");
-    if (b.container) return refuse(thing + " is a container and " + loc + " is one: containers do not nest");
-    if (*placement_.location_of(loc) == kInHand) return refuse(loc + " is in the gripper");
+  // The rule book (world/space_rules.hpp) decides, on this world's counts.
+  world::LocationNow at;
+  if (is_region(loc) || is_container(loc)) {
+    at.kind = is_region(loc) ? world::LocationNow::Kind::Region : world::LocationNow::Kind::Container;
+    at.held = at.kind == world::LocationNow::Kind::Container && *placement_.location_of(loc) == kInHand;
+    at.usable = usable(loc);
+    at.capacity = capacity(loc);
+    at.count = count_at(loc, thing);
+    at.used = used_at(loc, thing);
   }
-  const world::Extent u = usable(loc);
-  if (!world::fits(b.size, u))
-    return refuse(thing + " does not fit in " + loc + " (" + format_m(b.size[0]) + " x " +
-                  format_m(b.size[1]) + " m; usable " + format_m(u.x) + " x " + format_m(u.y) + " m)");
-  const int cap = capacity(loc);
-  if (count_at(loc, thing) >= cap) return refuse(loc + " has no room (capacity " + std::to_string(cap) + ")");
-  const std::int64_t used = used_at(loc, thing), need = cell_of(b), room = room_of(u);
-  if (used + need > room)
-    return refuse(loc + " has no room for " + thing + " (area: " + format_area(used) + " used + " +
-                  format_area(need) + " > " + format_area(room) + " m²)");
-  return true;
+  std::string w = world::refusal(thing, b, loc, at, options_.fit);
+  if (w.empty()) return true;
+  if (why) *why = std::move(w);
+  return false;
 }
 
 world::Vec3 SymbolicWorld::point_of_location(const std::string& loc) const {
@@ -670,10 +645,10 @@ std::string SymbolicWorld::check_invariants() const {
       if (!stayed && !world::fits(body_of(name).size, usable(loc)))
         bad(name + " was put in " + loc + " where it does not fit");
     }
-    const std::int64_t u = used_at(loc, ""), r = room_of(usable(loc));
+    const std::int64_t u = used_at(loc, ""), r = world::kRoomUnits;
     if (u > r && !all_unmoved)
       bad(loc + " is over its room (" + std::to_string(u) + " > " + std::to_string(r) +
-          " area units) and holds things put there since the start");
+          " room units) and holds things put there since the start");
   }
   const bool running = status_ == MoveStatus::Running;
   if (running != (phase_ != Phase::Idle && !halted_)) bad("status and phase disagree");

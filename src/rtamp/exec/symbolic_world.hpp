@@ -46,6 +46,7 @@
 #include "rtamp/world/geometry.hpp"
 #include "rtamp/world/placement.hpp"
 #include "rtamp/world/scenario.hpp"
+#include "rtamp/world/space_rules.hpp"
 #include "rtamp/world/table.hpp"
 
 namespace rtamp::exec {
@@ -139,17 +140,17 @@ class SymbolicWorld final : public World, public Intervenable {
   const std::vector<WorldEvent>& history() const { return history_; }
   // Capacity of a region or present container; -1 if there is none of that name.
   int capacity(const std::string& location) const;
-  // The footprint rules in task::System's units (task::System::kAreaUnit m²,
-  // cells rounded down, rooms up): `thing` (present) fits `location` (a
-  // region or present container) at all; its cell; the location's room; the
-  // sum of the cells of the things directly at it. false / -1 for unknown names.
+  // The footprint rules in task::System's units (world/space_rules.hpp room
+  // units): `thing` (present) fits `location` (a region or present container)
+  // at all; its share of the location; the location's room (kRoomUnits); the
+  // sum of the shares of the things directly at it. false / -1 for unknown names.
   bool fits(const std::string& thing, const std::string& location) const;
-  std::int64_t cell(const std::string& thing) const;
+  std::int64_t cell(const std::string& thing, const std::string& location) const;
   std::int64_t room(const std::string& location) const;
   std::int64_t used(const std::string& location) const;
   // "" if `location` would take `thing` (present) now, else why not: the rules
   // every place, put-back and intervention follows (location kind, nesting,
-  // fit, capacity, room).
+  // fit, capacity, room: world/space_rules.hpp's refusal(), the rule book).
   std::string refusal(const std::string& thing, const std::string& location) const;
   // "" if every invariant of the header holds, else what is wrong (one line each).
   std::string check_invariants() const;
@@ -162,10 +163,7 @@ class SymbolicWorld final : public World, public Intervenable {
     world::Vec3 size = world::Container{}.size;
   };
   // What the footprint rules need of a thing (present or about to be added).
-  struct Body {
-    world::Vec3 size = world::Object{}.size;
-    bool container = false;
-  };
+  using Body = world::Body;
 
   // Locations and room.
   bool is_region(const std::string& loc) const;
@@ -175,8 +173,7 @@ class SymbolicWorld final : public World, public Intervenable {
   Body body_of(const std::string& thing) const;  // a present thing (an unknown one: a default object)
   Body new_body(const std::string& cls, bool container) const;  // an added thing of class `cls`
   world::Extent usable(const std::string& loc) const;           // a region or present container
-  std::int64_t cell_of(const Body& b) const;
-  std::int64_t room_of(const world::Extent& usable) const;
+  std::int64_t cell_of(const Body& b, const std::string& loc) const;  // its share of loc
   // `loc` can take `thing` (of body `b`) now: a region, or a container that is
   // present, not `thing`, not held, and `thing` is not a container; `thing`
   // fits it; and it has room (capacity and area).

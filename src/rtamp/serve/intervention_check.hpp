@@ -2,7 +2,7 @@
 // one rule set of scripted operator actions (world/intervention_rules.hpp,
 // which world/validate.cpp applies to a scenario's script) applied to the
 // world as it is now, so that a page and a scenario file refuse the same
-// mistake with the same words (issue 13). The world then applies the
+// mistake with the same words. The world then applies the
 // intervention or refuses it with its own reason (no room, nothing held),
 // exactly as for a scripted one.
 //

@@ -26,6 +26,7 @@
 #include <string>
 
 #include "rtamp/robot/joints.hpp"
+#include "rtamp/world/fit.hpp"
 #include "rtamp/world/scenario.hpp"
 
 namespace rtamp::sim {
@@ -52,7 +53,7 @@ struct MjcfOptions {
 
 // Geometric constants of the generated trays and gripper that other parts need.
 inline constexpr double kTrayPlate = 0.01;  // thickness of a tray's base plate (= world::kContainerFloor)
-inline constexpr double kTrayRim = 0.008;    // thickness of its rims
+inline constexpr double kTrayRim = world::kContainerRim;  // thickness of its rims (the rule book's)
 inline constexpr double kFingerPad = 0.01;   // finger thickness along tool y
 inline constexpr double kFingerTipBelowTcp = 0.004;  // fingers reach this far past the tool point
 

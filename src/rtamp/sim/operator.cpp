@@ -38,13 +38,13 @@ world::Geometry Operator::current_geometry() const { return sim::current_geometr
 
 std::vector<int> Operator::contents_of(int container) const { return sim::contents_of(sim_, container); }
 
-std::optional<world::Vec3> Operator::spot_in(const std::string& location, const world::Vec3& size,
+std::optional<world::Vec3> Operator::spot_in(const std::string& location, const world::Body& body,
                                              const std::vector<int>& exclude) {
   // Keep clear of the gripper's fingers when the hand is low over the table.
   std::vector<world::Footprint> keep_clear;
   const Eigen::Vector3d tool = sim_.tool_pose().translation();
   if (tool.z() < 0.25) keep_clear.push_back(world::footprint_at({tool.x(), tool.y(), 0}, {0.1, 0.12, 0}));
-  return sim::free_spot(sim_, location, size, exclude, 0.02, keep_clear);
+  return sim::free_spot(sim_, location, body, exclude, world::kPlaceGap, keep_clear);
 }
 
 std::string Operator::set_down(const std::vector<int>& things, const Eigen::Vector3d& where) {
@@ -65,13 +65,14 @@ std::string Operator::set_down(const std::vector<int>& things, const Eigen::Vect
     std::optional<world::Vec3> to;
     std::string loc;
     for (const auto& [d, name] : regions)
-      if ((to = spot_in(name, t.size, exclude))) {
+      if (space_refusal(sim_, t.name, {t.size, t.container}, name, exclude).empty() &&
+          (to = spot_in(name, {t.size, t.container}, exclude))) {
         loc = name;
         break;
       }
     if (!to) {
       sim_.hide(k);
-      out += "; '" + t.name + "' too (no free spot anywhere)";
+      out += "; '" + t.name + "' too (no region with room and a free spot)";
       continue;
     }
     sim_.set_pose(k, at({(*to)[0], (*to)[1], (*to)[2] + t.size[2] / 2 + 0.001}));
@@ -96,12 +97,16 @@ bool Operator::overlaps_anything(const world::Vec3& base, const world::Vec3& siz
   return false;
 }
 
-std::optional<world::Vec3> Operator::first_spot(const std::string& avoid, const world::Vec3& size,
-                                                const std::vector<int>& exclude) {
+std::string Operator::first_location(const std::string& thing, const world::Body& body,
+                                     const std::vector<int>& exclude, const std::string& avoid) {
+  std::vector<std::string> all;
   for (const auto& r : sim_.scenario().regions)
-    if (r.name != avoid)
-      if (auto p = spot_in(r.name, size, exclude)) return p;
-  return std::nullopt;
+    if (r.name != avoid) all.push_back(r.name);
+  for (const auto& t : sim_.things())
+    if (t.container && t.present && !t.name.empty() && t.name != avoid) all.push_back(t.name);
+  for (const auto& loc : all)
+    if (space_refusal(sim_, thing, body, loc, exclude).empty()) return loc;
+  return all.empty() ? std::string{} : all.front();
 }
 
 OperatorEvent Operator::apply(const world::Intervention& iv) {
@@ -120,14 +125,33 @@ OperatorEvent Operator::apply(const world::Intervention& iv) {
     history_.push_back(ev);
     return ev;
   };
-  // Where a thing of `size` goes: explicit position (refused if occupied) or a free spot.
-  auto target = [&](const world::Vec3& size, const std::vector<int>& exclude,
-                    const std::string& avoid) -> std::optional<world::Vec3> {
-    if (iv.position) {
-      if (overlaps_anything(*iv.position, size, exclude)) return std::nullopt;
-      return *iv.position;
+  // Where a thing goes: its explicit position (refused if it overlaps something) or a
+  // free spot of its location (the first one with room when none is given). The
+  // location, named or where the position falls, must take it by the rule book
+  // (world/space_rules.hpp): `why` says which rule refuses it.
+  auto target = [&](const std::string& name, const world::Body& body, const std::vector<int>& exclude,
+                    const std::string& avoid, std::string& why) -> std::optional<world::Vec3> {
+    std::string loc = iv.location;
+    if (loc.empty() && iv.position) {
+      const world::Geometry g = current_geometry();
+      loc = body.container ? g.locate_region(*iv.position) : g.locate(*iv.position);
+      if (loc == world::kNoLocation) loc.clear();  // the bare table: no location's rules apply
+    } else if (loc.empty()) {
+      loc = first_location(name, body, exclude, avoid);
     }
-    return iv.location.empty() ? first_spot(avoid, size, exclude) : spot_in(iv.location, size, exclude);
+    if (!loc.empty())
+      if (std::string w = space_refusal(sim_, name, body, loc, exclude); !w.empty()) {
+        why = std::move(w);
+        return std::nullopt;
+      }
+    if (iv.position) {
+      if (!overlaps_anything(*iv.position, body.size, exclude)) return *iv.position;
+      why = "no free spot for '" + name + "' at " + fmt(*iv.position);
+      return std::nullopt;
+    }
+    auto spot = spot_in(loc, body, exclude);
+    if (!spot) why = "no free spot for '" + name + "'";
+    return spot;
   };
 
   if (iv.position)
@@ -148,9 +172,9 @@ OperatorEvent Operator::apply(const world::Intervention& iv) {
       const Eigen::Vector3d p0 = sim_.position(i);
       std::string here = t.container ? g.locate_region({p0.x(), p0.y(), p0.z()})
                                      : g.locate({p0.x(), p0.y(), p0.z() - t.size[2] / 2});
-      if (t.container && iv.location == t.name) return refuse("a container cannot go into itself");
-      auto to = target(t.size, moved, here);
-      if (!to) return refuse("no free spot for '" + iv.subject + "'");
+      std::string why;
+      auto to = target(t.name, {t.size, t.container}, moved, here, why);
+      if (!to) return refuse(why);
       if (sim_.held() == i) sim_.detach();
       const double z = t.container ? (*to)[2] : (*to)[2] + t.size[2] / 2 + 0.001;
       const Eigen::Vector3d delta = Eigen::Vector3d((*to)[0], (*to)[1], z) - p0;
@@ -170,8 +194,9 @@ OperatorEvent Operator::apply(const world::Intervention& iv) {
       if (existing >= 0 && sim_.thing(existing).present) return refuse("'" + iv.subject + "' is already there");
       world::Vec3 size = container ? sim_.options().mjcf.spare_tray_size : sim_.options().mjcf.spare_block_size;
       if (existing >= 0) size = sim_.thing(existing).size;
-      auto to = target(size, {}, "");
-      if (!to) return refuse("no free spot for '" + iv.subject + "'");
+      std::string why;
+      auto to = target(iv.subject, {size, container}, {}, "", why);
+      if (!to) return refuse(why);
       const double z = container ? (*to)[2] : (*to)[2] + size[2] / 2 + 0.001;
       try {
         sim_.add(iv.subject, iv.cls.empty() ? (container ? "tray" : "block") : iv.cls, container,
@@ -207,11 +232,9 @@ OperatorEvent Operator::apply(const world::Intervention& iv) {
       if (has_destination) {
         std::vector<int> moved{i};
         moved.insert(moved.end(), in.begin(), in.end());
-        to = target(t.size, moved, "");
-        if (!to) {
-          const std::string where = iv.location.empty() ? "at " + fmt(*iv.position) : "in '" + iv.location + "'";
-          return refuse("no free spot " + where + "; '" + t.name + "' stays in the gripper");
-        }
+        std::string why;
+        to = target(t.name, {t.size, t.container}, moved, "", why);
+        if (!to) return refuse(why + "; " + t.name + " stays in the gripper");
       }
       sim_.detach();
       if (!to) {

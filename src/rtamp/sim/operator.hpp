@@ -7,10 +7,10 @@
 //
 // Semantics of each kind (world::Intervention):
 //  - Relocate: move `subject` to `position`, else to a free spot of `location`, else
-//    (no location given) of the first other region with one. Moving a container carries
-//    its contents.
+//    (no location given) of the first other location with room by the rule book.
+//    Moving a container carries its contents.
 //  - Add / AddContainer: a reserved spare body gets the name and appears at `position`
-//    or a free spot of `location` (the first region with one when none is given).
+//    or a free spot of `location` (the first location with room when none is given).
 //  - Remove / RemoveContainer: the thing is hidden; a removed tray's contents drop to
 //    the table where it stood — or, for a tray in the gripper, are set down in free
 //    spots of the region under it, else of the nearest region with room (removed too
@@ -18,10 +18,13 @@
 //  - TakeFromGripper: the weld is released and the held thing goes to a free spot of
 //    `location` (a tray with its contents, keeping its yaw), or is removed when no
 //    location is given (a tray's contents are then set down as for a remove).
-// Invariant: an intervention never puts two things in the same spot: targets come from
-// world::free_spot over the footprints of every present thing (the subject and its
-// contents excluded), and an explicit `position` that overlaps something is refused
-// (the event says why). Every event is reported, applied or not.
+// Invariants: an intervention never puts a thing where the rule book
+// (world/space_rules.hpp: nesting, fit, capacity, room) refuses it — the location named,
+// or where an explicit position falls — and is then refused with the symbolic world's
+// words (sim::space_refusal). It never puts two things in the same spot: targets come
+// from sim::free_spot with the arm's clearance (world::kPlaceGap) over the footprints of
+// every present thing (the subject and its contents excluded), and an explicit
+// `position` that overlaps something is refused. Every event is reported, applied or not.
 #pragma once
 
 #include <cstdint>
@@ -32,6 +35,7 @@
 #include "rtamp/sim/simulation.hpp"
 #include "rtamp/world/geometry.hpp"
 #include "rtamp/world/scenario.hpp"
+#include "rtamp/world/space_rules.hpp"
 
 namespace rtamp::sim {
 
@@ -51,7 +55,7 @@ class Operator {
   const std::vector<OperatorEvent>& history() const { return history_; }
 
  private:
-  std::optional<world::Vec3> spot_in(const std::string& location, const world::Vec3& size,
+  std::optional<world::Vec3> spot_in(const std::string& location, const world::Body& body,
                                      const std::vector<int>& exclude);
   // Sets down things that were in the air (a removed tray's contents) near `where`;
   // returns the detail to append to the event ("; 'o1' set down in r1 at (...)").
@@ -59,9 +63,10 @@ class Operator {
   bool overlaps_anything(const world::Vec3& base, const world::Vec3& size, const std::vector<int>& exclude) const;
   std::vector<int> contents_of(int container) const;
   world::Geometry current_geometry() const;
-  // A free spot for `size` in the first region other than `avoid` that has one.
-  std::optional<world::Vec3> first_spot(const std::string& avoid, const world::Vec3& size,
-                                        const std::vector<int>& exclude);
+  // The first location other than `avoid` (regions, then present containers) that the
+  // rule book lets take the thing; else the first of them (its refusal then says why); else "".
+  std::string first_location(const std::string& thing, const world::Body& body, const std::vector<int>& exclude,
+                             const std::string& avoid);
 
   Simulation& sim_;
   std::vector<OperatorEvent> history_;

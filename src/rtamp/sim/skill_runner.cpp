@@ -57,7 +57,7 @@ std::optional<world::Vec3> SkillRunner::place_spot(int i, const std::string& loc
       keep_clear.push_back(world::footprint_at({z.x(), z.y(), 0}, {0.026, kFingerPad + 0.002, 0}));
     }
   }
-  return free_spot(sim_, location, t.size, exclude, options_.place_gap, keep_clear);
+  return free_spot(sim_, location, {t.size, t.container}, exclude, options_.place_gap, keep_clear);
 }
 
 bool SkillRunner::start_pick(const std::string& object) {
@@ -99,6 +99,16 @@ bool SkillRunner::start_place(const std::string& location) {
   const std::string object = sim_.thing(i).name;
   if (location == object) {
     controller_.fail("cannot place '" + object + "' into itself");
+    return false;
+  }
+  // The rule book first (capacity, room, fit, nesting), in the symbolic world's words.
+  const Thing& t = sim_.thing(i);
+  std::vector<int> riding{i};
+  riding.insert(riding.end(), carried_.begin(), carried_.end());
+  if (std::string why = options_.space_rules ? space_refusal(sim_, object, {t.size, t.container}, location, riding)
+                                             : std::string();
+      !why.empty()) {
+    controller_.fail("cannot place " + object + ": " + why);
     return false;
   }
   sim_.clear_reserved_spot();  // our own earlier reservation is no obstacle

@@ -49,9 +49,12 @@ struct ActionResult {
 
 struct SkillRunnerOptions {
   robot::SkillOptions skill;
-  double place_gap = 0.035;   // clearance between placed things (room for the fingers)
+  double place_gap = world::kPlaceGap;  // clearance between placed things (room for the fingers)
   double drop_height = 0.003; // place a thing this far above its support
   bool collision_checking = true;
+  // Places obey the rule book (world/space_rules.hpp); false only to measure what the
+  // arm can place regardless (tests/sim/packing_test.cpp).
+  bool space_rules = true;
 };
 
 class SkillRunner {
@@ -64,7 +67,9 @@ class SkillRunner {
 
   // Plan and start a pick of `object`. False (controller in FAILURE) if planning failed.
   bool start_pick(const std::string& object);
-  // Plan and start placing the held object into `location` (region or container).
+  // Plan and start placing the held object into `location` (region or container). False
+  // (controller in FAILURE) if the rule book refuses it there ("cannot place o3: r2 has no
+  // room (capacity 2)", sim::space_refusal), there is no free spot or no plan.
   bool start_place(const std::string& location);
   // Back the empty gripper straight up by `height` (after a halted skill), unless the
   // tool is already that high above the table. False (controller in FAILURE) if the

@@ -74,21 +74,18 @@ void System::build_fit_tables() {
   };
   fits_.assign(std::size_t{T} * L, 0);
   allowed_.assign(std::size_t{T} * L, 0);
-  cells_.assign(T, 0);
-  rooms_.assign(L, std::numeric_limits<std::int64_t>::max() / 4);
+  cells_.assign(std::size_t{T} * L, 0);
+  rooms_.assign(L, options_.ignore_geometry ? std::numeric_limits<std::int64_t>::max() / 4 : world::kRoomUnits);
   for (unsigned t = 0; t < T; ++t) {
-    if (!options_.ignore_geometry)
-      cells_[t] = static_cast<std::int64_t>(std::floor(world::cell_area(size_of(t), is_container(t), rules) / kAreaUnit));
     for (unsigned l = 0; l < L; ++l) {
       const bool f = options_.ignore_geometry || world::fits(size_of(t), usable[l]);
       fits_[std::size_t{t} * L + l] = f;
+      if (!options_.ignore_geometry)
+        cells_[std::size_t{t} * L + l] = world::cell_units({size_of(t), is_container(t)}, usable[l], l >= n_regions_, rules);
       // Containers only into regions (never into themselves or other containers).
       allowed_[std::size_t{t} * L + l] = f && (!is_container(t) || l < n_regions_);
     }
   }
-  if (!options_.ignore_geometry)
-    for (unsigned l = 0; l < L; ++l)
-      rooms_[l] = static_cast<std::int64_t>(std::ceil(world::room_area(usable[l], rules) / kAreaUnit));
 }
 
 void System::forbid_move(unsigned thing, unsigned loc) {
@@ -115,8 +112,11 @@ bool System::forbidden(unsigned thing, unsigned loc) const {
 
 bool System::same_moves(unsigned a, unsigned b) const {
   if (a >= num_things() || b >= num_things()) return false;
-  if (is_container(a) != is_container(b) || cells_[a] != cells_[b]) return false;
+  if (is_container(a) != is_container(b)) return false;
   const unsigned L = num_locations();
+  if (!std::equal(cells_.begin() + std::ptrdiff_t(std::size_t{a} * L), cells_.begin() + std::ptrdiff_t(std::size_t{a + 1} * L),
+                  cells_.begin() + std::ptrdiff_t(std::size_t{b} * L)))
+    return false;
   return std::equal(allowed_.begin() + std::ptrdiff_t(std::size_t{a} * L), allowed_.begin() + std::ptrdiff_t(std::size_t{a + 1} * L),
                     allowed_.begin() + std::ptrdiff_t(std::size_t{b} * L));
 }
@@ -217,7 +217,7 @@ void System::occupancy(const State& s, int* counts, std::int64_t* used) const {
   for (unsigned t = 0; t < num_things(); ++t) {
     const std::uint32_t l = location(s, t);
     ++counts[l];
-    used[l] += cells_[t];
+    if (l < num_locations()) used[l] += cells_[std::size_t{t} * num_locations() + l];
   }
 }
 
@@ -228,14 +228,15 @@ bool System::enabled(const State& s, const Action& a) const {
   if (a.to == at) return false;
   if (!allowed_[std::size_t{a.thing} * num_locations() + a.to]) return false;
   if (options_.ignore_capacity) return true;
+  const unsigned L = num_locations();
   int n = 0;
   std::int64_t used = 0;
   for (unsigned t = 0; t < num_things(); ++t)
     if (location(s, t) == a.to) {
       ++n;
-      used += cells_[t];
+      used += cells_[std::size_t{t} * L + a.to];
     }
-  return n < capacities_[a.to] && used + cells_[a.thing] <= rooms_[a.to];
+  return n < capacities_[a.to] && used + cells_[std::size_t{a.thing} * L + a.to] <= rooms_[a.to];
 }
 
 State System::successor(const State& s, const Action& a) const {

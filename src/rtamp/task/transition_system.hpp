@@ -13,25 +13,22 @@
 // only placed in a region (containers do not nest), t's footprint fits l, the
 // move is not forbidden, and l has room: fewer things directly at l than
 // capacity(l) (a container counts 1 in its region, its contents count only in
-// the container) and the area bound below holds. Moving a container carries
+// the container) and the room rule below holds. Moving a container carries
 // its contents: their location stays the container. After move(t, l) the hand
 // is at l. stay is always enabled and changes nothing. δ_t is deterministic.
 //
-// Footprints (world/fit.hpp has the rules and why they are sound): things keep
-// their orientation when placed (the skills do not rotate them), so t *fits* l
-// iff t's x and y sizes are at most l's usable extents (a region's size; a
-// container's size minus its rims) — exactly when world::free_spot() finds a
-// spot in the empty location. *Room* is an area bound: every thing at l takes
-// a cell (its footprint grown by the placement gap) and l offers its usable
-// area grown by the gap; move(t, l) needs used(l) + cell(t) <= room(l).
-// Guarantee: if the bound refuses a move, no arrangement of the things at l
-// plus t that keeps the skills' clearances (world::FitRules) exists — it never
-// rules out a placement that can succeed while the things already at l keep
-// those clearances too (a person may pack them tighter; then it may refuse a
-// move the arm could still make); it may allow one that a greedy spot
-// search then fails (dense packings), which the executor reports and the
-// planner learns through forbid_move(). Cells and rooms are integers (units of
-// 1e-8 m², cells rounded down, rooms up, so rounding never refuses more).
+// Footprints (world/fit.hpp and world/space_rules.hpp, the rule book, have the
+// rules and why): things keep their orientation when placed (the skills do not
+// rotate them), so t *fits* l iff t's x and y sizes are at most l's usable
+// extents (a region's size; a container's size minus its rims) — exactly when
+// world::free_spot() finds a spot in the empty location. *Room* is a grid
+// share: t takes 1/k of l when k things of t's size fit l on the grid the
+// arm packs them on (the skills' clearances kept), and move(t, l) needs
+// used(l) + cell(t, l) <= room(l) = world::kRoomUnits. For things of one size
+// it admits exactly what the arm places (measured, tests/sim/packing_test.cpp);
+// for mixed sizes it is an estimate, and a place the arm then cannot make is
+// reported by the executor and learnt through forbid_move(). Shares are
+// integers (kRoomUnits / k rounded down: k of a kind fit, k + 1 never do).
 // fits, cells and rooms are tabulated per (thing, location) at construction:
 // for_each_move and enabled() do no geometry and no allocation.
 //
@@ -53,6 +50,7 @@
 
 #include "rtamp/task/state.hpp"
 #include "rtamp/world/fit.hpp"
+#include "rtamp/world/space_rules.hpp"
 #include "rtamp/world/placement.hpp"
 #include "rtamp/world/scenario.hpp"
 
@@ -106,12 +104,12 @@ class System {
   int find_thing(const std::string& name) const;
   int find_location(const std::string& name) const;  // regions and containers
   int capacity(unsigned loc) const { return capacities_[loc]; }
-  // Footprint tables (see the header comment): t fits l at all; t's cell and
-  // l's room in area units (kAreaUnit m²; room is unbounded with ignore_geometry).
+  // Footprint tables (see the header comment): t fits l at all; t's share of l
+  // and l's room in room units (world::kRoomUnits; room is unbounded with
+  // ignore_geometry, shares are then 0).
   bool fits(unsigned thing, unsigned loc) const { return fits_[thing * num_locations() + loc] != 0; }
-  std::int64_t cell(unsigned thing) const { return cells_[thing]; }
+  std::int64_t cell(unsigned thing, unsigned loc) const { return cells_[std::size_t{thing} * num_locations() + loc]; }
   std::int64_t room(unsigned loc) const { return rooms_[loc]; }
-  static constexpr double kAreaUnit = 1e-8;  // m²
 
   // Forbidden moves. forbid_move(t, l) excludes move(t, l) from for_each_move
   // and enabled(); out-of-range indices are ignored. If t is in a symmetry
@@ -134,7 +132,7 @@ class System {
 
   // Things directly at each location; `counts` has num_locations() entries.
   void occupancy(const State& s, int* counts) const;
-  // Also the sum of their cells (area units) at each location, in `used`.
+  // Also the sum of their shares (room units) at each location, in `used`.
   void occupancy(const State& s, int* counts, std::int64_t* used) const;
   bool enabled(const State& s, const Action& a) const;
   State successor(const State& s, const Action& a) const;
@@ -193,8 +191,8 @@ class System {
   std::vector<int> capacities_;  // per location
   std::vector<std::uint8_t> fits_;    // [thing * num_locations() + loc]: fits (see fits())
   std::vector<std::uint8_t> allowed_;  // [thing * num_locations() + loc]: fits, legal kind, not forbidden
-  std::vector<std::int64_t> cells_;    // per thing, area units
-  std::vector<std::int64_t> rooms_;    // per location, area units
+  std::vector<std::int64_t> cells_;    // [thing * num_locations() + loc]: its share of loc, room units
+  std::vector<std::int64_t> rooms_;    // per location, room units (world::kRoomUnits)
   std::vector<std::pair<unsigned, unsigned>> forbidden_;
   world::Vec3 home_point_{0, 0, 0};
   State initial_;
@@ -217,10 +215,10 @@ void System::for_each_move(const State& s, F&& f) const {
     if (has_symmetry_ && prev_[t] >= 0 && location(s, static_cast<unsigned>(prev_[t])) == at) continue;
     const unsigned limit = is_container(t) ? n_regions_ : L;
     const std::uint8_t* row = allowed_.data() + std::size_t{t} * L;
-    const std::int64_t c = cells_[t];
+    const std::int64_t* cell = cells_.data() + std::size_t{t} * L;
     for (unsigned l = 0; l < limit; ++l) {
       if (!row[l] || l == at) continue;
-      if (bounded && (counts[l] >= capacities_[l] || used[l] + c > rooms_[l])) continue;
+      if (bounded && (counts[l] >= capacities_[l] || used[l] + cell[l] > rooms_[l])) continue;
       f(Action::move(static_cast<std::uint16_t>(t), static_cast<std::uint16_t>(l)));
     }
   }

@@ -1,4 +1,4 @@
-// Where the bytes of a text taken from a file lie in that file (issue 13:
+// Where the bytes of a text taken from a file lie in that file (so that
 // every error points at file:line:col). A YAML block scalar (| or >) drops
 // the indentation of each of its lines and > folds line breaks into spaces,
 // so a byte's column in the text is not its column in the file; a quoted

@@ -1,5 +1,7 @@
 #include "rtamp/world/change.hpp"
 
+#include "rtamp/world/space_rules.hpp"
+
 #include <algorithm>
 #include <cctype>
 #include <charconv>
@@ -8,6 +10,7 @@
 
 #include "rtamp/world/geometry.hpp"
 #include "rtamp/world/names.hpp"
+#include "rtamp/world/space_rules.hpp"
 #include "rtamp/world/suggest.hpp"
 #include "rtamp/world/validate.hpp"
 
@@ -400,6 +403,50 @@ void check_change(const Change& c, const world::Scenario& s, const SourceLocatio
   }
 }
 
+void check_change_room(const Change& c, const world::Scenario& s, const world::Placement& p,
+                       const SourceLocation& where, std::string_view text) {
+  const std::string written = text.empty() ? c.to_string() : std::string(text);
+  const Reporter r(written, where);
+  // Puts `thing` (of `body`) into `loc`, the location named by word k; world `s`, `q`.
+  auto put = [&](const std::string& thing, const world::Body& body, const std::string& loc, std::size_t k,
+                 const world::Scenario& in, const world::Placement& q) {
+    const std::string why = world::refusal(thing, body, loc, world::location_now(in, q, loc, thing), {});
+    if (!why.empty()) r.fail(k, "cannot put " + shown(thing) + " in " + shown(loc) + ": " + why);
+  };
+  switch (c.kind) {
+    case Change::Kind::Relocate:
+      put(c.subject, world::body_of(s, c.subject), c.location, 2, s, p);
+      return;
+    case Change::Kind::Add:
+      put(c.subject, world::new_body(s, c.cls.empty() ? "block" : c.cls, false), c.location, 3, s, p);
+      return;
+    case Change::Kind::AddContainer:
+      put(c.subject, world::new_body(s, c.cls.empty() ? "tray" : c.cls, true), c.location, 3, s, p);
+      return;
+    case Change::Kind::RemoveContainer: {
+      // Its contents fall into the region it stood in, one by one.
+      const std::string* region = p.location_of(c.subject);
+      if (!region) return;
+      world::Scenario after = s;
+      world::Placement q = p;
+      std::string hand;
+      apply_change(Change::remove_container(c.subject), after, q, hand);
+      for (auto& [name, t] : q.things)
+        if (t.location == *region && p.things.at(name).location == c.subject) t.location = "";
+      for (const auto& [name, t] : p.things) {
+        if (t.location != c.subject) continue;
+        put(name, world::body_of(after, name), *region, 1, after, q);
+        q.things[name].location = *region;
+      }
+      return;
+    }
+    case Change::Kind::Remove:
+    case Change::Kind::AddRegion:
+    case Change::Kind::TakeFromGripper:
+      return;
+  }
+}
+
 void apply_change(const Change& c, world::Scenario& s, world::Placement& p, std::string& hand) {
   auto point_of = [&](const std::string& loc) -> world::Vec3 {
     if (const auto* r = s.find_region(loc)) return r->center;
@@ -422,6 +469,7 @@ void apply_change(const Change& c, world::Scenario& s, world::Placement& p, std:
       world::Object o;
       o.name = c.subject;
       o.cls = c.cls.empty() ? "block" : c.cls;
+      o.size = world::new_body(s, o.cls, false).size;  // as the symbolic world adds one
       o.position = point_of(c.location);
       s.objects.push_back(o);
       p.set(o.name, c.location, o.cls, false);
@@ -435,6 +483,7 @@ void apply_change(const Change& c, world::Scenario& s, world::Placement& p, std:
       world::Container k;
       k.name = c.subject;
       k.cls = c.cls.empty() ? "tray" : c.cls;
+      k.size = world::new_body(s, k.cls, true).size;
       if (const auto* r = s.find_region(c.location)) k.position = r->center;
       k.capacity = c.capacity;
       s.containers.push_back(k);
@@ -468,6 +517,7 @@ std::vector<Change> parse_changes(const world::Scenario& scenario, const std::ve
     const SourceLocation where{option + " #" + std::to_string(i + 1), 1, 1};
     Change c = parse_change(texts[i], where);
     check_change(c, s, where, texts[i]);
+    check_change_room(c, s, p, where, texts[i]);
     apply_change(c, s, p, hand);
     out.push_back(std::move(c));
   }

@@ -2,7 +2,8 @@
 // checked value (paper Section III.A: the world changes between plans): the
 // parser behind `rtamp plan --change` and rtamp.Change.parse, the rules a
 // change must satisfy against the world it is applied to, and its effect on a
-// scenario, its placement and the hand (what plan::Planner::apply does).
+// scenario, its placement and the hand (what plan::Planner::apply does; an added
+// thing takes the size of the first thing of its class, as in the symbolic world).
 //
 // The rules are the scenario file's (world/names.hpp, world/validate.hpp): a
 // new name is a valid identifier, not reserved and not used by a region,
@@ -18,8 +19,13 @@
 // carry the text with a caret; without one they start "bad change 'TEXT': ".
 // TakeFromGripper (a change of a running robot: the symbolic state has no held
 // thing) has no text form and is refused by check_change.
+// parse_changes() also checks the rules of space (check_change_room): a change
+// that would put a thing where the rule book (world/space_rules.hpp: fit,
+// capacity, room) refuses it is an error naming the thing and the location.
+// plan::Planner::apply does not (the loop applies what it observed, a fact).
 // Invariant: parse_changes() accepts a list exactly when applying the changes
-// one by one to a plan::Planner for `scenario` throws nothing.
+// one by one to a plan::Planner for `scenario` throws nothing and every state
+// they make keeps the rule book where they put things.
 #pragma once
 
 #include <string>
@@ -41,6 +47,13 @@ Change parse_change(std::string_view text, const SourceLocation& where = {});
 // optional) lets errors point at the offending word.
 void check_change(const Change& c, const Scenario& s, const SourceLocation& where = {},
                   std::string_view text = {});
+
+// Throws unless `c`, checked, keeps the rule book (world/space_rules.hpp) where it
+// puts things in the world of `s` with placement `p` (before the change): a moved or
+// added thing fits its location and the location has room (capacity and area); a
+// removed container's contents, falling into its region, all have room there.
+void check_change_room(const Change& c, const Scenario& s, const Placement& p, const SourceLocation& where = {},
+                       std::string_view text = {});
 
 // Applies a checked change to a scenario, its placement and the hand's
 // location (what Planner::apply does to its world).

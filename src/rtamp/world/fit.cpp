@@ -1,6 +1,7 @@
 #include "rtamp/world/fit.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 namespace rtamp::world {
 
@@ -12,6 +13,18 @@ Extent usable_extent(const Container& c, const FitRules& rules) {
 
 // The same test as free_spot()'s grid (room for the centre >= 0 on both axes).
 bool fits(const Vec3& size, const Extent& area) { return area.x - size[0] >= 0 && area.y - size[1] >= 0; }
+
+int grid_count(const Vec3& size, bool container, bool centred, const Extent& usable, const FitRules& rules) {
+  if (!fits(size, usable)) return 0;
+  const double d = container ? std::min(rules.gap, rules.container_gap) : rules.gap;
+  // 1e-9: a row that fits exactly counts despite the rounding of the sums.
+  auto n = [&](double u, double s) {
+    if (centred) return 1 + 2 * std::floor((u - s) / 2 / (s + d) + 1e-9);
+    return std::max(1.0, std::floor((u + d) / (s + d) + 1e-9));
+  };
+  const double k = n(usable.x, size[0]) * n(usable.y, size[1]);
+  return k > 1e6 ? 1'000'000 : static_cast<int>(k);
+}
 
 double cell_area(const Vec3& size, bool container, const FitRules& rules) {
   const double p = container ? 2 * std::min(rules.gap, rules.container_gap) - rules.gap : rules.gap;

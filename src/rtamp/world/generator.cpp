@@ -8,6 +8,7 @@
 #include "rtamp/world/fit.hpp"
 #include "rtamp/world/geometry.hpp"
 #include "rtamp/world/propositions.hpp"
+#include "rtamp/world/space_rules.hpp"
 #include "rtamp/world/validate.hpp"
 
 namespace rtamp::world {
@@ -55,11 +56,17 @@ Scenario generate_scenario(const GeneratorOptions& o) {
   const int n = o.objects, m = o.regions, c = o.containers;
   const int cols = static_cast<int>(std::ceil(std::sqrt(static_cast<double>(n)) - 1e-9));
   const int rows = (n + cols - 1) / cols;
-  // Every region has room (fit.hpp's area bound) for all blocks and a tray at once.
+  // Every region has room for all blocks by the rule book (space_rules.hpp) and,
+  // by the area bound (fit.hpp), for a tray besides: the smallest side in whole
+  // millimetres that does, at least the area bound's side of the blocks and tray.
   const FitRules rules;
   const double cells = n * cell_area({kBlock, kBlock, kBlock}, false, rules) + (c > 0 ? cell_area(kTraySize, true, rules) : 0);
-  const double roomy = std::ceil((std::sqrt(cells) - rules.gap) * 1000.0 + 1e-6) / 1000.0;
-  const double side = round_mm(std::max({kMinSide, cols * kPitch + 0.02, roomy}));
+  const double area_side = std::ceil((std::sqrt(cells) - rules.gap) * 1000.0 + 1e-6) / 1000.0;
+  auto roomy = [&](double a) {
+    return n * cell_units({{kBlock, kBlock, kBlock}, false}, {a, a}, false, rules) <= kRoomUnits;
+  };
+  double side = round_mm(std::max({kMinSide, cols * kPitch + 0.02, area_side}));
+  while (!roomy(side)) side = round_mm(side + 0.001);
 
   Scenario s;
   std::string name = "gen-" + layout_name(o.layout) + "-m" + std::to_string(m) + "-n" + std::to_string(n);

@@ -7,9 +7,11 @@
 //
 // The scene: regions r1..rM, all the same square size, big enough for every
 // object on a grid of pitch 6 cm (4 cm blocks, 2 cm apart), at least 26 cm,
-// and with room (world/fit.hpp's area bound, the planner's) for all N blocks
-// and one tray at once (so "all block in rX" stays achievable with a tray
-// standing there); each with capacity N + C. Objects
+// and with room by the rule book (world/space_rules.hpp, the planner's) for
+// all N blocks, and by the area bound (world/fit.hpp) for the N blocks and one
+// tray at once (the rule book's shares of a mixed set are an estimate, and
+// taking them would grow the regions past what a random layout can place);
+// each with capacity N + C. Objects
 // o1..oN (class block, 4 cm cubes) start on that grid in r1. Containers
 // t1..tC (class tray, 24 x 16 x 3 cm, capacity 4) stand one per region in
 // rM, rM-1, ..., r2 (so C <= M - 1). Propositions: all_in_r2 = "all block in

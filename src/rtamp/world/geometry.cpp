@@ -32,6 +32,8 @@ namespace {
 
 bool finite(double v) { return std::isfinite(v); }
 
+constexpr double kSpotTolerance = 1e-9;  // m
+
 // Centres of a grid with spacing `step` along an axis of length `free` (the
 // room left for the thing's centre), centred on 0; at most `limit` points.
 std::vector<double> axis_points(double free, double step, int limit) {
@@ -62,7 +64,7 @@ std::optional<Vec3> search(const Footprint& area, double z, const std::vector<Fo
     if (!area.contains(f)) continue;  // rounding at the edges
     bool free = true;
     for (const Footprint& o : occupied)
-      if (f.overlaps(o, gap)) {
+      if (f.overlaps(o, gap - kSpotTolerance)) {  // exactly `gap` apart is free, despite rounding
         free = false;
         break;
       }

@@ -32,6 +32,7 @@
 #include <string_view>
 #include <vector>
 
+#include "rtamp/world/fit.hpp"
 #include "rtamp/world/placement.hpp"
 #include "rtamp/world/scenario.hpp"
 
@@ -41,7 +42,6 @@ inline constexpr const char* kNoLocation = "none";
 inline constexpr double kBelowTolerance = 0.02;  // m
 inline constexpr double kRimMargin = 0.01;       // m
 inline constexpr double kContainerFloor = 0.01;  // m, floor thickness of a tray
-inline constexpr double kSpotGap = 0.01;         // m, default clearance between things
 
 // An axis-aligned rectangle: centre (x, y), extents (sx, sy).
 struct Footprint {
@@ -74,7 +74,7 @@ double surface_height(const Container& c);
 // area, nearest-to-centre first; if all of it is taken, a finer grid (a quarter
 // pitch). Returns the centre of the thing's base, or nullopt if nothing fits.
 std::optional<Vec3> free_spot(const Footprint& area, double surface_z, const std::vector<Footprint>& occupied,
-                              const Vec3& size, double gap = kSpotGap);
+                              const Vec3& size, double gap = kPlaceGap);
 
 // Regions and containers (with containers' current positions), answering
 // "which location holds this point".
@@ -103,7 +103,7 @@ class Geometry {
 
   // free_spot() in a named location; nullopt if it is unknown or full.
   std::optional<Vec3> free_spot(std::string_view location, const std::vector<Footprint>& occupied, const Vec3& size,
-                                double gap = kSpotGap) const;
+                                double gap = kPlaceGap) const;
 
  private:
   const Region* region(std::string_view name) const;

@@ -4,7 +4,7 @@
 // operator actions (validate.cpp walks its script through it) and a page's
 // interventions in `rtamp serve` (serve/intervention_check.hpp, against the
 // world as it is now), so that both refuse the same mistakes with the same
-// words (issue 13).
+// words.
 //
 // Rules: relocate names a present thing and a target; add / add_container a
 // new valid name (world/names.hpp: not reserved, not a region, not a present

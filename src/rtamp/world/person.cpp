@@ -5,6 +5,7 @@
 
 #include "rtamp/util/error.hpp"
 #include "rtamp/util/format.hpp"
+#include "rtamp/world/space_rules.hpp"
 
 namespace rtamp::world {
 
@@ -40,8 +41,7 @@ const std::vector<Intervention::Kind>& random_intervention_kinds() {
 }
 
 Person::Person(const Scenario& scenario, PersonOptions options)
-    : options_(std::move(options)), regions_(scenario.regions), containers_(scenario.containers),
-      rng_(options_.seed * 0x9E3779B97F4A7C15ull + 0x2545F4914F6CDD1Dull) {
+    : options_(std::move(options)), scenario_(scenario), rng_(options_.seed * 0x9E3779B97F4A7C15ull + 0x2545F4914F6CDD1Dull) {
   check(options_);
   std::stable_sort(options_.script.begin(), options_.script.end(),
                    [](const Intervention& a, const Intervention& b) { return a.time < b.time; });
@@ -108,30 +108,16 @@ std::optional<Intervention> Person::due(double now, const Placement& truth) {
   return iv;
 }
 
-int Person::capacity(const std::string& location, const Placement& truth) const {
-  for (const Region& r : regions_)
-    if (r.name == location) return r.capacity;
-  for (const Container& c : containers_)
-    if (c.name == location) return c.capacity;
-  const auto it = truth.things.find(location);
-  if (it != truth.things.end())
-    for (const Container& c : containers_)
-      if (c.cls == it->second.cls) return c.capacity;
-  return Container{}.capacity;
-}
-
-std::string Person::target(const std::string& thing, bool container, const Placement& truth) {
+std::string Person::target(const std::string& thing, const Body& body, const Placement& truth) {
   std::vector<std::string> all, room;
   const std::string* at = truth.location_of(thing);
   auto consider = [&](const std::string& loc) {
     if (at && *at == loc) return;
     all.push_back(loc);
-    int used = 0;
-    for (const auto& [name, t] : truth.things) used += t.location == loc && name != thing;
-    if (used < capacity(loc, truth)) room.push_back(loc);
+    if (refusal(thing, body, loc, location_now(scenario_, truth, loc, thing)).empty()) room.push_back(loc);
   };
-  for (const Region& r : regions_) consider(r.name);
-  if (!container)
+  for (const Region& r : scenario_.regions) consider(r.name);
+  if (!body.container)
     for (const auto& [name, t] : truth.things)
       if (t.container && name != thing && t.location != "hand") consider(name);
   const auto& from = room.empty() ? all : room;
@@ -158,25 +144,27 @@ Intervention Person::draw(Kind kind, double now, const Placement& truth, bool ob
       if (containers == 2 || t.container == (containers == 1)) names.push_back(n);
     return names.empty() ? std::string{} : names[rng_.below(names.size())];
   };
-  auto is_container = [&](const std::string& n) {
+  auto body = [&](const std::string& n) {
+    Body b = body_of(scenario_, n);
     auto it = truth.things.find(n);
-    return it != truth.things.end() && it->second.container;
+    if (it != truth.things.end() && it->second.container != b.container) b = new_body(scenario_, it->second.cls, it->second.container);
+    return b;
   };
   switch (kind) {
     case Kind::Relocate:
       iv.subject = pick(objects_only ? 0 : 2);
-      iv.location = target(iv.subject, is_container(iv.subject), truth);
+      iv.location = target(iv.subject, body(iv.subject), truth);
       break;
     case Kind::Add:
       iv.subject = fresh_name(truth);
       iv.cls = object_classes_.empty() ? "block" : object_classes_[rng_.below(object_classes_.size())];
-      iv.location = target(iv.subject, false, truth);
+      iv.location = target(iv.subject, new_body(scenario_, iv.cls, false), truth);
       break;
     case Kind::AddContainer: {
       iv.subject = fresh_name(truth);
-      iv.cls = containers_.empty() ? "tray" : containers_.front().cls;
-      iv.capacity = containers_.empty() ? Container{}.capacity : containers_.front().capacity;
-      iv.location = target(iv.subject, true, truth);
+      iv.cls = scenario_.containers.empty() ? "tray" : scenario_.containers.front().cls;
+      iv.capacity = scenario_.containers.empty() ? Container{}.capacity : scenario_.containers.front().capacity;
+      iv.location = target(iv.subject, new_body(scenario_, iv.cls, true), truth);
       break;
     }
     case Kind::Remove:
@@ -189,7 +177,7 @@ Intervention Person::draw(Kind kind, double now, const Placement& truth, bool ob
       std::string held;
       for (const auto& [n, t] : truth.things)
         if (t.location == "hand") held = n;
-      if (rng_.below(2) && !held.empty()) iv.location = target(held, is_container(held), truth);
+      if (rng_.below(2) && !held.empty()) iv.location = target(held, body(held), truth);
       break;
     }
     case Kind::AddRegion:

@@ -14,8 +14,8 @@
 // placement then, by one rule: the subject uniformly among the present things
 // of the kind; the target uniformly among the locations other than the
 // subject's own — regions in declaration order, then (for an object) present
-// containers that are not held, by name — that have a free place by the
-// scenario's capacities, else among all of them; new things get fresh names
+// containers that are not held, by name — that the rule book of space
+// (space_rules.hpp) lets take it, else among all of them; new things get fresh names
 // x1, x2, ... and a class of the scenario's (the first container class for
 // containers); take-from-gripper puts the thing down or removes it, a coin toss.
 //
@@ -34,6 +34,7 @@
 #include "rtamp/util/splitmix.hpp"
 #include "rtamp/world/placement.hpp"
 #include "rtamp/world/scenario.hpp"
+#include "rtamp/world/space_rules.hpp"
 
 namespace rtamp::world {
 
@@ -80,15 +81,13 @@ class Person {
 
  private:
   Intervention draw(Intervention::Kind kind, double now, const Placement& truth, bool objects_only = false);
-  std::string target(const std::string& thing, bool container, const Placement& truth);
-  int capacity(const std::string& location, const Placement& truth) const;
+  std::string target(const std::string& thing, const Body& body, const Placement& truth);
   std::string fresh_name(const Placement& truth);
   void schedule_random(double from);
 
   PersonOptions options_;
-  std::vector<Region> regions_;
+  Scenario scenario_;  // regions, sizes and capacities for the rule book
   std::vector<std::string> object_classes_;
-  std::vector<Container> containers_;  // the scenario's (capacities by name and class)
   std::set<std::string> names_ever_;
   std::size_t next_script_ = 0;
   double next_random_ = std::numeric_limits<double>::infinity();
