@@ -2,10 +2,13 @@
 // random per seed, then fixed — run in the symbolic world and in MuJoCo end
 // the same way, with every object in the same place. (Timings differ: the
 // worlds model the arm's motion differently, so an intervention may fall in
-// another phase of a move; the outcome and where things end up must not.)
+// another phase of a move; the outcome and where things end up must not —
+// unless one world takes an intervention the other refuses because its arm
+// was elsewhere at that moment; such seeds are counted, not compared.)
 // Slow: a few dozen MuJoCo episodes.
 #include <gtest/gtest.h>
 
+#include <iostream>
 #include <string>
 #include <vector>
 
@@ -19,7 +22,8 @@ namespace {
 
 using Kind = world::Intervention::Kind;
 
-// A script of one or two interventions on the scenario's objects.
+// A script of one or two interventions on the scenario's objects, in the first
+// 12 s (every episode of these scenarios runs longer in both worlds).
 std::vector<world::Intervention> random_script(const world::Scenario& s, std::uint64_t seed) {
   SplitMix64 rng(seed * 7919 + 3);
   std::vector<world::Intervention> out;
@@ -27,7 +31,7 @@ std::vector<world::Intervention> random_script(const world::Scenario& s, std::ui
   int added = 0;
   for (int i = 0; i < n; ++i) {
     world::Intervention iv;
-    iv.time = 1 + rng.unit() * 29;
+    iv.time = 1 + rng.unit() * 11;  // while both worlds' episodes still run (the symbolic arm is faster)
     const std::string object = s.objects[rng.below(s.objects.size())].name;
     switch (rng.below(3)) {
       case 0:
@@ -53,6 +57,7 @@ std::vector<world::Intervention> random_script(const world::Scenario& s, std::ui
 
 struct End {
   exec::EndReason end;
+  int applied;               // interventions the world applied
   world::Placement objects;  // where every object (not container) is
   std::string reason;
 };
@@ -65,9 +70,15 @@ End run_in(WorldKind world, const world::Scenario& s, std::uint64_t seed) {
   o.max_time = 400;
   Episode e(s, o);
   const EpisodeMetrics m = e.run();
-  End out{m.end, {}, m.reason};
+  End out{m.end, m.interventions_applied, {}, m.reason};
   for (const auto& [name, t] : e.world().intervenable()->true_placement().things)
     if (!t.container) out.objects.things[name] = t;
+  return out;
+}
+
+std::string text(const world::Placement& p) {
+  std::string out;
+  for (const auto& [name, t] : p.things) out += name + "@" + t.location + " ";
   return out;
 }
 
@@ -81,13 +92,18 @@ TEST(WorldsAgree, TheSameScriptEndsTheSameWayInBothWorlds) {
     SCOPED_TRACE(s.name + ", seed " + std::to_string(seed) + ": " + script);
     const End sym = run_in(WorldKind::Symbolic, s, seed);
     const End mj = run_in(WorldKind::MuJoCo, s, seed);
+    // An intervention one world could take and the other not (a location full
+    // in one and not yet in the other, the arms being at different points of
+    // their moves) makes different worlds: those are not compared.
+    if (sym.applied != mj.applied) continue;
     EXPECT_EQ(exec::to_string(sym.end), exec::to_string(mj.end)) << sym.reason << " | " << mj.reason;
     if (sym.end == exec::EndReason::TaskDone && mj.end == exec::EndReason::TaskDone) {
-      EXPECT_EQ(sym.objects, mj.objects);
+      EXPECT_EQ(text(sym.objects), text(mj.objects)) << "symbolic | MuJoCo";
       ++compared;
     }
   }
   EXPECT_GE(compared, 18);
+  std::cout << compared << " of 24 seeds compared\n";
 }
 
 }  // namespace
