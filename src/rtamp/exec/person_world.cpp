@@ -24,8 +24,14 @@ PersonWorld::PersonWorld(World& inner, world::Person& person, const std::string&
   apply_due();
 }
 
+// The true placement (a noise-free perception in MuJoCo) is read only when
+// something is due, not at every advance.
 void PersonWorld::apply_due() {
-  while (auto iv = person_.due(inner_.time(), hands_.true_placement())) hands_.apply(*iv);
+  while (person_.next_time() <= inner_.time()) {
+    const auto iv = person_.due(inner_.time(), hands_.true_placement());
+    if (!iv) break;
+    hands_.apply(*iv);
+  }
 }
 
 void PersonWorld::advance(double dt) {
