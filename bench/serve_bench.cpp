@@ -35,10 +35,10 @@ using serve::test::WsClient;
 
 episode::EpisodeOptions options(int world) {
   episode::EpisodeOptions o;
-  o.world = world == 0 ? episode::WorldKind::Symbolic : episode::WorldKind::MuJoCo;
-  o.planning = world == 0 ? exec::PlanningMode::Inline : exec::PlanningMode::Worker;
+  o.world = world == 0 ? "symbolic" : "mujoco";
+  o.loop.planning = world == 0 ? exec::PlanningMode::Inline : exec::PlanningMode::Worker;
   o.seed = 1;
-  o.max_time = 200;
+  o.loop.max_time = 200;
   return o;
 }
 

@@ -15,6 +15,7 @@
 #include <thread>
 
 #include "command.hpp"
+#include "episode_args.hpp"
 #include "options.hpp"
 #include "rtamp/batch/csv.hpp"
 #include "rtamp/batch/merge.hpp"
@@ -141,12 +142,12 @@ int run_batch(const BatchArgs& a) {
 
   batch::BatchOptions opt;
   opt.jobs = a.jobs;
-  opt.max_time = a.max_time;
-  opt.cost = a.cost;
-  opt.randomize_initial = !a.no_randomize;
-  opt.scripted_operator = a.scripted;
-  opt.world = a.world == "symbolic" ? episode::WorldKind::Symbolic : episode::WorldKind::MuJoCo;
   opt.log_dir = a.log_dir;
+  opt.episode = batch::batch_episode_defaults(a.world);
+  opt.episode.loop.max_time = a.max_time;
+  opt.episode.loop.planner.cost = a.cost;
+  opt.episode.randomize_initial = !a.no_randomize;
+  opt.episode.scripted_operator = a.scripted;
 
   // Rows are appended as episodes finish (so a killed batch keeps what it
   // did), then the file is rewritten in canonical order at the end.
@@ -282,7 +283,7 @@ rtamp::cli::Registrar reg{
                            "Seconds of world time before an episode gives up");
       rtamp::cli::add_choice(sub, "--cost", a->cost, rtamp::cli::cost_model_choices(), "Planner motion-cost model:");
       sub.add_option("--log-dir", a->log_dir, "Write each episode's JSON Lines log into this directory");
-      rtamp::cli::add_choice(sub, "--world", a->world, rtamp::cli::choices_of(rtamp::episode::worlds()), "World:");
+      rtamp::cli::add_choice(sub, "--world", a->world, rtamp::cli::world_choices(), "World:");
       sub.add_flag("--scripted", a->scripted, "Also apply the scenario's own operator script in every episode");
       sub.add_flag("--no-randomize", a->no_randomize, "Keep the scenario's initial object positions");
       sub.add_flag("--quiet,-q", a->quiet, "No progress on standard error");

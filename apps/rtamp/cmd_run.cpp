@@ -49,19 +49,19 @@ rtamp::cli::Registrar reg{
         task::validate_task(scenario);  // before any output file is opened or the episode starts
         // Outputs, before ffmpeg or the episode starts, named by their option.
         if (!o->video.empty()) rtamp::cli::check_output_file("--video", o->video);
-        if (!o->log.empty()) rtamp::cli::check_output_file("--log", o->log);
-        if (!o->trees.empty()) rtamp::cli::check_output_dir("--trees", o->trees);
-        episode::EpisodeOptions opt = rtamp::cli::to_episode_options(*o);
-        opt.video_path = o->video;
+        episode::EpisodeOptions opt = rtamp::cli::episode_options(*o);
+        if (!opt.outputs.log.empty()) rtamp::cli::check_output_file("--log", opt.outputs.log);
+        if (!opt.outputs.trees.empty()) rtamp::cli::check_output_dir("--trees", opt.outputs.trees);
+        opt.outputs.video = o->video;
         if (!o->quiet) {
           std::FILE* to = o->json ? stderr : stdout;
-          opt.timeline = [to](const std::string& line) {
+          opt.outputs.timeline = [to](const std::string& line) {
             std::fputs(line.c_str(), to);
             std::fputc('\n', to);
             std::fflush(to);
           };
         }
-        opt.interrupt = &g_signal;
+        opt.loop.interrupt = &g_signal;
         std::signal(SIGINT, on_signal);
         std::signal(SIGTERM, on_signal);
         const episode::EpisodeMetrics m = episode::run_episode(scenario, opt);

@@ -74,8 +74,10 @@ rtamp::cli::Registrar reg{
         using namespace rtamp;
         const world::Scenario scenario = world::load_scenario(o->scenario);
         task::validate_task(scenario);
-        if (!o->log.empty()) rtamp::cli::check_output_file("--log", o->log);
-        if (!o->trees.empty()) rtamp::cli::check_output_dir("--trees", o->trees);
+        const episode::EpisodeOptions episode_options = rtamp::cli::episode_options(*o);
+        if (!episode_options.outputs.log.empty()) rtamp::cli::check_output_file("--log", episode_options.outputs.log);
+        if (!episode_options.outputs.trees.empty())
+          rtamp::cli::check_output_dir("--trees", episode_options.outputs.trees);
         if (!o->replay.empty()) check_input_file("--replay", o->replay);
         serve::ServerOptions so;
         so.host = o->host;
@@ -93,20 +95,20 @@ rtamp::cli::Registrar reg{
           ro.speed = o->speed;
           ro.paused = o->paused;
           replay = std::make_unique<serve::Replay>(scenario, o->replay, ro);
-          if (!o->log.empty() || !o->trees.empty())
+          if (!episode_options.outputs.log.empty() || !episode_options.outputs.trees.empty())
             throw Error("--replay: serves a finished episode's log; --log and --trees are for live episodes");
           handler = replay.get();
         } else {
           serve::LiveOptions lo;
-          lo.episode = rtamp::cli::to_episode_options(*o);
+          lo.episode = episode_options;
           episode::EpisodeOptions& opt = lo.episode;
           if (!o->quiet)
-            opt.timeline = [](const std::string& line) {
+            opt.outputs.timeline = [](const std::string& line) {
               std::fputs(line.c_str(), stdout);
               std::fputc('\n', stdout);
               std::fflush(stdout);
             };
-          opt.interrupt = &g_signal;
+          opt.loop.interrupt = &g_signal;
           lo.speed = o->speed;
           lo.paused = o->paused;
           live = std::make_unique<serve::LiveEpisode>(scenario, lo);

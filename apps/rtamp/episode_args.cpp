@@ -6,52 +6,58 @@
 
 namespace rtamp::cli {
 
-void add_episode_options(CLI::App& app, EpisodeArgs& o, const std::string& log_help) {
-  add_scenario(app, o.scenario)->required();
-  add_choice(app, "--world", o.world, choices_of(episode::worlds()), "World:");
-  add_choice(app, "--algo", o.algo, algorithm_choices(), "Search algorithm:");
-  add_choice(app, "--bt", o.bt, choices_of(exec::tree_variants()), "Tree variant:");
-  add_choice(app, "--cost", o.cost, cost_model_choices(), "Planner motion-cost model:");
-  add_choice(app, "--planning", o.planning, choices_of(exec::planning_modes()),
-             "Planning (default: worker for mujoco, inline for symbolic):");
-  add_seed(app, "--seed", o.seed, "Seed of the episode (the person, perception, random initial layout)");
-  add_choice(app, "--change", o.change, choices_of(world::random_change_kinds()),
-             "Add one random intervention at a random time in 2-20 s:");
-  add_real(app, "--rate", o.rate, {0, 100},
-           "Random interventions per second of world time, of every kind (docs/person.md)");
-  add_real(app, "--failures", o.failures, {0, 1}, "Symbolic world: probability that a move fails");
-  add_integer(app, "--cycles", o.cycles, 0, 1000000,
-              "Recurring tasks (plans that cycle through moves): succeed after K completed cycles "
-              "(0: run until --max-time)");
-  app.add_flag("--random-initial", o.random_initial, "Shuffle objects inside their initial locations");
-  app.add_flag("--no-operator", o.no_operator, "Ignore the scenario's scripted operator");
-  add_real(app, "--max-time", o.max_time, {0, 1e7, true}, "Give up after this many seconds of world time");
-  app.add_option("--log", o.log, log_help);
-  app.add_option("--trees", o.trees, "Write the tree as BehaviorTree.CPP XML after each change into DIR");
+std::vector<Choice> world_choices() {
+  std::vector<Choice> out;
+  for (const auto& w : episode::worlds()) out.push_back({w.name, w.description});
+  return out;
 }
 
-episode::EpisodeOptions to_episode_options(const EpisodeArgs& o) {
-  episode::EpisodeOptions opt;
-  opt.world = parse_name(episode::worlds(), o.world, "world");
-  opt.algorithm = plan::parse_algorithm(o.algo);
-  const exec::TreeVariant bt = parse_name(exec::tree_variants(), o.bt, "tree variant");
-  opt.conditions = bt.conditions;
-  opt.reconfiguration = bt.reconfiguration;
-  opt.planning = !o.planning.empty() ? parse_name(exec::planning_modes(), o.planning, "planning mode")
-                 : opt.world == episode::WorldKind::Symbolic ? exec::PlanningMode::Inline
-                                                             : exec::PlanningMode::Worker;
-  opt.cost = o.cost;
-  opt.seed = o.seed;
-  opt.max_time = o.max_time;
-  opt.cycles = o.cycles;
-  opt.random_rate = o.rate;
-  opt.failure_probability = o.failures;
-  opt.randomize_initial = o.random_initial;
-  opt.scripted_operator = !o.no_operator;
-  if (!o.change.empty()) opt.random_change = parse_name(world::random_change_kinds(), o.change, "change");
-  opt.log_path = o.log;
-  opt.tree_dir = o.trees;
-  return opt;
+void add_episode_options(CLI::App& app, EpisodeArgs& a, const std::string& log_help) {
+  episode::EpisodeOptions& o = a.episode;
+  exec::LoopOptions& loop = o.loop;
+  add_scenario(app, a.scenario)->required();
+  add_choice(app, "--world", o.world, world_choices(), "World:");
+  add_choice_with(
+      app, "--algo", algorithm_choices(), plan::algorithm_info(loop.planner.algorithm).name,
+      [&loop](const std::string& s) { loop.planner.algorithm = plan::parse_algorithm(s); }, "Search algorithm:");
+  add_choice_with(
+      app, "--bt", choices_of(exec::tree_variants()), "online-action",
+      [&loop](const std::string& s) {
+        const exec::TreeVariant v = parse_name(exec::tree_variants(), s, "tree variant");
+        loop.conditions = v.conditions;
+        loop.reconfiguration = v.reconfiguration;
+      },
+      "Tree variant:");
+  add_choice(app, "--cost", loop.planner.cost, cost_model_choices(), "Planner motion-cost model:");
+  a.planning = add_choice_with(
+      app, "--planning", choices_of(exec::planning_modes()), "the world's",
+      [&loop](const std::string& s) { loop.planning = parse_name(exec::planning_modes(), s, "planning mode"); },
+      "Planning (default: the world's — worker for mujoco, inline for symbolic):");
+  add_seed(app, "--seed", o.seed, "Seed of the episode (the world, the person, the random initial layout)");
+  add_choice_with(
+      app, "--change", choices_of(world::random_change_kinds()), "none",
+      [&o](const std::string& s) {
+        o.person.change = world::RandomChange{parse_name(world::random_change_kinds(), s, "change")};
+      },
+      "Add one random intervention at a random time in 2-20 s:");
+  add_real(app, "--rate", o.person.rate, {0, 100},
+           "Random interventions per second of world time, of every kind (docs/person.md)");
+  add_real(app, "--failures", o.world_settings.failure_probability, {0, 1},
+           "Symbolic world: probability that a move fails");
+  add_integer(app, "--cycles", loop.cycles, 0, 1000000,
+              "Recurring tasks (plans that cycle through moves): succeed after K completed cycles "
+              "(0: run until --max-time)");
+  app.add_flag("--random-initial", o.randomize_initial, "Shuffle objects inside their initial locations");
+  app.add_flag("--no-operator{false}", o.scripted_operator, "Ignore the scenario's scripted operator");
+  add_real(app, "--max-time", loop.max_time, {0, 1e7, true}, "Give up after this many seconds of world time");
+  app.add_option("--log", o.outputs.log, log_help);
+  app.add_option("--trees", o.outputs.trees, "Write the tree as BehaviorTree.CPP XML after each change into DIR");
+}
+
+episode::EpisodeOptions episode_options(const EpisodeArgs& a) {
+  episode::EpisodeOptions o = a.episode;
+  if (!a.planning || a.planning->count() == 0) o.loop.planning = episode::find_world(o.world).planning;
+  return o;
 }
 
 }  // namespace rtamp::cli

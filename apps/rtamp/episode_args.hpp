@@ -1,27 +1,25 @@
 // The command-line options of one episode of the reactive loop, shared by
 // `rtamp run` and `rtamp serve` (both run episode::Episode): registered once,
-// with one help text, and turned into episode::EpisodeOptions one way.
+// with one help text, each stored straight into episode::EpisodeOptions.
 //
 // Invariant: every value is checked by CLI11 while the command line is parsed
-// (choices, ranges); to_episode_options() only maps names to enums and never
-// fails. Outputs (--log, --trees) are checked by the command before it runs.
+// (choices from the library's tables and registries, ranges); only the
+// planning mode's default is settled after parsing (the world's). Outputs
+// (--log, --trees) are checked by the command before it runs.
 #pragma once
 
 #include <CLI/CLI.hpp>
-#include <cstdint>
 #include <string>
 
+#include "options.hpp"
 #include "rtamp/episode/episode.hpp"
 
 namespace rtamp::cli {
 
 struct EpisodeArgs {
-  std::string scenario, algo = "astar-exp", bt = "online-action", cost = "euclid", log, trees, change,
-                        world = "mujoco", planning;
-  std::uint64_t seed = 1;
-  double max_time = 900, rate = 0, failures = 0;
-  int cycles = 0;
-  bool random_initial = false, no_operator = false;
+  std::string scenario;
+  episode::EpisodeOptions episode;
+  CLI::Option* planning = nullptr;
 };
 
 // SCENARIO, --world, --algo, --bt, --cost, --planning, --seed, --change,
@@ -29,7 +27,11 @@ struct EpisodeArgs {
 // --log (described by `log_help`), --trees.
 void add_episode_options(CLI::App& app, EpisodeArgs& args, const std::string& log_help);
 
-// The episode's options (no timeline, no interrupt flag: the command sets those).
-episode::EpisodeOptions to_episode_options(const EpisodeArgs& args);
+// The episode's options after parsing: without --planning, the world's
+// planning mode (world_registry.hpp). No timeline, no interrupt flag: the command sets those.
+episode::EpisodeOptions episode_options(const EpisodeArgs& args);
+
+// The registered worlds as choices.
+std::vector<Choice> world_choices();
 
 }  // namespace rtamp::cli

@@ -178,6 +178,17 @@ CLI::Option* add_choice(CLI::App& app, const std::string& name, std::string& tar
   return opt;
 }
 
+CLI::Option* add_choice_with(CLI::App& app, const std::string& name, const std::vector<Choice>& choices,
+                             const std::string& default_name, std::function<void(const std::string&)> store,
+                             const std::string& description) {
+  const std::string key = name.substr(0, name.find(','));
+  auto* opt = app.add_option_function<std::string>(
+      name, [store = std::move(store), key](const std::string& s) { as_validation(key, [&] { store(s); }); },
+      choice_help(description, choices));
+  opt->check(choice_validator(choices))->type_name("NAME")->default_str(default_name);
+  return opt;
+}
+
 CLI::Option* add_choices(CLI::App& app, const std::string& name, std::vector<std::string>& target,
                          const std::vector<Choice>& choices, const std::string& description) {
   auto* opt = app.add_option(name, target, choice_help(description, choices));

@@ -71,6 +71,10 @@ std::vector<Choice> cost_model_choices();
 // The help text lists the names, with their descriptions when there are any.
 CLI::Option* add_choice(CLI::App& app, const std::string& name, std::string& target, const std::vector<Choice>& choices,
                         const std::string& description);
+// The same, handing the checked name to `store` (e.g. to set an enum); `default_name` is shown in --help.
+CLI::Option* add_choice_with(CLI::App& app, const std::string& name, const std::vector<Choice>& choices,
+                             const std::string& default_name, std::function<void(const std::string&)> store,
+                             const std::string& description);
 // Repeatable: every occurrence must be a name from `choices`.
 CLI::Option* add_choices(CLI::App& app, const std::string& name, std::vector<std::string>& target,
                          const std::vector<Choice>& choices, const std::string& description);

@@ -18,7 +18,7 @@ int main(int argc, char** argv) {
   rtamp::robot::quiet_ompl_logging();
   const rtamp::world::Scenario scenario = rtamp::world::load_scenario(argc > 1 ? argv[1] : "3-block");
   rtamp::episode::EpisodeOptions options;  // MuJoCo world, A* with experience, the scenario's operator
-  options.timeline = [](const std::string& line) { std::cout << line << "\n"; };
+  options.outputs.timeline = [](const std::string& line) { std::cout << line << "\n"; };
   const rtamp::episode::EpisodeMetrics m = rtamp::episode::run_episode(scenario, options);
   std::cout << scenario.name << ": " << (m.success ? "success" : "failure") << " (" << m.reason << "), "
             << m.actions_succeeded << " actions, " << m.world_time << " s simulated\n";

@@ -70,11 +70,11 @@ void bind_batch(py::module_& m) {
           for (const auto& t : trials) list.push_back(from_tuple(t));
           batch::BatchOptions o;
           o.jobs = jobs;
-          o.max_time = max_time;
-          o.cost = cost;
-          o.randomize_initial = randomize_initial;
-          o.scripted_operator = scripted_operator;
-          o.world = parse_name(episode::worlds(), world, "world");
+          o.episode = batch::batch_episode_defaults(world);
+          o.episode.loop.max_time = max_time;
+          o.episode.loop.planner.cost = cost;
+          o.episode.randomize_initial = randomize_initial;
+          o.episode.scripted_operator = scripted_operator;
           std::vector<batch::EpisodeRecord> records;
           {
             py::gil_scoped_release release;

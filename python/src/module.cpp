@@ -1,7 +1,7 @@
 // The compiled part of the Python package `rtamp` (imported as rtamp._rtamp;
 // python/rtamp/__init__.py re-exports it). Each area's bindings live in a file
 // of their own (ltl.cpp, automata.cpp, scenario.cpp, plan.cpp, bt.cpp,
-// loop.cpp, worlds.cpp, batch.cpp); errors.cpp maps rtamp::Error to rtamp.Error.
+// loop.cpp, worlds.cpp, episode.cpp, batch.cpp); errors.cpp maps rtamp::Error to rtamp.Error.
 #include "bindings.hpp"
 #include "rtamp/robot/ompl_logging.hpp"
 #include "rtamp/sim/mujoco_logging.hpp"
@@ -21,6 +21,7 @@ PYBIND11_MODULE(_rtamp, m) {
   bind_bt(m);
   bind_loop(m);
   bind_worlds(m);
+  bind_episode(m);
   bind_batch(m);
   // Importing rtamp changes nothing process-wide; these are the CLI's two calls, on request.
   m.def("install_mujoco_log_handler", &rtamp::sim::install_mujoco_log_handler,

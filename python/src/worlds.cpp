@@ -1,9 +1,9 @@
 // Python bindings of rtamp's own worlds on the rtamp.World base: the symbolic
 // world (exec/symbolic_world.hpp: exact placement, discrete-event arm, seeded
 // failures and interventions; thousands of episodes a second) and the MuJoCo
-// UR5 (episode/sim_world.hpp), plus run_episode (episode/episode.hpp): one
-// whole episode with the standard observers — JSON Lines log, tree dumps,
-// timeline, and a video of the MuJoCo run. Episodes run without the GIL.
+// UR5 (episode/sim_world.hpp), the person and the world it acts on, and
+// choices(): every named choice with its description. Whole episodes:
+// episode.cpp.
 #include <optional>
 
 #include "bindings.hpp"
@@ -128,7 +128,9 @@ void bind_worlds(py::module_& m) {
       for (const auto& n : table) t[py::str(n.name)] = py::str(n.description);
       d[py::str(key)] = t;
     };
-    add("world", episode::worlds());
+    py::dict w;
+    for (const auto& e : episode::worlds()) w[py::str(e.name)] = py::str(e.description);
+    d["world"] = w;
     add("bt", exec::tree_variants());
     add("conditions", exec::condition_modes());
     add("reconfiguration", exec::reconfigurations());
@@ -142,57 +144,6 @@ void bind_worlds(py::module_& m) {
   }, "Every named choice (the CLI's and run_episode's option values) -> {name: one-line description},\n"
      "from the same tables the command line reads. algorithms() and cost_models() list the planner's.");
 
-  m.def("run_episode",
-        [](const world::Scenario& s, const std::string& world, const std::string& algorithm, const std::string& cost,
-           const std::string& conditions, const std::string& reconfiguration, const std::string& planning,
-           std::uint64_t seed, double max_time, double tick_period, int cycles, bool randomize_initial,
-           bool scripted_operator, const std::optional<std::string>& random_change, double random_rate,
-           double failure_probability, int max_failures_per_move, double outside_grace, const std::string& log,
-           const std::string& trees, const std::string& video,
-           std::optional<std::function<void(const std::string&)>> timeline) {
-          episode::EpisodeOptions o;
-          o.world = parse_name(episode::worlds(), world, "world");
-          o.algorithm = plan::parse_algorithm(algorithm);
-          o.cost = cost;
-          o.conditions = parse_name(exec::condition_modes(), conditions, "condition mode");
-          o.reconfiguration = parse_name(exec::reconfigurations(), reconfiguration, "reconfiguration");
-          o.planning = parse_name(exec::planning_modes(), planning, "planning mode");
-          o.seed = seed;
-          o.max_time = max_time;
-          o.tick_period = tick_period;
-          o.cycles = cycles;
-          o.randomize_initial = randomize_initial;
-          o.scripted_operator = scripted_operator;
-          if (random_change) o.random_change = parse_intervention_kind(*random_change);
-          o.random_rate = random_rate;
-          o.failure_probability = failure_probability;
-          o.max_failures_per_move = max_failures_per_move;
-          o.outside_grace = outside_grace;
-          o.log_path = log;
-          o.tree_dir = trees;
-          o.video_path = video;
-          if (timeline) o.timeline = *timeline;
-          exec::EpisodeMetrics r;
-          {
-            py::gil_scoped_release release;
-            r = episode::run_episode(s, o);
-          }
-          return r;
-        },
-        py::arg("scenario"), py::kw_only(), py::arg("world") = "mujoco", py::arg("algorithm") = "astar-exp",
-        py::arg("cost") = "euclid", py::arg("conditions") = "action", py::arg("reconfiguration") = "online",
-        py::arg("planning") = "worker", py::arg("seed") = 1, py::arg("max_time") = 900.0,
-        py::arg("tick_period") = 0.02, py::arg("cycles") = 0, py::arg("randomize_initial") = false,
-        py::arg("scripted_operator") = true, py::arg("random_change") = py::none(), py::arg("random_rate") = 0.0,
-        py::arg("failure_probability") = 0.0, py::arg("max_failures_per_move") = 5,
-        py::arg("outside_grace") = 3.0, py::arg("log") = "", py::arg("trees") = "", py::arg("video") = "",
-        py::arg("timeline") = py::none(),
-        "One episode of the reactive loop, as `rtamp run` runs it: world 'mujoco' (the UR5) or\n"
-        "'symbolic'; log: a JSON Lines log file; trees: a directory for the tree after each change\n"
-        "(BehaviorTree.CPP XML); video: an MP4 of the MuJoCo run; timeline: a callable that gets each\n"
-        "readable line as it happens. random_change: one random intervention of that kind ('relocate',\n"
-        "'add', 'remove', ...) at a random time in 2-20 s. Returns the EpisodeMetrics. The GIL is\n"
-        "released while it runs.");
 }
 
 }  // namespace rtamp::python

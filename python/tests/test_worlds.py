@@ -2,6 +2,7 @@
 
 import json
 import os
+import subprocess
 
 import pytest
 
@@ -100,3 +101,39 @@ def test_a_person_needs_a_world_that_takes_interventions():
 
     with pytest.raises(rtamp.Error, match="cannot take a person's interventions"):
         rtamp.PersonWorld(Plain(), rtamp.Person(rtamp.load_scenario("3-block")))
+
+
+def test_episode_options_are_one_struct_checked_when_set(tray, tmp_path):
+    assert set(rtamp.worlds()) >= {"mujoco", "symbolic"}
+    assert rtamp.EpisodeOptions().planning == "worker"
+    o = rtamp.EpisodeOptions(world="symbolic", seed=3, random_change="add", change_window=(5, 10))
+    assert (o.world, o.planning, o.seed, o.random_change, o.change_window) == ("symbolic", "inline", 3, "add", (5, 10))
+    with pytest.raises(TypeError, match="did you mean 'random_rate'"):
+        rtamp.EpisodeOptions(random_rat=1.0)
+    with pytest.raises(rtamp.Error, match="did you mean 'symbolic'"):
+        rtamp.EpisodeOptions(world="symbolik")
+    with pytest.raises(rtamp.Error, match="no random_change"):
+        rtamp.EpisodeOptions(change_window=(1, 2))
+    with pytest.raises(rtamp.Error, match="unknown algorithm"):
+        o.algorithm = "astr"
+    # Keywords override a copy: `o` itself is unchanged.
+    log = tmp_path / "a.jsonl"
+    m = rtamp.run_episode(tray, o, log=str(log))
+    assert o.log == "" and log.exists() and m.interventions == 2  # the scenario's script and the random add
+
+
+def test_python_and_the_cli_fill_in_the_same_episode(tray):
+    """The same options through `rtamp run --json` and run_episode give the same episode."""
+    binary = os.environ.get("RTAMP_BINARY")
+    if not binary:
+        pytest.skip("RTAMP_BINARY not set")
+    args = ["--world", "symbolic", "--seed", "4", "--change", "relocate", "--rate", "0.05", "--bt", "online-state",
+            "--algo", "astar", "--max-time", "400"]
+    out = subprocess.run([binary, "run", "3-block-tray", *args, "--json", "--quiet"], capture_output=True, text=True)
+    assert out.returncode in (0, 1), out.stderr
+    cli = json.loads(out.stdout)
+    m = rtamp.run_episode(tray, world="symbolic", seed=4, random_change="relocate", random_rate=0.05,
+                          conditions="state", algorithm="astar", max_time=400)
+    assert (cli["success"], cli["end"], cli["interventions"], cli["replans"], cli["actions_succeeded"]) == \
+        (m.success, m.end, m.interventions, m.replans, m.actions_succeeded)
+    assert cli["world_time"] == pytest.approx(m.world_time, abs=1e-9)

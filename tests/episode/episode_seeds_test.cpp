@@ -39,11 +39,11 @@ TEST_P(SeededEpisodes, AllSucceed) {
   for (std::uint64_t seed = 1; seed <= 30; ++seed) {
     EpisodeOptions o;
     o.seed = seed;
-    o.random_change = kind;
+    o.person.change = world::RandomChange{kind};
     o.randomize_initial = true;
     o.scripted_operator = false;
-    o.max_time = 300;
-    o.log_path = log;
+    o.loop.max_time = 300;
+    o.outputs.log = log;
     const EpisodeMetrics m = run_episode(s, o);
     EXPECT_TRUE(m.success) << name << " seed " << seed << ": " << m.reason;
     EXPECT_EQ(m.interventions, 1) << "seed " << seed;

@@ -69,8 +69,8 @@ void expect_complete(const Log& log, const EpisodeMetrics& m) {
 
 EpisodeOptions options(const std::string& name) {
   EpisodeOptions o;
-  o.log_path = log_path(name);
-  o.max_time = 300;
+  o.outputs.log = log_path(name);
+  o.loop.max_time = 300;
   return o;
 }
 
@@ -85,7 +85,7 @@ TEST(Episode, ScriptedTrayScenarioSucceedsWithACompleteLog) {
   EXPECT_GT(*m.completion_time, 0);
   EXPECT_GT(m.motion_cost, 0);
   EXPECT_GE(m.actions_succeeded, 7);  // load the tray, carry it, unload it, redo o2
-  const Log log = read_log(o.log_path);
+  const Log log = read_log(o.outputs.log);
   expect_complete(log, m);
   ASSERT_EQ(log.of("intervention").size(), 1u);
   EXPECT_EQ(log.of("intervention")[0].at("kind"), "relocate");
@@ -97,7 +97,7 @@ TEST(Episode, ScriptedTrayScenarioSucceedsWithACompleteLog) {
   // At the end every block is in r2.
   const auto& placement = log.lines.back().at("placement");
   for (const char* b : {"o1", "o2", "o3"}) EXPECT_EQ(placement.at(b), "r2") << b;
-  std::filesystem::remove(o.log_path);
+  std::filesystem::remove(o.outputs.log);
 }
 
 // The demo: a tray handed over mid-task. The robot finishes the move it is
@@ -108,7 +108,7 @@ TEST(Episode, HandedOverTrayIsUsedOnceTheRunningMoveEnds) {
   const EpisodeOptions o = options("handover");
   const EpisodeMetrics m = run_episode(s, o);
   EXPECT_TRUE(m.success) << m.reason;
-  const Log log = read_log(o.log_path);
+  const Log log = read_log(o.outputs.log);
   expect_complete(log, m);
   const auto plans = log.of("plan");
   ASSERT_GE(plans.size(), 2u);
@@ -122,7 +122,7 @@ TEST(Episode, HandedOverTrayIsUsedOnceTheRunningMoveEnds) {
   EXPECT_EQ(started[0], "move(o1, r2)");
   EXPECT_NE(started[1].find(", r3)"), std::string::npos) << started[1];
   EXPECT_NE(std::find(started.begin(), started.end(), "move(r3, r2)"), started.end());
-  std::filesystem::remove(o.log_path);
+  std::filesystem::remove(o.outputs.log);
 }
 
 // The same seed gives the same episode — with inline planning: a planner on
@@ -132,8 +132,8 @@ TEST(Episode, IsDeterministicForASeed) {
   const world::Scenario s = world::load_scenario("3-block");
   EpisodeOptions o;
   o.seed = 5;
-  o.planning = exec::PlanningMode::Inline;
-  o.random_change = world::Intervention::Kind::Relocate;
+  o.loop.planning = exec::PlanningMode::Inline;
+  o.person.change = world::RandomChange{world::Intervention::Kind::Relocate};
   const EpisodeMetrics a = run_episode(s, o), b = run_episode(s, o);
   EXPECT_EQ(a.success, b.success);
   EXPECT_EQ(a.completion_time, b.completion_time);
@@ -158,14 +158,14 @@ TEST(Episode, ObjectTakenFromTheGripperAndPutBackIsMovedAgain) {
   const EpisodeOptions o = options("take_back");
   const EpisodeMetrics m = run_episode(s, o);
   EXPECT_TRUE(m.success) << m.reason;
-  const Log log = read_log(o.log_path);
+  const Log log = read_log(o.outputs.log);
   expect_complete(log, m);
   ASSERT_EQ(log.of("intervention").size(), 1u);
   EXPECT_EQ(log.of("intervention")[0].at("applied"), true) << "the gripper held nothing at t = 4 s";
   EXPECT_EQ(log.of("intervention")[0].at("kind"), "take-from-gripper");
   EXPECT_GE(m.actions_failed, 1);
   for (const char* b : {"o1", "o2", "o3"}) EXPECT_EQ(log.lines.back().at("placement").at(b), "r2") << b;
-  std::filesystem::remove(o.log_path);
+  std::filesystem::remove(o.outputs.log);
 }
 
 // Taken away for good: the task is about the blocks that are left.
@@ -175,11 +175,11 @@ TEST(Episode, ObjectTakenFromTheGripperForGoodIsForgotten) {
   const EpisodeOptions o = options("take_away");
   const EpisodeMetrics m = run_episode(s, o);
   EXPECT_TRUE(m.success) << m.reason;
-  const Log log = read_log(o.log_path);
+  const Log log = read_log(o.outputs.log);
   expect_complete(log, m);
   EXPECT_EQ(log.of("intervention").at(0).at("applied"), true);
   EXPECT_EQ(log.lines.back().at("placement").size(), 2u);
-  std::filesystem::remove(o.log_path);
+  std::filesystem::remove(o.outputs.log);
 }
 
 // r2 holds at most three things; a fourth block makes "all blocks in r2"
@@ -202,11 +202,11 @@ TEST(Episode, UnsatisfiableChangeEndsWithAClearReason) {
   EXPECT_NE(m.reason.find("capacit"), std::string::npos) << m.reason;
   EXPECT_FALSE(m.completion_time.has_value());
   EXPECT_EQ(m.end, exec::EndReason::NoPlan);
-  const Log log = read_log(o.log_path);
+  const Log log = read_log(o.outputs.log);
   expect_complete(log, m);
   EXPECT_EQ(log.lines.back().at("end"), "no-plan");
   EXPECT_TRUE(log.lines.back().at("metrics").at("completion_time").is_null());
-  std::filesystem::remove(o.log_path);
+  std::filesystem::remove(o.outputs.log);
 }
 
 // A recurring task (patrol o1 between r1 and r2) has a plan whose cycle moves
@@ -223,12 +223,12 @@ TEST(Episode, RecurringTaskRunsUntilTheTimeLimitAndSaysWhy) {
   s.task = "G F o1_in_r1 & G F o1_in_r2";
   s.interventions.clear();
   EpisodeOptions o = options("patrol");
-  o.max_time = 40;
+  o.loop.max_time = 40;
   const EpisodeMetrics m = run_episode(s, o);
   EXPECT_FALSE(m.success);
   EXPECT_NE(m.reason.find("time limit"), std::string::npos) << m.reason;
   EXPECT_NE(m.reason.find("recurring task"), std::string::npos) << m.reason;
-  const Log log = read_log(o.log_path);
+  const Log log = read_log(o.outputs.log);
   expect_complete(log, m);
   // o1 went to r2 and back at least once.
   std::size_t to_r2 = 0, to_r1 = 0;
@@ -239,12 +239,12 @@ TEST(Episode, RecurringTaskRunsUntilTheTimeLimitAndSaysWhy) {
     }
   EXPECT_GE(to_r2, 1u);
   EXPECT_GE(to_r1, 1u);
-  std::filesystem::remove(o.log_path);
+  std::filesystem::remove(o.outputs.log);
 }
 
 TEST(Episode, UnreadableLogPathIsAClearError) {
   EpisodeOptions o;
-  o.log_path = "/nonexistent-dir/episode.jsonl";
+  o.outputs.log = "/nonexistent-dir/episode.jsonl";
   EXPECT_THROW(run_episode(world::load_scenario("3-block"), o), Error);
 }
 

@@ -330,11 +330,11 @@ struct Outcome {
 
 Outcome run_one(const world::Scenario& s, std::uint64_t seed, const std::string& log_path, bool verbose) {
   EpisodeOptions o;
-  o.world = WorldKind::MuJoCo;
+  o.world = "mujoco";
   o.seed = seed;
-  o.max_time = 300;
-  o.log_path = log_path;
-  if (verbose) o.timeline = [](const std::string& line) { std::cout << line << '\n'; };
+  o.loop.max_time = 300;
+  o.outputs.log = log_path;
+  if (verbose) o.outputs.timeline = [](const std::string& line) { std::cout << line << '\n'; };
   Outcome out;
   out.metrics = run_episode(s, o);
   out.log = read_log(log_path);

@@ -62,12 +62,12 @@ struct End {
   std::string reason;
 };
 
-End run_in(WorldKind world, const world::Scenario& s, std::uint64_t seed) {
+End run_in(const std::string& world, const world::Scenario& s, std::uint64_t seed) {
   EpisodeOptions o;
   o.world = world;
   o.seed = seed;
-  o.planning = exec::PlanningMode::Inline;
-  o.max_time = 400;
+  o.loop.planning = exec::PlanningMode::Inline;
+  o.loop.max_time = 400;
   Episode e(s, o);
   const EpisodeMetrics m = e.run();
   End out{m.end, m.interventions_applied, {}, m.reason};
@@ -90,8 +90,8 @@ TEST(WorldsAgree, TheSameScriptEndsTheSameWayInBothWorlds) {
     std::string script;
     for (const auto& iv : s.interventions) script += iv.to_string() + " @" + std::to_string(iv.time) + "; ";
     SCOPED_TRACE(s.name + ", seed " + std::to_string(seed) + ": " + script);
-    const End sym = run_in(WorldKind::Symbolic, s, seed);
-    const End mj = run_in(WorldKind::MuJoCo, s, seed);
+    const End sym = run_in("symbolic", s, seed);
+    const End mj = run_in("mujoco", s, seed);
     // An intervention one world could take and the other not (a location full
     // in one and not yet in the other, the arms being at different points of
     // their moves) makes different worlds: those are not compared.

@@ -432,7 +432,8 @@ TEST(ReactiveLoopPropertyOne, SeedFromTheEnvironment) {
 
 // Every tree form counts the same completed moves: with no person and no
 // failures, the four forms (state or action conditions, online or offline
-// changes) end the same way after the same number of moves.
+// changes) end the same way after the same number of moves (unless a search
+// was cut by its wall-clock limit, which makes the runs depend on the load).
 void check_tree_forms(std::uint64_t seed) {
   Case k = random_case(seed);
   k.person.rate = 0;
@@ -446,7 +447,11 @@ void check_tree_forms(std::uint64_t seed) {
       o.conditions = c;
       o.reconfiguration = r;
       ReactiveLoop loop(w, k.scenario, o);
+      CutPlans cut;
+      loop.add_observer(cut);
       const EpisodeMetrics& m = loop.run();
+      // A search cut by its wall-clock limit makes the run depend on the machine's load: nothing to compare.
+      if (cut.count > 0 || m.reason.find("time limit") != std::string::npos) return;
       ends.emplace_back(m.end, m.actions_succeeded);
     }
   for (const auto& e : ends) {

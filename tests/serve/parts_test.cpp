@@ -18,7 +18,7 @@
 #include "rtamp/util/json_text.hpp"
 #include "rtamp/serve/intervention_check.hpp"
 #include "rtamp/serve/request.hpp"
-#include "rtamp/serve/thing_layout.hpp"
+#include "rtamp/exec/thing_layout.hpp"
 #include "rtamp/world/geometry.hpp"
 #include "rtamp/world/intervention_rules.hpp"
 #include "rtamp/world/scenario_io.hpp"
@@ -209,7 +209,7 @@ TEST(ServeInterventionCheck, FollowsTheScenarioRules) {
 
 TEST(ServeThingLayout, ThingsInOneLocationGetDistinctSpots) {
   const world::Scenario s = world::load_scenario("3-block-tray");
-  ThingLayout layout(s);
+  exec::ThingLayout layout(s);
   world::Placement p = world::initial_placement(s);
   layout.update(p);
   EXPECT_DOUBLE_EQ(layout.position("o1")[0], 0.32);  // unmoved: the scenario position

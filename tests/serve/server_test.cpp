@@ -39,11 +39,11 @@ fs::path temp_dir(const std::string& name) {
 
 episode::EpisodeOptions symbolic_options(const std::string& log = {}) {
   episode::EpisodeOptions o;
-  o.world = episode::WorldKind::Symbolic;
-  o.planning = exec::PlanningMode::Inline;
+  o.world = "symbolic";
+  o.loop.planning = exec::PlanningMode::Inline;
   o.seed = 7;
-  o.max_time = 300;
-  o.log_path = log;
+  o.loop.max_time = 300;
+  o.outputs.log = log;
   return o;
 }
 
@@ -509,7 +509,7 @@ TEST(ServeServer, ReplaySendsTheLoggedTreesAndAddedThingsClasses) {
     {
       LiveOptions o;
       o.episode = symbolic_options(served_log.string());
-      o.episode.conditions = mode;
+      o.episode.loop.conditions = mode;
       o.speed = 0;
       o.paused = true;
       Served sv(s, o);
@@ -529,7 +529,7 @@ TEST(ServeServer, ReplaySendsTheLoggedTreesAndAddedThingsClasses) {
     ASSERT_GE(live.size(), 2u) << "no replan: nothing to compare";
     {
       auto o = symbolic_options(run_log.string());
-      o.conditions = mode;
+      o.loop.conditions = mode;
       ASSERT_TRUE(episode::run_episode(s, o).success);
     }
     for (const fs::path& log : {served_log, run_log}) {

@@ -11,40 +11,47 @@
 
 namespace rtamp::batch {
 
-episode::EpisodeOptions episode_options(const Trial& t, const BatchOptions& o) {
+episode::EpisodeOptions batch_episode_defaults(const std::string& world) {
   episode::EpisodeOptions e;
-  e.world = o.world;
-  e.algorithm = t.algorithm;
+  e.world = world;
+  e.randomize_initial = true;
+  e.scripted_operator = false;
+  e.loop.planning = episode::find_world(world).planning;
+  return e;
+}
+
+episode::EpisodeOptions episode_options(const Trial& t, const BatchOptions& o) {
+  episode::EpisodeOptions e = o.episode;
+  e.loop.planner.algorithm = t.algorithm;
   // The paper's three BT variants: online reconfiguration with action or
   // state conditions, and offline reconstruction with action conditions.
   switch (t.bt) {
     case BtVariant::OnlineAction:
-      e.conditions = exec::ConditionMode::Action;
-      e.reconfiguration = exec::Reconfiguration::Online;
+      e.loop.conditions = exec::ConditionMode::Action;
+      e.loop.reconfiguration = exec::Reconfiguration::Online;
       break;
     case BtVariant::OnlineState:
-      e.conditions = exec::ConditionMode::State;
-      e.reconfiguration = exec::Reconfiguration::Online;
+      e.loop.conditions = exec::ConditionMode::State;
+      e.loop.reconfiguration = exec::Reconfiguration::Online;
       break;
     case BtVariant::Offline:
-      e.conditions = exec::ConditionMode::Action;
-      e.reconfiguration = exec::Reconfiguration::Offline;
+      e.loop.conditions = exec::ConditionMode::Action;
+      e.loop.reconfiguration = exec::Reconfiguration::Offline;
       break;
   }
+  world::RandomChange change = o.episode.person.change.value_or(world::RandomChange{});
   switch (t.change) {
-    case ChangeKind::Relocate: e.random_change = world::Intervention::Kind::Relocate; break;
-    case ChangeKind::Add: e.random_change = world::Intervention::Kind::Add; break;
-    case ChangeKind::Remove: e.random_change = world::Intervention::Kind::Remove; break;
-    case ChangeKind::None: e.random_change.reset(); break;
+    case ChangeKind::Relocate: change.kind = world::Intervention::Kind::Relocate; break;
+    case ChangeKind::Add: change.kind = world::Intervention::Kind::Add; break;
+    case ChangeKind::Remove: change.kind = world::Intervention::Kind::Remove; break;
+    case ChangeKind::None: break;
   }
-  e.cost = o.cost;
+  if (t.change == ChangeKind::None)
+    e.person.change.reset();
+  else
+    e.person.change = change;
   e.seed = t.seed;
-  e.max_time = o.max_time;
-  e.randomize_initial = o.randomize_initial;
-  e.scripted_operator = o.scripted_operator;
-  e.change_window_begin = o.change_window_begin;
-  e.change_window_end = o.change_window_end;
-  if (!o.log_dir.empty()) e.log_path = (std::filesystem::path(o.log_dir) / log_file_name(t)).string();
+  e.outputs.log = o.log_dir.empty() ? std::string() : (std::filesystem::path(o.log_dir) / log_file_name(t)).string();
   return e;
 }
 

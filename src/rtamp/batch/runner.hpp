@@ -28,15 +28,18 @@
 
 namespace rtamp::batch {
 
+// The options every episode of the batch starts from (episode::EpisodeOptions,
+// the one description of an episode): objects placed at random, no scripted
+// operator, planning as the world plans by default.
+episode::EpisodeOptions batch_episode_defaults(const std::string& world = "mujoco");
+
 struct BatchOptions {
-  int jobs = 2;                   // worker threads (>= 1)
-  double max_time = 900;          // simulated seconds before an episode gives up
-  std::string cost = "euclid";    // planner cost model
-  bool randomize_initial = true;  // random object placement (seeded)
-  bool scripted_operator = false; // also apply the scenario's own `operator:` script
-  double change_window_begin = 2, change_window_end = 20;  // s, when the random change happens (within every task)
-  std::string log_dir;            // JSON Lines log per episode into this directory; empty: none
-  episode::WorldKind world = episode::WorldKind::MuJoCo;  // or the symbolic world (no physics)
+  int jobs = 2;          // worker threads (>= 1)
+  std::string log_dir;   // JSON Lines log per episode into this directory; empty: none
+  // Every episode's options; each trial sets its algorithm, tree form, seed,
+  // log file and random change (of the trial's kind, in the window of
+  // episode.person.change if set, else world::RandomChange's 2-20 s).
+  episode::EpisodeOptions episode = batch_episode_defaults();
 };
 
 // The episode options of one trial.

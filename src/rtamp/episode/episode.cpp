@@ -1,6 +1,7 @@
 #include "rtamp/episode/episode.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <memory>
 #include <random>
 
@@ -8,7 +9,6 @@
 #include "rtamp/episode/video_recorder.hpp"
 #include "rtamp/exec/episode_log.hpp"
 #include "rtamp/exec/person_world.hpp"
-#include "rtamp/exec/symbolic_world.hpp"
 #include "rtamp/exec/timeline.hpp"
 #include "rtamp/exec/tree_dump.hpp"
 #include "rtamp/robot/ik_motion_cost.hpp"
@@ -49,16 +49,6 @@ void randomize_objects(world::Scenario& s, std::mt19937_64& rng) {
 
 }  // namespace
 
-const NameTable<WorldKind>& worlds() {
-  static const NameTable<WorldKind> t = {
-      {"mujoco", WorldKind::MuJoCo, "the simulated UR5 in MuJoCo"},
-      {"symbolic", WorldKind::Symbolic, "a discrete-event world with no physics (milliseconds an episode)"},
-  };
-  return t;
-}
-
-const char* to_string(WorldKind w) { return name_of(worlds(), w); }
-
 EpisodeMetrics run_episode(const world::Scenario& scenario, const EpisodeOptions& opt) {
   return Episode(scenario, opt).run();
 }
@@ -69,60 +59,44 @@ Episode::Episode(const world::Scenario& input, const EpisodeOptions& opt, const 
   std::mt19937_64 rng(opt.seed * 0x9E3779B97F4A7C15ull + 1);
   world::Scenario& scenario = scenario_;
   if (opt.randomize_initial) randomize_objects(scenario, rng);
-  // The person: the scenario's script, random interventions, one random change.
-  world::PersonOptions po;
-  if (opt.scripted_operator) po.script = scenario.interventions;
-  po.rate = opt.random_rate;
-  if (opt.random_change) po.change = world::RandomChange{*opt.random_change, opt.change_window_begin, opt.change_window_end};
+  // Every input is checked before any output is opened (a log file is
+  // created, a tree directory emptied): the person's numbers, the world's
+  // name and settings, the loop's constructor the task, the planner's names
+  // and the loop's numbers. Then the outputs, so that a bad path too is
+  // refused before anything runs.
+  world::PersonOptions po = opt.person;
+  if (opt.scripted_operator) po.script.insert(po.script.begin(), scenario.interventions.begin(), scenario.interventions.end());
   po.seed = opt.seed;
   person_ = std::make_unique<world::Person>(scenario, po);
 
-  // Every input is checked before any output is opened (a log file is
-  // created, a tree directory emptied): the world checks its options, the
-  // loop's constructor the task, the planner's names and the loop's numbers.
-  // Then the outputs, so that a bad path too is refused before anything runs.
-  if (!opt.video_path.empty() && opt.world != WorldKind::MuJoCo)
-    throw Error("--video needs the MuJoCo world (the symbolic world has nothing to film)");
-
-  if (opt.world == WorldKind::MuJoCo) {
-    sim::SessionOptions so;
-    so.seed = opt.seed;
-    auto w = std::make_unique<SimWorld>(scenario, so);
-    sim_world_ = w.get();
-    world_ = std::move(w);
-  } else {
-    exec::SymbolicWorldOptions so;
-    so.seed = opt.seed;
-    so.failure_probability = opt.failure_probability;
-    auto w = std::make_unique<exec::SymbolicWorld>(scenario, so);
-    symbolic_world_ = w.get();
-    world_ = std::move(w);
+  const WorldInfo info = find_world(opt.world);
+  world_ = info.make(scenario, opt.seed, opt.world_settings);
+  if (!world_) throw Error("world '" + info.name + "': its factory made no world");
+  sim_world_ = dynamic_cast<SimWorld*>(world_.get());
+  if (!opt.outputs.video.empty() && !sim_world_)
+    throw Error("--video needs the MuJoCo world (world '" + info.name + "' has nothing to film)");
+  // The person acts through the world's intervention capability; a world
+  // without it runs as it is (people act on it on their own) — unless the
+  // person has something to do, which PersonWorld then refuses.
+  exec::World* seen = world_.get();
+  if (world_->intervenable() || std::isfinite(person_->next_time())) {
+    acted_ = std::make_unique<exec::PersonWorld>(*world_, *person_, "the " + info.name + " world");
+    seen = acted_.get();
   }
-  acted_ = std::make_unique<exec::PersonWorld>(*world_, *person_, std::string("the ") + to_string(opt.world) + " world");
-  if (wrap) wrapper_ = wrap(*acted_);
+  if (wrap) wrapper_ = wrap(*seen);
 
-  exec::LoopOptions lo;
-  lo.planner.algorithm = opt.algorithm;
+  exec::LoopOptions lo = opt.loop;
   robot::register_ik_cost_model();  // the episode layer brings the robot's cost model
-  lo.planner.cost = opt.cost;
-  lo.conditions = opt.conditions;
-  lo.reconfiguration = opt.reconfiguration;
-  lo.planning = opt.planning;
-  lo.max_time = opt.max_time;
-  lo.tick_period = opt.tick_period;
-  lo.max_failures_per_move = opt.max_failures_per_move;
-  lo.outside_grace = opt.outside_grace;
-  lo.cycles = opt.cycles;
   lo.seed = opt.seed;
-  lo.world_name = to_string(opt.world);
-  lo.interrupt = opt.interrupt;
-  loop_ = std::make_unique<exec::ReactiveLoop>(wrapper_ ? *wrapper_ : *acted_, scenario, lo);
+  lo.world_name = info.name;
+  loop_ = std::make_unique<exec::ReactiveLoop>(wrapper_ ? *wrapper_ : *seen, scenario, lo);
 
-  if (!opt.log_path.empty()) log_ = std::make_unique<exec::EpisodeLog>(opt.log_path);
-  if (!opt.tree_dir.empty()) trees_ = std::make_unique<exec::TreeDump>(opt.tree_dir);
-  if (sim_world_ && !opt.video_path.empty())
-    video_ = std::make_unique<VideoRecorder>(sim_world_->session().sim(), opt.video_path);
-  if (opt.timeline) timeline_ = std::make_unique<exec::Timeline>(opt.timeline);
+  const EpisodeOutputs& out = opt.outputs;
+  if (!out.log.empty()) log_ = std::make_unique<exec::EpisodeLog>(out.log);
+  if (!out.trees.empty()) trees_ = std::make_unique<exec::TreeDump>(out.trees);
+  if (sim_world_ && !out.video.empty())
+    video_ = std::make_unique<VideoRecorder>(sim_world_->session().sim(), out.video);
+  if (out.timeline) timeline_ = std::make_unique<exec::Timeline>(out.timeline);
   if (log_) {
     if (SimWorld* sw = sim_world_)
       log_->add_end_field("mujoco_warnings", [sw] { return static_cast<double>(sw->session().sim().warnings().total()); });

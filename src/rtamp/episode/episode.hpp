@@ -1,17 +1,18 @@
 // One episode of the reactive loop (exec::ReactiveLoop, the paper's Algorithm
-// 1) on a scenario, in a world of the user's choice — the simulated UR5 in
-// MuJoCo (SimWorld) or the symbolic world (exec::SymbolicWorld, no physics,
-// milliseconds an episode) — with the standard observers attached: the JSON
-// Lines log, the readable timeline, tree dumps and (MuJoCo) video. This is
-// what `rtamp run` and `rtamp batch` call; programs that bring their own world
-// use exec::ReactiveLoop directly.
+// 1) on a scenario, assembled from parts: a world by name (world_registry.hpp:
+// the MuJoCo UR5, the symbolic world, or one the user registered), the person
+// who acts on it (world::Person, driving the world through exec::PersonWorld),
+// the loop's options, and the outputs — the JSON Lines log, the readable
+// timeline, tree dumps and video (worlds that film: MuJoCo). EpisodeOptions is
+// the one description of an episode that `rtamp run|serve|batch` and Python
+// fill in; programs that bring their own loop use exec::ReactiveLoop directly.
 //
-// Every input (the task, the planner's names, the loop's numbers, the world's
-// options) is checked before any output file is opened, and the outputs
-// (log, tree directory, video encoder) before the episode starts: a bad one
-// is an rtamp::Error, thrown before anything is written or runs. Errors
-// inside the episode end it with EndReason::Error and a complete log; a
-// video encoder that failed then throws its rtamp::Error.
+// Every input (the task, the world's name and settings, the person's and the
+// loop's numbers, the planner's names) is checked before any output file is
+// opened, and the outputs before the episode starts: a bad one is an
+// rtamp::Error thrown before anything is written or runs. Errors inside the
+// episode end it with EndReason::Error and a complete log; a video encoder
+// that failed then throws its rtamp::Error.
 #pragma once
 
 #include <atomic>
@@ -26,46 +27,38 @@
 #include "rtamp/exec/episode_metrics.hpp"
 #include "rtamp/exec/plan_tree.hpp"
 #include "rtamp/exec/reactive_loop.hpp"
-#include "rtamp/exec/symbolic_world.hpp"
 #include "rtamp/exec/timeline.hpp"
 #include "rtamp/exec/tree_dump.hpp"
-#include "rtamp/plan/search.hpp"
+#include "rtamp/episode/world_registry.hpp"
 #include "rtamp/world/person.hpp"
 #include "rtamp/world/scenario.hpp"
 
 namespace rtamp::episode {
 
-enum class WorldKind { MuJoCo, Symbolic };
-const NameTable<WorldKind>& worlds();  // mujoco symbolic
-const char* to_string(WorldKind w);
+// Where the episode writes what happens (each empty or null: none).
+struct EpisodeOutputs {
+  std::string log;    // JSON Lines episode log (docs/exec.md)
+  std::string trees;  // directory: BehaviorTree.CPP XML of the tree after each change
+  std::string video;  // MP4 of the run (worlds that film: MuJoCo)
+  std::function<void(const std::string&)> timeline;  // readable lines as they happen
+};
 
 struct EpisodeOptions {
-  WorldKind world = WorldKind::MuJoCo;
-  plan::Algorithm algorithm = plan::Algorithm::AStarExperience;
-  std::string cost = "euclid";  // planner cost model: euclid | region | unit | ik
-  exec::ConditionMode conditions = exec::ConditionMode::Action;
-  exec::Reconfiguration reconfiguration = exec::Reconfiguration::Online;
-  exec::PlanningMode planning = exec::PlanningMode::Worker;
+  std::string world = "mujoco";  // a registered world (world_registry.hpp)
+  WorldSettings world_settings;
+  // One seed for the episode: the world's draws, the person's, the random
+  // initial layout; the loop reports it (the sub-options' own seeds are ignored).
   std::uint64_t seed = 1;
-  double max_time = 900;          // s of world time before giving up
-  double tick_period = 0.02;      // s between BT ticks (MuJoCo: 50 Hz)
-  int cycles = 0;                 // recurring tasks: succeed after this many cycles
-  bool randomize_initial = false; // shuffle objects inside their initial locations (seeded)
-  bool scripted_operator = true;  // apply the scenario's `operator:` interventions
-  // One extra random intervention of this kind (world::RandomChange: a
-  // relocated or removed subject is an object), at a uniform random time in
-  // change_window (seeded; world/person.hpp draws it).
-  std::optional<world::Intervention::Kind> random_change;
-  double change_window_begin = 2, change_window_end = 20;
-  double random_rate = 0;           // random interventions per second (world::PersonOptions' six kinds)
-  double failure_probability = 0;   // symbolic world: chance that a move fails
-  int max_failures_per_move = 5;
-  double outside_grace = 3;
-  std::string log_path;    // JSON Lines episode log; empty: none
-  std::string tree_dir;    // BehaviorTree.CPP XML of the tree after each change; empty: none
-  std::string video_path;  // MP4 of the run (MuJoCo only); empty: none
-  std::function<void(const std::string&)> timeline;  // readable lines as they happen; null: quiet
-  const std::atomic<int>* interrupt = nullptr;       // nonzero: stop (EndReason::Interrupted)
+  bool randomize_initial = false;  // shuffle objects inside their initial locations (seeded)
+  // The person: random interventions (rate, kinds, window), one random change
+  // (world::RandomChange), and script entries; the scenario's `operator:`
+  // script comes first unless scripted_operator is false.
+  world::PersonOptions person;
+  bool scripted_operator = true;
+  // The loop: the planner (algorithm, cost model), the tree's form, planning
+  // mode, limits, the interrupt flag. Its world_name is the world's.
+  exec::LoopOptions loop;
+  EpisodeOutputs outputs;
 };
 
 using exec::EpisodeMetrics;
@@ -96,8 +89,8 @@ class Episode {
   const world::Scenario& scenario() const { return scenario_; }
   exec::World& world() { return *world_; }  // the world itself (not the wrappers)
   world::Person& person() { return *person_; }
+  // The MuJoCo world, if the episode runs in one (null otherwise).
   SimWorld* sim_world() { return sim_world_; }
-  exec::SymbolicWorld* symbolic_world() { return symbolic_world_; }
   // The log (null without log_path) — EpisodeLog::add_sink streams it.
   exec::EpisodeLog* log() { return log_.get(); }
 
@@ -108,10 +101,9 @@ class Episode {
   std::unique_ptr<exec::Timeline> timeline_;
   std::unique_ptr<world::Person> person_;
   std::unique_ptr<exec::World> world_;
-  std::unique_ptr<exec::PersonWorld> acted_;  // world_ with the person acting on it
+  std::unique_ptr<exec::PersonWorld> acted_;  // world_ with the person acting on it (if it can take them)
   std::unique_ptr<exec::World> wrapper_;
   SimWorld* sim_world_ = nullptr;
-  exec::SymbolicWorld* symbolic_world_ = nullptr;
   std::unique_ptr<VideoRecorder> video_;
   std::unique_ptr<exec::ReactiveLoop> loop_;
 };

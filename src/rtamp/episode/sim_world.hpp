@@ -22,13 +22,14 @@
 #include <string>
 #include <vector>
 
+#include "rtamp/exec/frame.hpp"
 #include "rtamp/exec/intervenable.hpp"
 #include "rtamp/exec/world.hpp"
 #include "rtamp/sim/session.hpp"
 
 namespace rtamp::episode {
 
-class SimWorld final : public exec::World, public exec::Intervenable {
+class SimWorld final : public exec::World, public exec::Intervenable, public exec::FrameSource {
  public:
   SimWorld(const world::Scenario& scenario, sim::SessionOptions options);
 
@@ -43,6 +44,13 @@ class SimWorld final : public exec::World, public exec::Intervenable {
   double distance_travelled() const override { return travelled_; }
   std::vector<exec::WorldEvent> take_events() override;
   exec::Intervenable* intervenable() override { return this; }
+  exec::FrameSource* frames() override { return this; }
+
+  // --- exec::FrameSource: the arm's qpos, the tool point, every present
+  // body's pose; each thing's `at` is where the loop perceived it last (so a
+  // frame never draws perception noise and the episode stays what it would be
+  // undrawn).
+  exec::Frame frame(const world::Placement& perceived) override;
 
   // --- exec::Intervenable
   // Every present thing where it is (noise-free perception).

@@ -38,6 +38,7 @@ class PersonWorld final : public World {
   double distance_travelled() const override { return inner_.distance_travelled(); }
   std::vector<WorldEvent> take_events() override { return inner_.take_events(); }
   Intervenable* intervenable() override { return &hands_; }
+  FrameSource* frames() override { return inner_.frames(); }
 
   World& inner() { return inner_; }
   world::Person& person() { return person_; }

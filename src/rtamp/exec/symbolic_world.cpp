@@ -96,7 +96,10 @@ SymbolicWorld::SymbolicWorld(const world::Scenario& scenario, SymbolicWorldOptio
 
   // The failures' seeded stream (portable).
   fail_rng_ = SplitMix64(options_.seed * 0x9E3779B97F4A7C15ull + 0x632BE59BD9B4E019ull);
+  layout_ = std::make_unique<ThingLayout>(scenario);
 }
+
+Frame SymbolicWorld::frame(const world::Placement&) { return layout_->frame(time_, placement_, hand_point()); }
 
 // ---------------------------------------------------------------- locations
 

@@ -34,12 +34,15 @@
 #include <functional>
 #include <limits>
 #include <map>
+#include <memory>
 #include <optional>
 #include <set>
 #include <string>
 #include <vector>
 
+#include "rtamp/exec/frame.hpp"
 #include "rtamp/exec/intervenable.hpp"
+#include "rtamp/exec/thing_layout.hpp"
 #include "rtamp/exec/world.hpp"
 #include "rtamp/util/splitmix.hpp"
 #include "rtamp/world/fit.hpp"
@@ -94,7 +97,7 @@ struct SymbolicWorldOptions {
   std::uint64_t seed = 1;
 };
 
-class SymbolicWorld final : public World, public Intervenable {
+class SymbolicWorld final : public World, public Intervenable, public FrameSource {
  public:
   // Throws rtamp::Error if the scenario's initial placement breaks a
   // capacity or an option is out of range (an initial placement that breaks
@@ -122,6 +125,11 @@ class SymbolicWorld final : public World, public Intervenable {
   std::string hand() const override { return hand_; }
   std::vector<WorldEvent> take_events() override;
   Intervenable* intervenable() override { return this; }
+  FrameSource* frames() override { return this; }
+
+  // --- exec::FrameSource: no joint angles; the hand point interpolated along
+  // the moves; things laid out in their true locations (thing_layout.hpp).
+  Frame frame(const world::Placement& perceived) override;
 
   // --- exec::Intervenable
   world::Placement true_placement() override { return placement_; }
@@ -239,6 +247,7 @@ class SymbolicWorld final : public World, public Intervenable {
 
   // Interventions applied (reported by take_events(), kept in history()).
   SplitMix64 fail_rng_;
+  std::unique_ptr<ThingLayout> layout_;  // for frame()
   std::vector<WorldEvent> pending_, history_;
 };
 

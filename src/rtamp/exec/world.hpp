@@ -12,6 +12,7 @@
 // by observing; take_events() only reports them for the log. A world a
 // simulated person can act on says so (intervenable(), intervenable.hpp); a
 // PersonWorld (person_world.hpp) then drives it — the loop still only observes.
+// A world that can draw itself for pictures says so too (frames(), frame.hpp).
 //
 // Contract (what the loop relies on):
 //  - observe() lists every present thing with its class; a thing the gripper
@@ -49,6 +50,7 @@
 namespace rtamp::exec {
 
 class Intervenable;
+class FrameSource;
 
 // One pick-and-place move as the loop asks for it: pick `thing` (where the
 // plan believes it is: `from`) and place it at location `to`.
@@ -101,6 +103,9 @@ class World {
   // The optional capability to take a person's interventions
   // (intervenable.hpp); null if people act on this world on their own.
   virtual Intervenable* intervenable() { return nullptr; }
+  // The optional capability to draw the scene (frame.hpp); null: pictures
+  // lay things out in the locations the loop perceives.
+  virtual FrameSource* frames() { return nullptr; }
 };
 
 }  // namespace rtamp::exec

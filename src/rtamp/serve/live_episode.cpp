@@ -6,7 +6,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "rtamp/episode/sim_world.hpp"
+#include "rtamp/exec/laid_out_frames.hpp"
 #include "rtamp/serve/frame.hpp"
 #include "rtamp/serve/paced_world.hpp"
 #include "rtamp/serve/scene_message.hpp"
@@ -29,7 +29,7 @@ class LiveEpisode::Observer final : public exec::EpisodeObserver {
   explicit Observer(LiveEpisode& e) : e_(e) {}
 
   void on_perceived(double, const world::Placement& seen, const world::Placement&) override {
-    e_.frames_->perceived(seen);
+    e_.seen_ = seen;
     e_.check_->note(seen);
   }
   void on_tree_change(double t, const exec::ReconfigurationReport&, const exec::PlanTree& tree, bool) override {
@@ -71,13 +71,15 @@ LiveEpisode::LiveEpisode(const world::Scenario& scenario, LiveOptions options)
         return std::make_unique<PacedWorld>(inner, playback_, [this] { service(); }, [this] { after_slice(); },
                                             [this] { return std::exchange(changed_, false); });
       });
-  if (episode::SimWorld* sw = episode_->sim_world())
-    frames_ = std::make_unique<SimFrames>(*sw);
-  else
-    frames_ = std::make_unique<SymbolicFrames>(*episode_->symbolic_world(), episode_->scenario());
+  frames_ = episode_->world().frames();
+  if (!frames_) {
+    laid_out_ = std::make_unique<exec::LaidOutFrames>(episode_->scenario(), episode_->world());
+    frames_ = laid_out_.get();
+  }
+  if (exec::Intervenable* hands = episode_->world().intervenable()) seen_ = hands->true_placement();
   check_ = std::make_unique<InterventionCheck>(episode_->scenario());
   hub_ = std::make_unique<Hub>(hello_fields(episode_->scenario(), episode_->loop().progress().automaton(), "live",
-                                            episode::to_string(options_.episode.world)));
+                                            options_.episode.world));
   log_ = episode_->log();
   if (!log_) {
     own_log_ = std::make_unique<exec::EpisodeLog>();
@@ -188,17 +190,6 @@ void LiveEpisode::handle(const Request& r, Reply reply) {
   playback_.wake();
 }
 
-// What is where now, through the world's intervention capability.
-world::Placement LiveEpisode::present() { return hands().true_placement(); }
-
-exec::WorldEvent LiveEpisode::apply(const world::Intervention& iv) { return hands().apply(iv); }
-
-exec::Intervenable& LiveEpisode::hands() {
-  exec::Intervenable* h = episode_->world().intervenable();
-  if (!h) throw Error("the served world cannot take interventions");
-  return *h;
-}
-
 void LiveEpisode::service() {
   std::deque<Pending> todo;
   {
@@ -206,11 +197,18 @@ void LiveEpisode::service() {
     todo.swap(pending_);
   }
   if (todo.empty()) return;
+  exec::Intervenable* hands = episode_->world().intervenable();
   bool changed = false;
   for (Pending& p : todo) {
+    if (!hands) {
+      p.reply(reply_message(p.request.id, false,
+                            "the " + options_.episode.world + " world takes no interventions from pages "
+                            "(it has no intervention capability: exec/intervenable.hpp)"));
+      continue;
+    }
     world::Intervention iv = p.request.intervention;
     iv.time = episode_->world().time();
-    const world::Placement now = present();
+    const world::Placement now = hands->true_placement();
     check_->note(now);
     using K = world::Intervention::Kind;
     if ((iv.kind == K::Add || iv.kind == K::AddContainer) && iv.subject.empty())
@@ -221,7 +219,7 @@ void LiveEpisode::service() {
     bool ok = error.empty();
     std::string extra;
     if (ok) {
-      const exec::WorldEvent e = apply(iv);
+      const exec::WorldEvent e = hands->apply(iv);
       ok = e.applied;
       changed = changed || ok;
       if (!ok) error = std::string("intervention '") + kind_name(iv.kind) + "' refused by the world: " + e.detail;
@@ -249,7 +247,7 @@ void LiveEpisode::after_slice() {
   // Frame records are for a replay of the log file; without --log (the
   // episode's own in-memory log, whose sink skips them) none is built.
   if (options_.frame_record_period > 0 && !own_log_ && t >= next_frame_record_) {
-    log_->record(t, frame_record(frames_->frame()));
+    log_->record(t, frame_record(frame()));
     next_frame_record_ = t + options_.frame_record_period;
   }
   emit_frame(false);
@@ -262,7 +260,7 @@ void LiveEpisode::emit_frame(bool force) {
   const auto now = Clock::now();
   if (!force && now < next_frame_) return;
   next_frame_ = std::max(next_frame_ + kFrameInterval, now - kFrameInterval);
-  const Frame f = frames_->frame();
+  const Frame f = frame();
   hub_->time(f.t);
   hub_->frame(frame_message(f));
 }

@@ -1,18 +1,19 @@
 // A live served episode (`rtamp serve SCENARIO`, docs/serve.md): the reactive
-// loop (exec::ReactiveLoop, the paper's Algorithm 1) on the MuJoCo world or
-// the symbolic one, run on its own thread, paced to wall time x speed
+// loop (exec::ReactiveLoop, the paper's Algorithm 1) on any registered world
+// (episode/world_registry.hpp), run on its own thread, paced to wall time x speed
 // (PacedWorld, Playback), streamed to pages through the Hub:
 //  - every record of the episode's JSON Lines log, exactly as the log file
 //    holds it (exec::EpisodeLog's sink), as `log` messages;
 //  - the behavior tree after each change and node statuses after ticks that
 //    changed them (`tree`, `status`);
-//  - frames (frame_source.hpp) at most 30 per wall second, and one after each
+//  - frames at most 30 per wall second (drawn by the world, exec/frame.hpp, or
+//    laid out from what the loop perceived, exec/laid_out_frames.hpp), and one after each
 //    applied intervention; the log also gets a `frame` record every
 //    `frame_record_period` s of world time (replays move things with them);
 //  - playback state after each control.
 // Pages' interventions (request.hpp) are queued and applied on the loop's
 // thread between slices of world time, through the world's intervention
-// capability (exec/intervenable.hpp) after InterventionCheck: so
+// capability (exec/intervenable.hpp; a world without it refuses them) after InterventionCheck: so
 // they enter the log as `intervention` records exactly like scripted ones, and
 // the loop reacts to them as to any person's. Each gets one reply: refused
 // (the check's or the world's reason), or applied, with the server-side
@@ -34,7 +35,7 @@
 
 #include "rtamp/episode/episode.hpp"
 #include "rtamp/exec/intervenable.hpp"
-#include "rtamp/serve/frame_source.hpp"
+#include "rtamp/exec/frame.hpp"
 #include "rtamp/serve/hub.hpp"
 #include "rtamp/serve/intervention_check.hpp"
 #include "rtamp/serve/playback.hpp"
@@ -81,9 +82,7 @@ class LiveEpisode final : public RequestHandler {
   void service();           // loop thread: apply queued interventions
   void after_slice();       // loop thread: frames
   void emit_frame(bool force);
-  world::Placement present();  // the things present now, exactly
-  exec::WorldEvent apply(const world::Intervention& iv);
-  exec::Intervenable& hands();  // the world's intervention capability
+  exec::Frame frame() { return frames_->frame(seen_); }
   void publish_state();
 
   // Declared in the order things may refer to each other: the loop (in
@@ -92,7 +91,9 @@ class LiveEpisode final : public RequestHandler {
   Playback playback_;
   std::unique_ptr<Hub> hub_;
   std::unique_ptr<InterventionCheck> check_;
-  std::unique_ptr<FrameSource> frames_;
+  exec::FrameSource* frames_ = nullptr;          // the world's, or laid_out_
+  std::unique_ptr<exec::FrameSource> laid_out_;  // for a world that cannot draw itself
+  world::Placement seen_;                         // what the loop perceived last
   std::unique_ptr<exec::EpisodeLog> own_log_;  // when there is no --log file
   std::unique_ptr<Observer> observer_;
   std::unique_ptr<episode::Episode> episode_;

@@ -44,6 +44,8 @@ class PacedWorld final : public exec::World {
   std::string hand() const override { return inner_.hand(); }
   double distance_travelled() const override { return inner_.distance_travelled(); }
   std::vector<exec::WorldEvent> take_events() override { return inner_.take_events(); }
+  exec::Intervenable* intervenable() override { return inner_.intervenable(); }
+  exec::FrameSource* frames() override { return inner_.frames(); }
 
  private:
   exec::World& inner_;

@@ -152,7 +152,7 @@ std::string Replay::frame_at(double t) {
       p = *records_[i].placement;
       break;
     }
-  layout_ = ThingLayout(scenario_);
+  layout_ = exec::ThingLayout(scenario_);
   return frame_message(layout_.frame(t, p, home_));
 }
 

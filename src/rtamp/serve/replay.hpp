@@ -32,7 +32,7 @@
 #include "rtamp/serve/hub.hpp"
 #include "rtamp/serve/playback.hpp"
 #include "rtamp/serve/request_handler.hpp"
-#include "rtamp/serve/thing_layout.hpp"
+#include "rtamp/exec/thing_layout.hpp"
 #include "rtamp/world/scenario.hpp"
 
 namespace rtamp::serve {
@@ -76,7 +76,7 @@ class Replay final : public RequestHandler {
   double duration_ = 0;
   bool has_frames_ = false;
   world::Vec3 home_{0, 0, 0};
-  ThingLayout layout_;
+  exec::ThingLayout layout_;
   Playback playback_;
   std::unique_ptr<Hub> hub_;
   std::thread thread_;

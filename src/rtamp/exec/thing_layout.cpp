@@ -1,11 +1,11 @@
-#include "rtamp/serve/thing_layout.hpp"
+#include "rtamp/exec/thing_layout.hpp"
 
 #include <algorithm>
 #include <cmath>
 
 #include "rtamp/world/geometry.hpp"
 
-namespace rtamp::serve {
+namespace rtamp::exec {
 
 namespace {
 constexpr double kGap = 0.02;        // m between cells
@@ -126,4 +126,4 @@ Frame ThingLayout::frame(double t, const world::Placement& p, const world::Vec3&
   return f;
 }
 
-}  // namespace rtamp::serve
+}  // namespace rtamp::exec

@@ -1,12 +1,12 @@
 // Where to draw things whose world knows only their locations — the symbolic
-// world and replays of logs without `frame` records (docs/serve.md "Frames"):
+// world, a user's world without frames of its own, and replays of logs
+// without `frame` records (docs/serve.md "Frames"):
 // each thing gets a spot (the centre of its base) inside its location, kept
 // while it stays there. A thing at its initial location keeps its scenario
 // position; a thing that arrives somewhere takes the first free cell of a grid
 // over the location's footprint (contents of a container move with it); a held
 // thing hangs under the hand; a thing at "none" keeps its last spot.
-// frame() is the whole frame of such a world (the symbolic world's, and a
-// replay's without `frame` records): update(), then every thing at its spot.
+// frame() is the whole frame of such a world: update(), then every thing at its spot.
 // Invariant: two things put in the same location by update() never share a
 // grid cell while the location has a free one.
 #pragma once
@@ -15,11 +15,11 @@
 #include <optional>
 #include <string>
 
-#include "rtamp/serve/frame.hpp"
+#include "rtamp/exec/frame.hpp"
 #include "rtamp/world/placement.hpp"
 #include "rtamp/world/scenario.hpp"
 
-namespace rtamp::serve {
+namespace rtamp::exec {
 
 class ThingLayout {
  public:
@@ -50,4 +50,4 @@ class ThingLayout {
   std::map<std::string, world::Vec3> sizes_;  // scenario things
 };
 
-}  // namespace rtamp::serve
+}  // namespace rtamp::exec

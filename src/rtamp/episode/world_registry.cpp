@@ -1,0 +1,57 @@
+#include "rtamp/episode/world_registry.hpp"
+
+#include <utility>
+
+#include "rtamp/episode/sim_world.hpp"
+#include "rtamp/exec/symbolic_world.hpp"
+#include "rtamp/util/error.hpp"
+#include "rtamp/util/format.hpp"
+#include "rtamp/util/named_registry.hpp"
+#include "rtamp/world/suggest.hpp"
+
+namespace rtamp::episode {
+
+namespace {
+
+std::unique_ptr<exec::World> make_mujoco(const world::Scenario& s, std::uint64_t seed, const WorldSettings& w) {
+  if (w.failure_probability != 0)
+    throw Error("failure probability " + format_number(w.failure_probability) +
+                ": the mujoco world's moves fail by physics alone (the option is for the symbolic world)");
+  sim::SessionOptions so;
+  so.seed = seed;
+  return std::make_unique<SimWorld>(s, so);
+}
+
+std::unique_ptr<exec::World> make_symbolic(const world::Scenario& s, std::uint64_t seed, const WorldSettings& w) {
+  exec::SymbolicWorldOptions so;
+  so.seed = seed;
+  so.failure_probability = w.failure_probability;
+  return std::make_unique<exec::SymbolicWorld>(s, so);
+}
+
+NamedRegistry<WorldInfo>& registry() {
+  static NamedRegistry<WorldInfo> r({
+      {"mujoco", "the simulated UR5 in MuJoCo", make_mujoco, exec::PlanningMode::Worker},
+      {"symbolic", "a discrete-event world with no physics (milliseconds an episode)", make_symbolic,
+       exec::PlanningMode::Inline},
+  });
+  return r;
+}
+
+}  // namespace
+
+void register_world(WorldInfo info) {
+  if (info.name.empty() || !info.make) throw Error("a world needs a name and a factory");
+  registry().add(std::move(info));
+}
+
+std::vector<WorldInfo> worlds() { return registry().entries(); }
+
+std::vector<std::string> world_names() { return registry().names(); }
+
+WorldInfo find_world(std::string_view name) {
+  if (auto w = registry().find(name)) return *w;
+  throw Error("unknown world " + world::quoted(name) + world::suggestion(name, world_names()));
+}
+
+}  // namespace rtamp::episode
