@@ -220,7 +220,9 @@ TEST(SearchLimits, AQueryOverItsMemoryLimitStopsWithThatReasonNotNoPlan) {
       EXPECT_EQ(r.reason, plan::NoPlanReason::MemoryLimit) << r.message;
       EXPECT_STREQ(plan::to_string(r.reason), "memory-limit");
       EXPECT_TRUE(r.stats.hit_memory_limit);
-      EXPECT_TRUE(has(r.message, "the search stopped at its memory limit (64 KiB) after ")) << r.message;
+      EXPECT_TRUE(has(r.message, (g == plan::GraphConstruction::Full ? "the full construction" : "the search") +
+                                     std::string(" stopped at its memory limit (64 KiB) after ")))
+          << r.message;
       EXPECT_TRUE(has(r.message, "whether a plan exists is unknown")) << r.message;
       // Checked every 128 expansions (256 in the full construction): a little above the limit at most.
       EXPECT_LT(r.stats.memory_bytes, std::size_t{4} << 20);

@@ -1,7 +1,6 @@
 #include "rtamp/plan/planner.hpp"
 
 #include <algorithm>
-#include <sstream>
 
 #include "rtamp/automata/translate.hpp"
 #include "rtamp/world/change.hpp"
@@ -204,8 +203,10 @@ PlanResult Planner::search(task::System& ts, task::Labeling& lab, bool allow_dia
   }
   res.stats.reused_nodes = before;
   bool hit_node = false, hit_time = false, hit_memory = false;
+  std::uint64_t built = 0;  // nodes the full construction expanded
   if (options_.graph == GraphConstruction::Full) {
     const std::int64_t c0 = steady_now_ns();
+    const std::uint64_t built0 = g->expansions();
     std::function<void(std::int64_t)> tick;
     if (options_.limits.on_progress) {
       std::int64_t next = c0 + options_.limits.progress_interval_ns();
@@ -224,6 +225,7 @@ PlanResult Planner::search(task::System& ts, task::Labeling& lab, bool allow_dia
       else if (deadline && steady_now_ns() > deadline) hit_time = true;
       else hit_memory = true;
     }
+    built = g->expansions() - built0;
     res.stats.construction_seconds = double(steady_now_ns() - c0) * 1e-9;
   }
   LassoResult r;
@@ -306,21 +308,22 @@ PlanResult Planner::search(task::System& ts, task::Labeling& lab, bool allow_dia
     res.stats.seconds = double(steady_now_ns() - t0) * 1e-9;
     return res;
   }
-  // A limit says nothing about whether a plan exists: the message says so.
-  const std::string after = " after " + format_count(res.stats.expanded) + " expansions (" +
-                            format_count(res.stats.graph_nodes) + " graph nodes, " +
+  // A limit says nothing about whether a plan exists: the message says so,
+  // and how far the query got.
+  const bool in_construction = res.stats.expanded == 0 && built > 0;
+  const std::string stopped = in_construction ? "the full construction stopped at its " : "the search stopped at its ";
+  const std::string after = " after " + format_count(in_construction ? built : res.stats.expanded) +
+                            " expansions (" + format_count(res.stats.graph_nodes) + " graph nodes, " +
                             format_bytes(double(res.stats.memory_bytes)) + "); whether a plan exists is unknown";
   if (hit_node)
     return finish(NoPlanReason::NodeLimit,
-                  "the search stopped at its node limit (" + format_count(options_.limits.max_nodes) + " nodes)" + after);
+                  stopped + "node limit (" + format_count(options_.limits.max_nodes) + " nodes)" + after);
   if (hit_memory)
-    return finish(NoPlanReason::MemoryLimit, "the search stopped at its memory limit (" +
-                                                 format_bytes(double(options_.limits.max_memory_bytes)) + ")" + after);
-  if (hit_time) {
-    std::ostringstream o;
-    o << "the search stopped at its time limit (" << options_.limits.time_limit << " s)";
-    return finish(NoPlanReason::TimeLimit, o.str() + after);
-  }
+    return finish(NoPlanReason::MemoryLimit,
+                  stopped + "memory limit (" + format_bytes(double(options_.limits.max_memory_bytes)) + ")" + after);
+  if (hit_time)
+    return finish(NoPlanReason::TimeLimit, stopped + "time limit (" + format_number(options_.limits.time_limit) +
+                                               " s)" + after);
   if (allow_diagnosis) {
     task::System relaxed(scenario_, placement_, hand_, task::System::Options{true});
     task::Labeling rlab(relaxed, ba_.atoms, parse_atom);
