@@ -312,8 +312,9 @@ PlanResult Planner::search(task::System& ts, task::Labeling& lab, bool allow_dia
   // and how far the query got.
   const bool in_construction = res.stats.expanded == 0 && built > 0;
   const std::string stopped = in_construction ? "the full construction stopped at its " : "the search stopped at its ";
-  const std::string after = " after " + format_count(in_construction ? built : res.stats.expanded) +
-                            " expansions (" + format_count(res.stats.graph_nodes) + " graph nodes, " +
+  const std::uint64_t expansions = in_construction ? built : res.stats.expanded;
+  const std::string after = " after " + format_count(expansions) + (expansions == 1 ? " expansion (" : " expansions (") +
+                            format_count(res.stats.graph_nodes) + " graph nodes, " +
                             format_bytes(double(res.stats.memory_bytes)) + "); whether a plan exists is unknown";
   if (hit_node)
     return finish(NoPlanReason::NodeLimit,
