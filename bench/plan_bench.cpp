@@ -298,6 +298,7 @@ void report_partial_vs_full(const std::string& dir, int full_max) {
           plan::PlannerOptions o =
               options(plan::Algorithm::AStar, full ? plan::GraphConstruction::Full : plan::GraphConstruction::Partial);
           o.limits.max_nodes = 200'000'000;
+          o.limits.max_memory_bytes = 0;  // the node and time limits bound these runs
           o.symmetry = sym != 0;
           o.limits.time_limit = 120;
           plan::Planner p(sc, o);
@@ -395,6 +396,7 @@ void report_full_growth(const std::string& dir) {
       o.symmetry = false;
       o.limits.time_limit = 60;
       o.limits.max_nodes = 25'000'000;  // at ~300 B/node the graph stays near 8 GiB
+      o.limits.max_memory_bytes = 0;
       plan::Planner p(random_layout(n, 1), o);
       const plan::PlanResult r = p.plan();
       const auto& st = r.stats;

@@ -3,6 +3,7 @@
 // statistics readably or as one JSON object (documented in docs/cli.md).
 #include <unistd.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <iomanip>
 #include <iostream>
@@ -32,6 +33,7 @@ struct PlanArgs {
   bool no_progress = false;
   std::size_t max_nodes = 20'000'000;
   double time_limit = 60;
+  double max_memory_gib = double(plan::SearchLimits{}.max_memory_bytes) / double(1ull << 30);  // inf: none
 };
 
 nlohmann::json steps_json(plan::Planner& p, const std::vector<plan::Step>& steps) {
@@ -71,7 +73,8 @@ nlohmann::json stats_json(const plan::SearchStats& s) {
           {"construction_seconds", s.construction_seconds},
           {"seconds", s.seconds},
           {"hit_node_limit", s.hit_node_limit},
-          {"hit_time_limit", s.hit_time_limit}};
+          {"hit_time_limit", s.hit_time_limit},
+          {"hit_memory_limit", s.hit_memory_limit}};
 }
 
 std::string fmt(double v, int prec = 4) {
@@ -114,6 +117,7 @@ void print_result(plan::Planner& p, const plan::PlanResult& r, const std::string
       << " B (" << fmt(s.bytes_per_node(), 1) << " B/node)";
   if (s.hit_node_limit) out << "; HIT NODE LIMIT";
   if (s.hit_time_limit) out << "; HIT TIME LIMIT";
+  if (s.hit_memory_limit) out << "; HIT MEMORY LIMIT";
   out << "\n";
 }
 
@@ -159,6 +163,9 @@ rtamp::cli::Registrar reg{
                               "Node limit of each search");
       rtamp::cli::add_real(sub, "--time-limit", a->time_limit, {0, std::numeric_limits<double>::max(), true, true},
                            "Time limit of each search in seconds");
+      rtamp::cli::add_real(sub, "--max-memory", a->max_memory_gib, {0, std::numeric_limits<double>::max(), true, true},
+                           "Memory limit of each search in GiB (the planner's estimate of its graph, search arrays, "
+                           "experience and cost cache)");
       sub.add_flag("--no-progress", a->no_progress,
                    "Do not show the progress line that searches longer than 0.5 s print on a terminal's stderr");
       return [a]() -> int {
@@ -168,6 +175,11 @@ rtamp::cli::Registrar reg{
         opt.cost = a->cost;
         opt.limits.max_nodes = a->max_nodes;
         opt.limits.time_limit = a->time_limit;
+        const double max_bytes = a->max_memory_gib * double(1ull << 30);
+        opt.limits.max_memory_bytes =
+            max_bytes >= double(std::numeric_limits<std::size_t>::max())
+                ? 0  // inf: none
+                : std::max<std::size_t>(1, static_cast<std::size_t>(max_bytes));
         auto progress = std::make_shared<ProgressLine>();
         if (!a->no_progress && ::isatty(STDERR_FILENO))
           opt.limits.on_progress = [progress](const plan::SearchProgress& p) { (*progress)(p); };

@@ -85,7 +85,7 @@ std::shared_ptr<MotionCostModel> builtin_cost_model(const std::string& name, con
 
 PlannerConfig planner_config(const world::Scenario& scenario, const std::string& algorithm, const py::object& cost,
                              const std::string& graph, bool symmetry, bool diagnose_capacity, double time_limit,
-                             std::size_t max_nodes) {
+                             std::size_t max_nodes, std::size_t max_memory_bytes) {
   plan::PlannerOptions o;
   o.algorithm = plan::parse_algorithm(algorithm);
   o.graph = parse_name(plan::graph_constructions(), graph, "graph construction");
@@ -93,6 +93,7 @@ PlannerConfig planner_config(const world::Scenario& scenario, const std::string&
   o.diagnose_capacity = diagnose_capacity;
   o.limits.time_limit = time_limit;
   o.limits.max_nodes = max_nodes;
+  o.limits.max_memory_bytes = max_memory_bytes;
   if (py::isinstance<py::str>(cost)) {
     const std::string name = cost.cast<std::string>();
     o.model = builtin_cost_model(name, scenario);
@@ -171,7 +172,7 @@ void bind_plan(py::module_& m) {
       m, "CostModel",
       "A motion-cost model (the edge weight w of the paper's Section III.B). Subclass it in Python:\n\n"
       "    class Manhattan(rtamp.CostModel):\n"
-      "        def cost(self, q):            # required: >= 0\n"
+      "        def cost(self, q):            # required: >= 0 (inf: the move is impossible)\n"
       "            return sum(abs(a - b) for a, b in zip(q.from_, q.to))\n"
       "        def lower_bound(self, q, to_anywhere):  # optional, default 0 (always admissible)\n"
       "            return 0.0\n"
@@ -181,6 +182,8 @@ void bind_plan(py::module_& m) {
       "            return True\n\n"
       "lower_bound must bound from below the cost of any move sequence that picks the thing at\n"
       "q.from_ and brings it to q.to (consistent, for the A* searches to stay optimal).\n"
+      "The planner checks every value: a NaN or negative cost, or a NaN, infinite or negative\n"
+      "bound, makes plan() raise rtamp.Error naming the model, the move and the value.\n"
       "The planner may call these from a worker thread; each call takes the GIL.")
       .def(py::init<>())
       .def("name", &MotionCostModel::name, "The model's name (default: the class name).")
@@ -230,6 +233,7 @@ void bind_plan(py::module_& m) {
       .def_readonly("seconds", &plan::SearchStats::seconds, "Wall time of the whole query.")
       .def_readonly("hit_node_limit", &plan::SearchStats::hit_node_limit, "The search stopped at its node limit.")
       .def_readonly("hit_time_limit", &plan::SearchStats::hit_time_limit, "The search stopped at its time limit.")
+      .def_readonly("hit_memory_limit", &plan::SearchStats::hit_memory_limit, "The search stopped at its memory limit.")
       .def("__repr__", [](const plan::SearchStats& s) {
         return "<rtamp.SearchStats expanded=" + std::to_string(s.expanded) + " graph_nodes=" +
                std::to_string(s.graph_nodes) + " seconds=" + std::to_string(s.seconds) + ">";
@@ -276,10 +280,10 @@ void bind_plan(py::module_& m) {
                        "A planning result. found: a lasso exists; then prefix (steps to the cycle),\n"
                        "cycle (repeated forever), prefix_cost + cycle_cost = cost, actions (the moves as\n"
                        "ActionTuples for the behavior tree), stats. Otherwise reason ('unsatisfiable',\n"
-                       "'no-accepting-cycle', 'capacity', 'unknown-name', 'node-limit', 'time-limit') and\n"
-                       "message. bool(plan) is plan.found.")
+                       "'no-accepting-cycle', 'capacity', 'unknown-name', 'node-limit', 'time-limit',\n"
+                       "'memory-limit') and message. bool(plan) is plan.found.")
       .def_readonly("found", &PlanView::found, "A lasso plan exists.")
-      .def_readonly("reason", &PlanView::reason, "Why none was found: 'unsatisfiable', 'no-accepting-cycle', 'capacity', 'unknown-name', 'node-limit' or 'time-limit' ('' if found).")
+      .def_readonly("reason", &PlanView::reason, "Why none was found: 'unsatisfiable', 'no-accepting-cycle', 'capacity', 'unknown-name', 'node-limit', 'time-limit' or 'memory-limit' ('' if found).")
       .def_readonly("message", &PlanView::message, "A readable explanation when no plan was found.")
       .def_readonly("prefix", &PlanView::prefix, "The steps from the start to the cycle (list of Step).")
       .def_readonly("cycle", &PlanView::cycle, "The steps repeated forever (list of Step).")
@@ -312,16 +316,21 @@ void bind_plan(py::module_& m) {
                         "    plan2 = p.plan()                    # replan (astar-exp reuses experience)\n\n"
                         "algorithm: 'astar-exp' (default), 'astar', 'dijkstra'. cost: 'euclid' (default),\n"
                         "'region', 'unit', 'ik' or a CostModel instance. graph: 'partial' or 'full'.\n"
-                        "Raises rtamp.Error on a bad task or option.")
+                        "Limits of each query: time_limit (s), max_nodes (product nodes), max_memory_bytes\n"
+                        "(the planner's own estimate of what it holds; default 4 GiB, 0: none).\n"
+                        "Raises rtamp.Error on a bad task or option, and from plan() when a cost model\n"
+                        "returns a NaN or negative cost or a NaN, infinite or negative bound.")
       .def(py::init([](const world::Scenario& s, const std::string& algorithm, const py::object& cost,
                        const std::string& graph, bool symmetry, bool diagnose_capacity, double time_limit,
-                       std::size_t max_nodes) {
-             return std::make_unique<PyPlanner>(
-                 s, planner_config(s, algorithm, cost, graph, symmetry, diagnose_capacity, time_limit, max_nodes));
+                       std::size_t max_nodes, std::size_t max_memory_bytes) {
+             return std::make_unique<PyPlanner>(s, planner_config(s, algorithm, cost, graph, symmetry,
+                                                                  diagnose_capacity, time_limit, max_nodes,
+                                                                  max_memory_bytes));
            }),
            py::arg("scenario"), py::kw_only(), py::arg("algorithm") = "astar-exp", py::arg("cost") = "euclid",
            py::arg("graph") = "partial", py::arg("symmetry") = true, py::arg("diagnose_capacity") = true,
-           py::arg("time_limit") = 60.0, py::arg("max_nodes") = std::size_t{20'000'000})
+           py::arg("time_limit") = 60.0, py::arg("max_nodes") = std::size_t{20'000'000},
+           py::arg("max_memory_bytes") = plan::SearchLimits{}.max_memory_bytes)
       .def("plan", &PyPlanner::plan,
            "The cheapest lasso plan from the current state and automaton states (the GIL is\n"
            "released while it searches).")

@@ -25,7 +25,8 @@ struct PlannerConfig {
 // Options from Python arguments; `cost` is a model name or a CostModel.
 PlannerConfig planner_config(const world::Scenario& scenario, const std::string& algorithm, const py::object& cost,
                              const std::string& graph, bool symmetry, bool diagnose_capacity, double time_limit,
-                             std::size_t max_nodes);
+                             std::size_t max_nodes,
+                             std::size_t max_memory_bytes = plan::SearchLimits{}.max_memory_bytes);
 std::shared_ptr<plan::MotionCostModel> builtin_cost_model(const std::string& name, const world::Scenario& scenario);
 
 class PyPlanner {

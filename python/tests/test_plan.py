@@ -2,6 +2,7 @@
 
 import math
 import threading
+import time
 
 import pytest
 
@@ -181,3 +182,47 @@ def test_names_come_from_the_planners_registry(tray):
     with pytest.raises(rtamp.Error, match="did you mean 'astar'"):
         rtamp.Planner(tray, algorithm="astr")
     assert rtamp.Planner(tray, algorithm="astar").algorithm == "astar"
+
+
+def bad_model(value, where="cost"):
+    """A CostModel whose cost (or lower_bound) returns `value` (euclid's otherwise)."""
+
+    class Bad(PyEuclid):
+        def cost(self, q):
+            return value if where == "cost" else super().cost(q)
+
+        def lower_bound(self, q, to_anywhere):
+            return value if where == "lower_bound" else super().lower_bound(q, to_anywhere)
+
+    return Bad()
+
+
+@pytest.mark.parametrize("value, text", [(-1.0, "-1"), (float("nan"), "nan"), (-math.inf, "-inf")])
+def test_a_bad_cost_is_an_error_naming_the_move_at_once(tray, value, text):
+    start = time.monotonic()
+    with pytest.raises(rtamp.Error, match=rf"motion-cost model 'Bad' returned {text} for move\(\w+, \w+\) "
+                                          r"\(\w+ from \w+, hand at home\): a cost must be >= 0") as e:
+        rtamp.Planner(tray, cost=bad_model(value)).plan()
+    assert isinstance(e.value, ValueError)
+    assert time.monotonic() - start < 5  # at the first bad value, not after the search grew
+
+
+def test_a_bad_lower_bound_is_an_error(tray):
+    with pytest.raises(rtamp.Error, match=r"returned nan as lower_bound for bringing \w+ from \w+ to \w+"):
+        rtamp.Planner(tray, algorithm="astar", cost=bad_model(float("nan"), "lower_bound")).plan()
+
+
+def test_an_infinite_cost_is_a_move_the_model_cannot_do(tray):
+    plan = rtamp.Planner(tray, cost=bad_model(math.inf)).plan()
+    assert not plan and plan.reason == "no-accepting-cycle"
+
+
+def test_the_memory_limit_stops_a_query_with_its_own_reason():
+    # about 10,000 product nodes without symmetry reduction, 5 MB
+    s = rtamp.generate_scenario(regions=5, objects=5, layout="random", seed=3, task="F all_in_r2 & F all_in_r3",
+                                propositions=[("all_in_r3", "all object in r3")])
+    plan = rtamp.Planner(s, symmetry=False, max_memory_bytes=64 << 10).plan()
+    assert not plan and plan.reason == "memory-limit" and plan.stats.hit_memory_limit
+    assert "stopped at its memory limit (64 KiB)" in plan.message
+    assert "whether a plan exists is unknown" in plan.message
+    assert rtamp.Planner(s, symmetry=False, max_memory_bytes=0).plan()

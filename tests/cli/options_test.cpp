@@ -35,6 +35,10 @@ TEST(CliOptions, NumbersOutsideTheirRangesAreRefused) {
       {"plan 3-block --max-nodes 0", "--max-nodes"},
       {"plan 3-block --max-nodes 1.5", "--max-nodes"},
       {"plan 3-block --max-nodes 99999999999999999999999", "--max-nodes"},
+      {"plan 3-block --max-memory 0", "--max-memory"},
+      {"plan 3-block --max-memory -1", "--max-memory"},
+      {"plan 3-block --max-memory nan", "--max-memory"},
+      {"plan 3-block --max-memory 4GiB", "--max-memory"},
       {"run 3-block --world symbolic --max-time nan", "--max-time"},
       {"run 3-block --world symbolic --max-time -5", "--max-time"},
       {"run 3-block --world symbolic --max-time 0", "--max-time"},
@@ -69,6 +73,18 @@ TEST(CliOptions, InfiniteAndHugeTimeLimitsMeanNoLimit) {
     EXPECT_EQ(j["plans"][0]["found"], true) << limit;
     EXPECT_EQ(j["plans"][0]["stats"]["hit_time_limit"], false) << limit;
   }
+}
+
+// --max-memory is in GiB; a query over it stops with its own reason, inf is no limit.
+TEST(CliOptions, TheMemoryLimitStopsAQueryWithItsOwnReason) {
+  const Result r = run("plan 3-block-tray --graph full --max-memory 1e-6 --json");  // about 1 KiB
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["plans"][0]["found"], false) << r.out;
+  EXPECT_EQ(j["plans"][0]["reason"], "memory-limit") << r.out;
+  EXPECT_EQ(j["plans"][0]["stats"]["hit_memory_limit"], true) << r.out;
+  const Result unlimited = run("plan 3-block-tray --graph full --max-memory inf --json");
+  ASSERT_EQ(unlimited.rc, 0) << unlimited.err;
+  EXPECT_EQ(nlohmann::json::parse(unlimited.out)["plans"][0]["found"], true);
 }
 
 TEST(CliOptions, TheLargestSeedIsAccepted) {

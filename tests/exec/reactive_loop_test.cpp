@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <limits>
 #include <utility>
@@ -367,6 +368,48 @@ TEST(ReactiveLoop, WorkerPlanningStartsAsSoonAsThePlanIsIn) {
 }
 
 // ---- failures ----
+
+// A cost model that gives euclid's costs until `bad` is set, then -1.
+struct GoesBad : plan::MotionCostModel {
+  plan::EuclidCost euclid;
+  std::atomic<bool> bad{false};
+  std::string name() const override { return "goes-bad"; }
+  double cost(const plan::MotionQuery& q) const override { return bad ? -1.0 : euclid.cost(q); }
+  double lower_bound(const plan::MotionQuery& q, bool anywhere) const override {
+    return euclid.lower_bound(q, anywhere);
+  }
+  unsigned depends() const override { return euclid.depends(); }
+  bool expensive() const override { return false; }
+};
+
+// The model goes bad once the first plan is in.
+struct SpoilAfterFirstPlan : EpisodeObserver {
+  GoesBad* model = nullptr;
+  void on_plan(double, const PlanEvent&) override { model->bad = true; }
+};
+
+// A cost model's bad value ends the episode with an error naming the model
+// and the edge, for the first plan and for a replan, planned inline or on the
+// worker thread.
+TEST(ReactiveLoop, ACostModelsBadValueEndsTheEpisodeWithAnErrorNamingIt) {
+  const world::Scenario s = scene("F G all_in_r2", 2);
+  for (const PlanningMode mode : {PlanningMode::Inline, PlanningMode::Worker})
+    for (const bool first : {true, false}) {
+      SCOPED_TRACE(std::string(mode == PlanningMode::Worker ? "worker" : "inline") + (first ? " first" : " replan"));
+      auto model = std::make_shared<GoesBad>();
+      model->bad = first;
+      LoopOptions o = inline_options();
+      o.planning = mode;
+      o.planner.model = model;
+      Scripted e(s, {intervention(world::Intervention::Kind::AddContainer, 1, "t9", "r3", "tray")}, o);
+      SpoilAfterFirstPlan spoil;
+      spoil.model = model.get();
+      e.loop.add_observer(spoil);
+      const EpisodeMetrics& m = e.loop.run();
+      EXPECT_EQ(m.end, EndReason::Error) << m.reason;
+      EXPECT_NE(m.reason.find("motion-cost model 'goes-bad' returned -1 for move("), std::string::npos) << m.reason;
+    }
+}
 
 // A patrol lap whose move always fails: the same move from the same state is
 // tried max_failures_per_move times, whatever succeeds in between, then the

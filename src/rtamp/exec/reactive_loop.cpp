@@ -192,7 +192,10 @@ void ReactiveLoop::finish(EndReason why, std::string reason, bool success) {
   metrics_.success = success;
   metrics_.reason = std::move(reason);
   if (success) metrics_.completion_time = world_.time();
-  wait_for_worker();
+  try {
+    wait_for_worker();
+  } catch (const std::exception&) {  // the episode ends for `why` already
+  }
   pending_.reset();
   try {
     tree_->tree().halt();  // stop a move still running (observers see it before the end)
@@ -215,8 +218,16 @@ void ReactiveLoop::finish(EndReason why, std::string reason, bool success) {
   for (auto* o : observers_) o->on_end(world_.time(), metrics_, last);
 }
 
+// A planner exception on the worker (e.g. a cost model's bad value) is
+// rethrown here with the worker forgotten: the episode ends with its error.
 void ReactiveLoop::wait_for_worker() {
-  if (pending_ && !pending_->result) pending_->result = pending_->future.get();
+  if (!pending_ || pending_->result) return;
+  try {
+    pending_->result = pending_->future.get();
+  } catch (...) {
+    pending_.reset();
+    throw;
+  }
 }
 
 void ReactiveLoop::begin() {
@@ -473,7 +484,7 @@ void ReactiveLoop::advance() {
     // run further ahead of the request than the wall time the worker has had.
     const double ahead = (now + dt - pending_->requested_at) - seconds_since(pending_->wall_start);
     const auto wait = std::chrono::duration<double>(std::max(0.0, ahead));
-    if (pending_->future.wait_for(wait) == std::future_status::ready) pending_->result = pending_->future.get();
+    if (pending_->future.wait_for(wait) == std::future_status::ready) wait_for_worker();
   }
   if (dt > 0) world_.advance(dt);
   const double after = world_.time();

@@ -2,11 +2,25 @@
 
 #include <algorithm>
 
+#include "rtamp/plan/cost_check.hpp"
+
 namespace rtamp::plan {
 
 namespace {
 
 using Kind = world::PropExpr::Kind;
+
+// The model's carry_bound between regions a and b (points pa, pb), checked.
+double checked_carry_bound(const MotionCostModel& model, const task::System& ts, unsigned a, unsigned b,
+                           const world::Vec3& pa, const world::Vec3& pb) {
+  const double d = model.carry_bound(pa, pb);
+  if (!valid_bound(d)) [[unlikely]]
+    throw_bad_bound(model, "carry_bound from " + ts.location_name(a) + " to " + ts.location_name(b), d);
+  return d;
+}
+double checked_carry_bound(const MotionCostModel& model, const task::System& ts, unsigned a, unsigned b) {
+  return checked_carry_bound(model, ts, a, b, ts.region_center(a), ts.region_center(b));
+}
 
 // Records in `at` the locations that proposition node `node`, wanted `want`,
 // forces (see the header); false if it forces a thing to two places (the
@@ -100,8 +114,7 @@ ChainBound::ChainBound(const task::System& ts, const task::Labeling& lab, const 
       for (unsigned t = 0; t < ts.num_things(); ++t) {
         const int a = forced[i][t], b = forced[j][t];
         if (a >= 0 && b >= 0 && a != b)
-          sum += model.carry_bound(ts.region_center(static_cast<unsigned>(a)),
-                                   ts.region_center(static_cast<unsigned>(b)));
+          sum += checked_carry_bound(model, ts, static_cast<unsigned>(a), static_cast<unsigned>(b));
       }
       d_[std::size_t{i} * n_forcing_ + j] = sum;
       positive = positive || sum > 0;
@@ -229,8 +242,8 @@ double ChainBound::cycle_bound_at(const task::State& s, std::uint32_t q) const {
       const auto a = static_cast<int>(ts_->location(s, t));
       if (b < 0 || a == b) continue;
       const auto pa = ts_->region_center(static_cast<unsigned>(a)), pb = ts_->region_center(static_cast<unsigned>(b));
-      to[c] += model_->carry_bound(pa, pb);
-      back[c] += model_->carry_bound(pb, pa);
+      to[c] += checked_carry_bound(*model_, *ts_, static_cast<unsigned>(a), static_cast<unsigned>(b), pa, pb);
+      back[c] += checked_carry_bound(*model_, *ts_, static_cast<unsigned>(b), static_cast<unsigned>(a), pb, pa);
     }
   // Dijkstra over (automaton state, last forcing guard or F = "s itself", accepting seen).
   const std::uint32_t n = n_states_ * (F + 1) * 2;

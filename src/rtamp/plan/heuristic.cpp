@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "rtamp/plan/cost_check.hpp"
+
 namespace rtamp::plan {
 
 using Kind = world::PropExpr::Kind;
@@ -126,7 +128,10 @@ double GuardHeuristic::bound_in(const task::State& s, unsigned thing, int loc) {
   q.from = ts_->thing_point(s, thing);
   const bool anywhere = ts_->is_container_location(static_cast<unsigned>(loc));
   if (!anywhere) q.to = ts_->region_center(static_cast<unsigned>(loc));
-  return model_->lower_bound(q, anywhere);
+  const double b = model_->lower_bound(q, anywhere);
+  if (!valid_bound(b)) [[unlikely]]
+    throw_bad_lower_bound(*model_, *ts_, s, thing, anywhere ? -1 : loc, b);
+  return b;
 }
 
 double GuardHeuristic::bound_out(const task::State& s, unsigned thing) {
@@ -135,10 +140,14 @@ double GuardHeuristic::bound_out(const task::State& s, unsigned thing) {
   q.container = ts_->is_container(thing);
   q.hand = hand_;
   q.from = ts_->thing_point(s, thing);
-  return model_->lower_bound(q, true);
+  const double b = model_->lower_bound(q, true);
+  if (!valid_bound(b)) [[unlikely]]
+    throw_bad_lower_bound(*model_, *ts_, s, thing, -1, b);
+  return b;
 }
 
-double GuardHeuristic::transport(std::size_t m, int loc, bool into) {
+double GuardHeuristic::transport(std::size_t m, int loc, bool into, const task::State& s,
+                                 const std::vector<unsigned>& members) {
   const auto& pts = points_[depth_];
   if (m == 0) return 0;
   if (pts.size() < m) return kInf;
@@ -154,7 +163,22 @@ double GuardHeuristic::transport(std::size_t m, int loc, bool into) {
   }
   t.one_at_a_time = ts_->num_containers() == 0;
   t.scratch = &scratch_[depth_];
-  return model_->transport_bound(t);
+  const double b = model_->transport_bound(t);
+  if (!valid_bound(b)) [[unlikely]] {
+    // The default transport_bound is made of lower_bound values: name the thing if one of them is bad.
+    for (unsigned th : members) {
+      if (into && (ts_->location(s, th) == static_cast<std::uint32_t>(loc) ||
+                   (ts_->is_container(th) && ts_->is_container_location(static_cast<unsigned>(loc)))))
+        continue;
+      if (!into && ts_->location(s, th) != static_cast<std::uint32_t>(loc)) continue;
+      (void)(into ? bound_in(s, th, loc) : bound_out(s, th));
+    }
+    throw_bad_bound(*model_,
+                    "transport_bound for " + std::to_string(m) + " of " + std::to_string(pts.size()) + " things " +
+                        (into ? "into " : "out of ") + ts_->location_name(static_cast<unsigned>(loc)),
+                    b);
+  }
+  return b;
 }
 
 double GuardHeuristic::literal_bound(const task::State& s, std::uint32_t id, bool want) {
@@ -216,13 +240,13 @@ double GuardHeuristic::literal_bound(const task::State& s, std::uint32_t id, boo
         pts.clear();
         for (unsigned t : members)
           if (ts_->location(s, t) != loc && !(ts_->is_container(t) && loc_is_container)) pts.push_back(ts_->thing_point(s, t));
-        best = std::min(best, transport(static_cast<std::size_t>(up), n.loc, true));
+        best = std::min(best, transport(static_cast<std::size_t>(up), n.loc, true, s, members));
       }
       if (down > 0) {
         pts.clear();
         for (unsigned t : members)
           if (ts_->location(s, t) == loc) pts.push_back(ts_->thing_point(s, t));
-        best = std::min(best, transport(static_cast<std::size_t>(down), n.loc, false));
+        best = std::min(best, transport(static_cast<std::size_t>(down), n.loc, false, s, members));
       }
       return best;
     }
@@ -264,7 +288,10 @@ double state_distance_bound(const task::System& ts, const MotionCostModel& model
     q.from = ts.thing_point(s, t);
     const bool anywhere = ts.is_container_location(want);
     if (!anywhere) q.to = ts.region_center(want);
-    best = std::max(best, model.lower_bound(q, anywhere));
+    const double b = model.lower_bound(q, anywhere);
+    if (!valid_bound(b)) [[unlikely]]
+      throw_bad_lower_bound(model, ts, s, t, anywhere ? -1 : static_cast<int>(want), b);
+    best = std::max(best, b);
   }
   return best;
 }

@@ -95,8 +95,9 @@ class GuardHeuristic : public Heuristic {
   double bound_in(const task::State& s, unsigned thing, int loc);  // thing must end up directly in loc
   double bound_out(const task::State& s, unsigned thing);         // thing must leave its location
   // Bound for m of the candidate things (current points in points_[depth_]) to be moved into
-  // `loc` (into = true) or out of their location (into = false).
-  double transport(std::size_t m, int loc, bool into);
+  // `loc` (into = true) or out of their location (into = false). `s` and `members` (the
+  // class the candidates were taken from) only name a thing in the error for a bad value.
+  double transport(std::size_t m, int loc, bool into, const task::State& s, const std::vector<unsigned>& members);
 
   const task::System* ts_;
   const task::Labeling* lab_;

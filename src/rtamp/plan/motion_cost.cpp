@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <limits>
 
+#include "rtamp/plan/cost_check.hpp"
+
 namespace rtamp::plan {
 
 MotionQuery MotionCostModel::query(const task::System& ts, const task::State& s, const task::Action& a) {
@@ -41,7 +43,10 @@ double MotionCostModel::transport_bound(const TransportQuery& t) const {
     q.hand = t.hand;
     q.from = t.from[i];
     q.to = t.to;
-    v.push_back(lower_bound(q, !t.to_known));
+    const double b = lower_bound(q, !t.to_known);
+    if (!valid_bound(b)) [[unlikely]]
+      return b;  // the caller's check reports it
+    v.push_back(b);
   }
   return kth_smallest(v, t.m);
 }

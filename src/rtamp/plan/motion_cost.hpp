@@ -92,7 +92,10 @@ class MotionCostModel {
  public:
   virtual ~MotionCostModel() = default;
   virtual std::string name() const = 0;
-  // Cost of moving q.thing from q.from to q.to with the hand at q.hand; >= 0.
+  // Cost of moving q.thing from q.from to q.to with the hand at q.hand: >= 0,
+  // or +infinity for a move the model cannot do (it gets no product edge). NaN
+  // or negative is an error (plan/cost_check.hpp; so is a bound below that is
+  // NaN, infinite or negative).
   virtual double cost(const MotionQuery& q) const = 0;
   // See the header comment. `to_anywhere`: the destination is not known.
   virtual double lower_bound(const MotionQuery& q, bool to_anywhere) const = 0;

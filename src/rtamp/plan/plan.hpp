@@ -44,6 +44,7 @@ enum class NoPlanReason {
   UnknownName,       // the task uses an atom that is no proposition of the scenario
   NodeLimit,         // the search hit its node limit first
   TimeLimit,         // the search hit its time limit first
+  MemoryLimit,       // the search hit its memory limit first
 };
 const char* to_string(NoPlanReason r);
 
@@ -64,6 +65,7 @@ struct SearchStats {
   double seconds = 0;                 // wall time of the whole query
   bool hit_node_limit = false;
   bool hit_time_limit = false;
+  bool hit_memory_limit = false;
   double bytes_per_node() const { return graph_nodes ? double(memory_bytes) / double(graph_nodes) : 0; }
 };
 

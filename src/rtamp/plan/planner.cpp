@@ -1,13 +1,13 @@
 #include "rtamp/plan/planner.hpp"
 
 #include <algorithm>
-#include <sstream>
 
 #include "rtamp/automata/translate.hpp"
 #include "rtamp/world/change.hpp"
 #include "rtamp/task/validate.hpp"
 #include "rtamp/ltl/parser.hpp"
 #include "rtamp/util/error.hpp"
+#include "rtamp/util/format.hpp"
 #include "rtamp/world/geometry.hpp"
 #include "rtamp/world/propositions.hpp"
 
@@ -163,9 +163,18 @@ PlanResult Planner::search(task::System& ts, task::Labeling& lab, bool allow_dia
   LassoSearch* ls = nullptr;
   MotionCostCache& cache = experience_.costs();
   if (exp) {
+    // A kept graph that holds half the memory limit is dropped (experience
+    // only speeds queries up), so that it cannot grow until every query stops.
+    const std::size_t max_bytes = options_.limits.max_memory_bytes;
+    if (graph_ && max_bytes && 2 * (graph_->memory_bytes() + experience_.memory_bytes()) > max_bytes) {
+      exp_heuristic_.reset();
+      graph_.reset();
+      experience_.forget_graph();
+    }
     if (!graph_) {
-      graph_ = std::make_unique<ProductGraph>(ts, lab, ba_, *model_, model_->expensive() ? &cache : nullptr);
-      exp_heuristic_ = algorithm_info(options_.algorithm).make_heuristic(*graph_, experience_);
+      auto graph = std::make_unique<ProductGraph>(ts, lab, ba_, *model_, model_->expensive() ? &cache : nullptr);
+      exp_heuristic_ = algorithm_info(options_.algorithm).make_heuristic(*graph, experience_);  // may throw
+      graph_ = std::move(graph);
     }
     g = graph_.get();
     x = &experience_;
@@ -193,9 +202,11 @@ PlanResult Planner::search(task::System& ts, task::Labeling& lab, bool allow_dia
                       "} can the automaton still reach an accepting cycle");
   }
   res.stats.reused_nodes = before;
-  bool hit_node = false, hit_time = false;
+  bool hit_node = false, hit_time = false, hit_memory = false;
+  std::uint64_t built = 0;  // nodes the full construction expanded
   if (options_.graph == GraphConstruction::Full) {
     const std::int64_t c0 = steady_now_ns();
+    const std::uint64_t built0 = g->expansions();
     std::function<void(std::int64_t)> tick;
     if (options_.limits.on_progress) {
       std::int64_t next = c0 + options_.limits.progress_interval_ns();
@@ -209,15 +220,17 @@ PlanResult Planner::search(task::System& ts, task::Labeling& lab, bool allow_dia
         options_.limits.on_progress(p);
       };
     }
-    if (!g->expand_all(starts, options_.limits.max_nodes, deadline, tick)) {
+    if (!g->expand_all(starts, options_.limits.max_nodes, deadline, tick, options_.limits.max_memory_bytes)) {
       if (g->size() >= options_.limits.max_nodes) hit_node = true;
-      else hit_time = true;
+      else if (deadline && steady_now_ns() > deadline) hit_time = true;
+      else hit_memory = true;
     }
+    built = g->expansions() - built0;
     res.stats.construction_seconds = double(steady_now_ns() - c0) * 1e-9;
   }
   LassoResult r;
   const std::uint64_t exp0 = g->expansions();
-  if (!hit_node && !hit_time) {
+  if (!hit_node && !hit_time && !hit_memory) {
     std::unique_ptr<Heuristic> h;
     Heuristic* hp = nullptr;
     if (exp) {
@@ -238,6 +251,7 @@ PlanResult Planner::search(task::System& ts, task::Labeling& lab, bool allow_dia
     r = ls->run(*g, *x, starts, *hp, astar, exp, limits, deadline, res.stats);
     hit_node = r.hit_node_limit;
     hit_time = r.hit_time_limit;
+    hit_memory = r.hit_memory_limit;
   }
   res.stats.successor_generations = g->expansions() - exp0;
   res.stats.generated = g->size() - before;
@@ -245,6 +259,7 @@ PlanResult Planner::search(task::System& ts, task::Labeling& lab, bool allow_dia
   res.stats.graph_edges = g->num_edges();
   res.stats.hit_node_limit = hit_node;
   res.stats.hit_time_limit = hit_time;
+  res.stats.hit_memory_limit = hit_memory;
   if (exp && model_->expensive()) {
     res.stats.cache_used = true;
     res.stats.cache_hits = cache.hits();
@@ -293,14 +308,23 @@ PlanResult Planner::search(task::System& ts, task::Labeling& lab, bool allow_dia
     res.stats.seconds = double(steady_now_ns() - t0) * 1e-9;
     return res;
   }
+  // A limit says nothing about whether a plan exists: the message says so,
+  // and how far the query got.
+  const bool in_construction = res.stats.expanded == 0 && built > 0;
+  const std::string stopped = in_construction ? "the full construction stopped at its " : "the search stopped at its ";
+  const std::uint64_t expansions = in_construction ? built : res.stats.expanded;
+  const std::string after = " after " + format_count(expansions) + (expansions == 1 ? " expansion (" : " expansions (") +
+                            format_count(res.stats.graph_nodes) + " graph nodes, " +
+                            format_bytes(double(res.stats.memory_bytes)) + "); whether a plan exists is unknown";
   if (hit_node)
     return finish(NoPlanReason::NodeLimit,
-                  "the search stopped at its node limit (" + std::to_string(options_.limits.max_nodes) + " nodes)");
-  if (hit_time) {
-    std::ostringstream o;
-    o << "the search stopped at its time limit (" << options_.limits.time_limit << " s)";
-    return finish(NoPlanReason::TimeLimit, o.str());
-  }
+                  stopped + "node limit (" + format_count(options_.limits.max_nodes) + " nodes)" + after);
+  if (hit_memory)
+    return finish(NoPlanReason::MemoryLimit,
+                  stopped + "memory limit (" + format_bytes(double(options_.limits.max_memory_bytes)) + ")" + after);
+  if (hit_time)
+    return finish(NoPlanReason::TimeLimit, stopped + "time limit (" + format_number(options_.limits.time_limit) +
+                                               " s)" + after);
   if (allow_diagnosis) {
     task::System relaxed(scenario_, placement_, hand_, task::System::Options{true});
     task::Labeling rlab(relaxed, ba_.atoms, parse_atom);
@@ -308,8 +332,14 @@ PlanResult Planner::search(task::System& ts, task::Labeling& lab, bool allow_dia
     PlannerOptions saved = options_;
     options_.algorithm = Algorithm::AStar;
     options_.graph = GraphConstruction::Partial;
-    PlanResult rr = search(relaxed, rlab, false);
-    options_ = saved;
+    PlanResult rr;
+    try {
+      rr = search(relaxed, rlab, false);
+    } catch (...) {  // e.g. a cost model's bad value: the options stay the user's
+      options_ = std::move(saved);
+      throw;
+    }
+    options_ = std::move(saved);
     if (rr.found)
       return finish(NoPlanReason::Capacity,
                     "no plan within the capacities of the locations (there is one if capacities are ignored)");
@@ -327,6 +357,7 @@ const char* to_string(NoPlanReason r) {
     case NoPlanReason::UnknownName: return "unknown-name";
     case NoPlanReason::NodeLimit: return "node-limit";
     case NoPlanReason::TimeLimit: return "time-limit";
+    case NoPlanReason::MemoryLimit: return "memory-limit";
   }
   return "?";
 }

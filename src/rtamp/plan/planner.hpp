@@ -21,8 +21,10 @@
 // returns the cheapest lasso from any of them.
 // Algorithms dijkstra and astar plan cold every time (new graph, no cache);
 // astar-exp keeps and reuses all experience.
-// Errors a user can cause (unknown names in a change, a bad task) are
-// rtamp::Error; a task that cannot be achieved is a PlanResult with a reason.
+// Errors a user can cause (unknown names in a change, a bad task, a cost
+// model's NaN or negative value: plan/cost_check.hpp) are rtamp::Error; a task
+// that cannot be achieved, or a query stopped by a limit (SearchLimits), is a
+// PlanResult with a reason.
 #pragma once
 
 #include <memory>

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <chrono>
 
+#include "rtamp/plan/cost_check.hpp"
+
 namespace rtamp::plan {
 
 namespace {
@@ -122,9 +124,12 @@ void ProductGraph::expand(NodeId n) {
     const std::uint32_t stay = task::Action::stay().packed();
     for (std::uint32_t q2 : succ_q_) edges_.push_back({find_or_add(s, q2), stay, 0.0});
     ts_->for_each_move(s, [&](const task::Action& a) {
-      const task::State s2 = ts_->canonical_successor(s, a);
       const MotionQuery mq = MotionCostModel::query(*ts_, s, a);
       const double c = cache_ ? cache_->lookup(mq, *model_) : model_->cost(mq);
+      if (!valid_cost(c)) [[unlikely]]
+        throw_bad_cost(*model_, *ts_, s, a, c);
+      if (c == kInf) return;  // the model cannot do this move
+      const task::State s2 = ts_->canonical_successor(s, a);
       for (std::uint32_t q2 : succ_q_) edges_.push_back({find_or_add(s2, q2), a.packed(), c});
     });
   }
@@ -133,12 +138,12 @@ void ProductGraph::expand(NodeId n) {
 }
 
 bool ProductGraph::expand_all(NodeId from, std::size_t max_nodes, std::int64_t deadline_ns,
-                              const std::function<void(std::int64_t now_ns)>& tick) {
-  return expand_all(std::vector<NodeId>{from}, max_nodes, deadline_ns, tick);
+                              const std::function<void(std::int64_t now_ns)>& tick, std::size_t max_bytes) {
+  return expand_all(std::vector<NodeId>{from}, max_nodes, deadline_ns, tick, max_bytes);
 }
 
 bool ProductGraph::expand_all(const std::vector<NodeId>& from, std::size_t max_nodes, std::int64_t deadline_ns,
-                              const std::function<void(std::int64_t now_ns)>& tick) {
+                              const std::function<void(std::int64_t now_ns)>& tick, std::size_t max_bytes) {
   std::vector<NodeId> queue;
   std::vector<bool> queued;
   queued.resize(size(), false);
@@ -159,7 +164,9 @@ bool ProductGraph::expand_all(const std::vector<NodeId>& from, std::size_t max_n
       }
     }
     if (size() >= max_nodes) return false;
-    if ((deadline_ns || tick) && (head & 255) == 0) {
+    if ((head & 255) != 0) continue;
+    if (max_bytes && memory_bytes() + queue.capacity() * sizeof(NodeId) > max_bytes) return false;
+    if (deadline_ns || tick) {
       const std::int64_t now = now_ns();
       if (deadline_ns && now > deadline_ns) return false;
       if (tick) tick(now);

@@ -5,7 +5,10 @@
 // first time it is expanded: (s, q) -> (δ_t(s, a), q') for every enabled
 // action a (stay included) and every BA edge q -> q' whose guard holds in
 // L(s) (the label of the source state, as in Definition 3). Edge weight: the
-// motion cost of a in s (0 for stay), from the model or the motion-cost cache.
+// motion cost of a in s (0 for stay), from the model or the motion-cost cache,
+// checked as it is taken (plan/cost_check.hpp: NaN or negative throws
+// rtamp::Error naming the edge; a move the model prices at +infinity, one it
+// cannot do, gets no edge).
 //
 // Storage is flat: states as `words` uint64 per node in one array, the BA
 // state, the edge range and the label per node in parallel arrays, edges in
@@ -79,14 +82,15 @@ class ProductGraph {
   automata::Letter label(NodeId n) const { return labels_[n]; }  // valid once expanded
 
   // Full construction: expands every node reachable from `from`. Returns false
-  // if it stopped because size() reached max_nodes or the deadline passed
+  // if it stopped because size() reached max_nodes, memory_bytes() passed
+  // max_bytes (checked every 256 expansions; 0 = none) or the deadline passed
   // (deadline_ns: steady_clock nanoseconds; 0 = none). `tick`, if given, is
   // called every 256 expansions with the current time (for progress reports).
   bool expand_all(NodeId from, std::size_t max_nodes, std::int64_t deadline_ns,
-                  const std::function<void(std::int64_t now_ns)>& tick = {});
+                  const std::function<void(std::int64_t now_ns)>& tick = {}, std::size_t max_bytes = 0);
   // From several nodes (kNoNode entries are skipped).
   bool expand_all(const std::vector<NodeId>& from, std::size_t max_nodes, std::int64_t deadline_ns,
-                  const std::function<void(std::int64_t now_ns)>& tick = {});
+                  const std::function<void(std::int64_t now_ns)>& tick = {}, std::size_t max_bytes = 0);
 
   std::uint64_t expansions() const { return expansions_; }
   std::size_t num_edges() const { return edges_.size(); }

@@ -110,7 +110,13 @@ bool LassoSearch::out_of_budget(const ProductGraph& g, const SearchLimits& limit
     r.hit_node_limit = true;
     return true;
   }
-  if ((deadline_ns || limits.on_progress) && (++ticks_ & 127) == 0) {
+  if ((++ticks_ & 127) != 0) return false;
+  if (limits.max_memory_bytes &&
+      g.memory_bytes() + x_->memory_bytes() + x_->costs().bytes() + memory_bytes() > limits.max_memory_bytes) {
+    r.hit_memory_limit = true;
+    return true;
+  }
+  if (deadline_ns || limits.on_progress) {
     const std::int64_t now = steady_now_ns();
     if (deadline_ns && now > deadline_ns) {
       r.hit_time_limit = true;
@@ -378,7 +384,7 @@ LassoResult LassoSearch::run(ProductGraph& g, Experience& experience, const std:
       best_solved = false;
       best_cycle = c;
     }
-    return !(r.hit_node_limit || r.hit_time_limit);
+    return !r.stopped();
   };
   auto cand_less = [](const Item& a, const Item& b) { return heap_less(a, b); };
   bool complete = true;
@@ -503,6 +509,7 @@ LassoResult LassoSearch::run(ProductGraph& g, Experience& experience, const std:
       LassoResult scratch;
       SearchLimits unlimited;
       unlimited.max_nodes = ~std::size_t{0};
+      unlimited.max_memory_bytes = 0;
       const Cost c = cycle(g, acc, {best_cycle.c + 1e-7 * (1 + best_cycle.c), kManyMoves}, cycle_h, unlimited, 0,
                            stats, scratch);
       x_->set_cycle(acc, saved);
@@ -517,7 +524,7 @@ LassoResult LassoSearch::run(ProductGraph& g, Experience& experience, const std:
       }
     }
   }
-  if (learn && complete && !r.hit_node_limit && !r.hit_time_limit) {
+  if (learn && complete && !r.stopped()) {
     const double total = r.found ? r.prefix_cost + r.cycle_cost : kInf;
     for (NodeId m : closed_list_)
       if (!x_->solved(m)) x_->learn(m, total - S.g[m]);

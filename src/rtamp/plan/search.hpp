@@ -112,9 +112,15 @@ struct SearchProgress {
   double seconds = 0;               // since the query started
 };
 
+// When a query stops without an answer (docs/planning.md "Limits"). The
+// memory held is estimated from the planner's own tables, never asked of the
+// OS: the product graph, the search arrays and heaps, the experience and the
+// motion-cost cache (the figure SearchStats::memory_bytes reports), checked
+// every 128 expansions, so a query may end a little above its limit.
 struct SearchLimits {
   std::size_t max_nodes = 20'000'000;  // product nodes in the graph
   double time_limit = 60;              // seconds; <= 0, NaN or infinite: none
+  std::size_t max_memory_bytes = std::size_t{4} << 30;  // 4 GiB; 0: none
   // Called about every `progress_interval` seconds while a query runs (never
   // if it ends sooner), from the planning thread; it must not use the planner.
   std::function<void(const SearchProgress&)> on_progress;
@@ -124,7 +130,8 @@ struct SearchLimits {
 
 struct LassoResult {
   bool found = false;
-  bool hit_node_limit = false, hit_time_limit = false;
+  bool hit_node_limit = false, hit_time_limit = false, hit_memory_limit = false;
+  bool stopped() const { return hit_node_limit || hit_time_limit || hit_memory_limit; }
   NodeId start = kNoNode;      // the start node the prefix leaves from
   NodeId cycle_start = kNoNode;  // J: where the prefix ends and the cycle begins and ends
   std::vector<std::uint32_t> prefix_edges, cycle_edges;  // edge indices in the graph
@@ -207,7 +214,8 @@ class LassoSearch {
   int on_accepting_cycle(ProductGraph& g, NodeId n, const SearchLimits& limits, std::int64_t deadline_ns,
                          SearchStats& stats, LassoResult& r);
   void drop_loops(const ProductGraph& g, NodeId from, std::vector<std::uint32_t>& edges);
-  // Node and time limits; reports progress. Checks the clock every 128 calls.
+  // Node, memory and time limits; reports progress. Checks the memory estimate
+  // and the clock every 128 calls.
   bool out_of_budget(const ProductGraph& g, const SearchLimits& limits, std::int64_t deadline_ns,
                      const SearchStats& stats, LassoResult& r);
 

@@ -10,7 +10,8 @@
 // experience cache to be exact; the model's own cache (keyed on the flag and the
 // points) computes each geometry once regardless.
 // Invariants: cost(q) >= lower_bound(q, false) >= 0; cost is +infinity when the
-// skills cannot be planned (the planner treats such an edge as unusable).
+// skills cannot be planned (the planner gives such a move no edge:
+// plan/cost_check.hpp).
 #pragma once
 
 #include <memory>

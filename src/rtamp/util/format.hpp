@@ -6,6 +6,7 @@
 //   format_number(1e20) == "1e+20", format_number(inf) == "inf"
 //   format_seconds(120) == "120 s", format_seconds(0.018674159) == "18.7 ms",
 //   format_seconds(3.7e-5) == "37 us"
+//   format_count(5000000) == "5,000,000", format_bytes(4294967296) == "4 GiB"
 //   escape_text("a\x1b[2Jb") == "a\\x1b[2Jb"
 //
 // Invariants: the results contain no control bytes and no newline; numbers
@@ -41,6 +42,25 @@ inline std::string format_seconds(double s) {
   if (a > 0 && a < 1e-3) return format_number(s * 1e6, 3) + " us";
   if (a > 0 && a < 1) return format_number(s * 1e3, 3) + " ms";
   return format_number(s, 3) + " s";
+}
+
+// A count with thousands separators: "5,000,000".
+inline std::string format_count(unsigned long long n) {
+  std::string digits = std::to_string(n), out;
+  for (std::size_t i = 0; i < digits.size(); ++i) {
+    if (i > 0 && (digits.size() - i) % 3 == 0) out += ',';
+    out += digits[i];
+  }
+  return out;
+}
+
+// Bytes in the binary unit that fits: "512 B", "1.5 KiB", "300 MiB", "4 GiB"
+// (3 significant digits, no trailing zeros).
+inline std::string format_bytes(double bytes) {
+  static const char* units[] = {"B", "KiB", "MiB", "GiB", "TiB", "PiB"};
+  int u = 0;
+  while (u < 5 && std::fabs(bytes) >= 1024) bytes /= 1024, ++u;
+  return format_number(bytes, 3) + " " + units[u];
 }
 
 // `text` with its control bytes (below 0x20, and 0x7f) written as \xHH; every
