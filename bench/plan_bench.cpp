@@ -110,11 +110,11 @@ void BM_TrayReplan(benchmark::State& state) {
   for (auto _ : state) {
     const auto& c = pairs[i++ % pairs.size()];
     const auto t0 = Clock::now();
-    p.apply(c.apply);
+    p.apply(c.apply, plan::Planner::ChangeOrigin::Observed);  // a person did it, as the loop sees it
     auto r = p.plan();
     state.SetIterationTime(since(t0));
     benchmark::DoNotOptimize(r);
-    p.apply(c.undo);
+    p.apply(c.undo, plan::Planner::ChangeOrigin::Observed);
     (void)p.plan();
   }
   state.SetLabel(kind + "/" + plan::to_string(algo) + (ik ? "/ik" : ""));
@@ -141,14 +141,14 @@ void BM_TrayColdReplan(benchmark::State& state) {
   std::size_t i = 0;
   for (auto _ : state) {
     const auto& c = pairs[i++ % pairs.size()];
-    warm.apply(c.apply);
+    warm.apply(c.apply, plan::Planner::ChangeOrigin::Observed);
     const auto t0 = Clock::now();
     plan::Planner cold(warm.scenario(), warm.automaton(), options_for(plan::Algorithm::AStar, ik));
     cold.set_placement(warm.placement(), warm.hand());
     auto r = cold.plan();
     state.SetIterationTime(since(t0));
     benchmark::DoNotOptimize(r);
-    warm.apply(c.undo);
+    warm.apply(c.undo, plan::Planner::ChangeOrigin::Observed);
   }
   state.SetLabel(kind + "/cold-astar/" + (ik ? "ik" : "euclid"));
 }
@@ -186,7 +186,7 @@ const std::vector<std::vector<StreamState>>& replan_streams() {
           gen.execute(r.plan.prefix.front().action);
         } else {
           const std::string& block = blocks[rng() % 3];  // one draw per statement
-          gen.apply(world::Change::relocate(block, locs[rng() % 3]));
+          gen.apply(world::Change::relocate(block, locs[rng() % 3]), plan::Planner::ChangeOrigin::Observed);
         }
         stream.push_back({gen.placement(), gen.hand()});
       }
@@ -357,7 +357,7 @@ void report_replan(const std::string& dir) {
       for (int k = 0; k < trials; ++k) {
         const auto& c = pairs[static_cast<std::size_t>(k) % pairs.size()];
         const auto t0 = Clock::now();
-        p.apply(c.apply);
+        p.apply(c.apply, plan::Planner::ChangeOrigin::Observed);  // a person did it, as the loop sees it
         auto r = p.plan();
         const double dt = since(t0);
         t.push_back(dt);
@@ -366,7 +366,7 @@ void report_replan(const std::string& dir) {
         csv << plan::to_string(algo) << "," << kind << "," << k << "," << dt << "," << r.stats.seconds << ","
             << r.stats.generated << "," << r.stats.expanded << "," << r.stats.cache_hits << "," << r.stats.cache_misses
             << "," << (r.found ? r.plan.cost() : -1) << "\n";
-        p.apply(c.undo);
+        p.apply(c.undo, plan::Planner::ChangeOrigin::Observed);
         (void)p.plan();
       }
       std::printf("%-10s %-9s %9.1f %7.1f %15.1f %14.1f\n", plan::to_string(algo), kind, median(t) * 1e6,

@@ -70,7 +70,7 @@ std::vector<ChangedWorld> changed_worlds(int kind) {
   for (const auto& c : changes) {
     plan::Planner p(world::load_scenario("3-block-tray"), astar_euclid());
     (void)p.plan();
-    p.apply(c);
+    p.apply(c, plan::Planner::ChangeOrigin::Observed);  // what a person did, as the loop sees it
     out.push_back({p.scenario(), p.automaton(), p.placement(), p.hand()});
   }
   return out;

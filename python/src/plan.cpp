@@ -335,12 +335,17 @@ void bind_plan(py::module_& m) {
            "The cheapest lasso plan from the current state and automaton states (the GIL is\n"
            "released while it searches).")
       .def("apply",
-           [](PyPlanner& p, const py::object& c) {
+           [](PyPlanner& p, const py::object& c, bool observed) {
              const world::Change ch =
                  py::isinstance<py::str>(c) ? world::Change::parse(c.cast<std::string>()) : c.cast<world::Change>();
-             p.locked([&](plan::Planner& pl) { pl.apply(ch); });
+             p.locked([&](plan::Planner& pl) {
+               pl.apply(ch, observed ? plan::Planner::ChangeOrigin::Observed : plan::Planner::ChangeOrigin::Proposed);
+             });
            },
-           py::arg("change"), "Applies a change of the world (a Change, e.g. an Intervention, or its text, e.g. 'move o1 r2').")
+           py::arg("change"), py::kw_only(), py::arg("observed") = false,
+           "Applies a change of the world (a Change, e.g. an Intervention, or its text, e.g. 'move o1 r2').\n"
+           "It must keep the rules of space (capacity, fit, room) — rtamp.Error naming the word otherwise —\n"
+           "unless observed=True: what a world showed has happened is taken as it is.")
       .def("execute",
            [](PyPlanner& p, const StepView& s) {
              p.locked([&](plan::Planner& pl) { pl.execute(task::Action::unpack(s.packed)); });

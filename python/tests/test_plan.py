@@ -109,6 +109,15 @@ def test_replan_after_changes(tray):
     assert p.plan().found
 
 
+def test_apply_keeps_the_rules_of_space_unless_observed(tray):
+    p = rtamp.Planner(tray)
+    with pytest.raises(rtamp.Error, match="cannot put 'o4' in 'r1'"):
+        p.apply("add o4 block r1")  # r1 (capacity 4) holds three blocks and the tray
+    assert "o4" not in p.placement.locations()
+    p.apply("add o4 block r1", observed=True)  # what a world showed is taken as it is
+    assert p.placement.locations()["o4"] == "r1"
+
+
 def test_state_controls(tray):
     p = rtamp.Planner(tray)
     p.forbid_move("r3", "r2")

@@ -100,7 +100,7 @@ TEST(AutomatonStates, ExperienceReplansWithChangingSetsMatchBruteForce) {
         const auto& cur = p.scenario();
         const std::string t = cur.objects[rng() % cur.objects.size()].name;
         const std::string l = cur.regions[rng() % cur.regions.size()].name;
-        p.apply(world::Change::relocate(t, l));
+        p.apply(world::Change::relocate(t, l), plan::Planner::ChangeOrigin::Observed);
       }
       SCOPED_TRACE("query " + std::to_string(k) + " states " + list(p.automaton_states()));
       r = p.plan();
@@ -128,9 +128,9 @@ TEST(AutomatonStates, DefaultIsTheInitialStateAndIsKept) {
   shuffled.push_back(all.front());
   p.set_automaton_states(shuffled);
   EXPECT_EQ(p.automaton_states(), all);  // sorted, without duplicates
-  p.apply(world::Change::relocate("o1", "r3"));
+  p.apply(world::Change::relocate("o1", "r3"), plan::Planner::ChangeOrigin::Observed);
   EXPECT_EQ(p.automaton_states(), all);
-  p.apply(world::Change::add_object("o9", "block", "r1"));
+  p.apply(world::Change::add_object("o9", "block", "r1"), plan::Planner::ChangeOrigin::Observed);
   EXPECT_EQ(p.automaton_states(), all);
   const plan::PlanResult r = p.plan();
   ASSERT_TRUE(r.found) << r.message;

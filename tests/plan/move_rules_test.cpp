@@ -160,14 +160,15 @@ TEST(MoveRules, ForbiddenMovesPersistAcrossRebuildsByName) {
   p.forbid_move("o2", "r3");
   p.forbid_move("ghost", "r2");  // unknown: ignored by the TS, kept in the list
   EXPECT_TRUE(p.system().forbidden(1, static_cast<unsigned>(p.system().find_location("r3"))));
-  p.apply(world::Change::add_object("o4", "block", "r1"));  // rebuilds the TS
+  constexpr auto kObserved = plan::Planner::ChangeOrigin::Observed;  // r1 is full: a person overfilled it
+  p.apply(world::Change::add_object("o4", "block", "r1"), kObserved);  // rebuilds the TS
   const auto& ts = p.system();
   EXPECT_TRUE(ts.forbidden(static_cast<unsigned>(ts.find_thing("o2")), static_cast<unsigned>(ts.find_location("r3"))));
   EXPECT_EQ(ts.forbidden_moves().size(), 1u);
-  p.apply(world::Change::remove_object("o2"));  // gone: nothing to forbid
+  p.apply(world::Change::remove_object("o2"), kObserved);  // gone: nothing to forbid
   EXPECT_TRUE(p.system().forbidden_moves().empty());
   EXPECT_EQ(p.forbidden_moves().size(), 2u);
-  p.apply(world::Change::add_object("o2", "block", "r1"));  // back: forbidden again
+  p.apply(world::Change::add_object("o2", "block", "r1"), kObserved);  // back: forbidden again
   EXPECT_EQ(p.system().forbidden_moves().size(), 1u);
   const auto r = p.plan();
   ASSERT_TRUE(r.found);

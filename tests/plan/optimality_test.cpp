@@ -133,7 +133,7 @@ TEST(Optimality, ReplansAfterChangesMatchBruteForce) {
         continue;
       }
       SCOPED_TRACE(change);
-      p.apply(world::Change::parse(change));
+      p.apply(world::Change::parse(change), plan::Planner::ChangeOrigin::Observed);
       const plan::PlanResult r = p.plan();
       const auto want = oracle::min_lasso(p.scenario(), p.placement(), p.hand(), p.automaton(), "euclid");
       ASSERT_EQ(r.found, want.has_value()) << r.message;
@@ -180,7 +180,7 @@ TEST(Optimality, ManyReplansOnOneGraphMatchBruteForce) {
         if (things.empty()) break;
         const std::string t = things[rng() % things.size()], l = locs[rng() % locs.size()];
         SCOPED_TRACE("move " + t + " " + l);
-        p.apply(world::Change::relocate(t, l));
+        p.apply(world::Change::relocate(t, l), plan::Planner::ChangeOrigin::Observed);
       }
       r = p.plan();
       const auto want = oracle::min_lasso(p.scenario(), p.placement(), p.hand(), p.automaton(), model);

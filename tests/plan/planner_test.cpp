@@ -86,7 +86,7 @@ TEST(Planner, BuiltinThreeBlockTrayUsesTheTray) {
 
 TEST(Planner, ReplanAfterEachChangeKindEqualsColdPlan) {
   const std::vector<std::string> changes = {
-      "move o2 r1", "add o4 block r1", "remove o1", "move o3 r3", "add-region r9 0.9 0.0 4",
+      "move o2 r1", "add o4 block r1", "remove o1", "move o3 r3", "add-region r9 0.9 0.0 4 0.3 0.3",
       "remove-container r3", "add-container t2 tray r1 3", "move o4 t2", "move t2 r9",
   };
   for (auto algo : {plan::Algorithm::AStarExperience, plan::Algorithm::AStar, plan::Algorithm::Dijkstra}) {
@@ -324,6 +324,17 @@ TEST(Planner, BadChangesAreErrors) {
   EXPECT_THROW(p.apply(world::Change::parse("move r3 r3")), Error);
   EXPECT_THROW(p.apply(world::Change::parse("add o1 block r1")), Error);
   EXPECT_THROW(p.apply(world::Change::parse("remove r3")), Error);
+  // The rule book of space: r1 (capacity 4) holds three blocks and the tray.
+  try {
+    p.apply(world::Change::parse("add o4 block r1"));
+    ADD_FAILURE() << "a fifth thing in r1 was accepted";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("cannot put 'o4' in 'r1'"), std::string::npos) << e.what();
+  }
+  EXPECT_EQ(p.placement().things.size(), 4u) << "a refused change changes nothing";
+  // What a world showed has happened is taken as it is (the reactive loop's case).
+  p.apply(world::Change::parse("add o4 block r1"), plan::Planner::ChangeOrigin::Observed);
+  EXPECT_EQ(*p.placement().location_of("o4"), "r1");
   EXPECT_THROW(world::Change::parse("jump o1"), Error);
   EXPECT_THROW(world::Change::parse("add-region x a b"), Error);
   EXPECT_THROW(world::Change::parse(""), Error);

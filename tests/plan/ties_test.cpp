@@ -125,9 +125,9 @@ TEST(Ties, TrayScenarioPlansHaveTheFewestMovesAmongCheapest) {
       plan::Planner p(world::load_scenario("3-block-tray"), opt);
       check_ties(p, p.plan(), model);
       // From other states too: the tray carrying a block, blocks spread.
-      p.apply(world::Change::relocate("o1", "r3"));  // into the tray
+      p.apply(world::Change::relocate("o1", "r3"), plan::Planner::ChangeOrigin::Observed);  // into the tray
       check_ties(p, p.plan(), model);
-      p.apply(world::Change::relocate("o2", "r2"));
+      p.apply(world::Change::relocate("o2", "r2"), plan::Planner::ChangeOrigin::Observed);
       check_ties(p, p.plan(), model);
     }
 }
@@ -179,7 +179,7 @@ TEST(Ties, ExperienceReplans) {
         for (const auto& reg : cur.regions) locs.push_back(reg.name);
         for (const auto& c : cur.containers) locs.push_back(c.name);
         const std::string thing = cur.objects[rng() % cur.objects.size()].name;  // one draw per statement
-        p.apply(world::Change::relocate(thing, locs[rng() % locs.size()]));
+        p.apply(world::Change::relocate(thing, locs[rng() % locs.size()]), plan::Planner::ChangeOrigin::Observed);
       }
       SCOPED_TRACE("query " + std::to_string(k));
       r = p.plan();

@@ -150,6 +150,7 @@ void ReactiveLoop::record_run_step(const world::Placement& next, bool things_cha
 
 void ReactiveLoop::apply_thing_changes(const std::vector<std::string>& added,
                                        const std::vector<std::string>& removed) {
+  constexpr auto kObserved = plan::Planner::ChangeOrigin::Observed;  // what the world showed, as it is
   wait_for_worker();
   pending_.reset();  // its plan is stale
   auto add = [&](bool containers) {
@@ -160,15 +161,16 @@ void ReactiveLoop::apply_thing_changes(const std::vector<std::string>& added,
         int capacity = 4;
         for (const auto& k : planner_->scenario().containers)
           if (k.cls == thing.cls) capacity = k.capacity;
-        planner_->apply(world::Change::add_container(name, thing.cls, thing.location, capacity));
+        planner_->apply(world::Change::add_container(name, thing.cls, thing.location, capacity), kObserved);
       } else {
-        planner_->apply(world::Change::add_object(name, thing.cls, thing.location));
+        planner_->apply(world::Change::add_object(name, thing.cls, thing.location), kObserved);
       }
     }
   };
   for (const std::string& name : removed) {
     const bool container = planner_->placement().things.at(name).container;
-    planner_->apply(container ? world::Change::remove_container(name) : world::Change::remove_object(name));
+    planner_->apply(container ? world::Change::remove_container(name) : world::Change::remove_object(name),
+                    kObserved);
   }
   add(true);
   add(false);

@@ -121,9 +121,10 @@ void Planner::execute(const task::Action& a) {
   if (hand_ == "home") hand_.clear();
 }
 
-void Planner::apply(const world::Change& c) {
+void Planner::apply(const world::Change& c, ChangeOrigin origin) {
   using Kind = world::Change::Kind;
   world::check_change(c, scenario_);
+  if (origin == ChangeOrigin::Proposed) world::check_change_room(c, scenario_, placement_);
   if (c.kind == Kind::Remove || c.kind == Kind::RemoveContainer)
     if (ts_)
       if (int t = ts_->find_thing(c.subject); t >= 0) experience_.costs().forget_thing(ts_->thing_uid(static_cast<unsigned>(t)));

@@ -72,12 +72,18 @@ class Planner {
   Planner& operator=(const Planner&) = delete;
 
   PlanResult plan();
-  // A change of the world observed between plans (world/change.hpp: checked
-  // against the current scenario, rtamp::Error if it does not fit; then
-  // applied). A relocation keeps the product graph and all experience; other
+  // How apply() checks a change. Proposed: its names against the current
+  // scenario and the rule book of space where it puts things (capacity, fit,
+  // room: world::check_change_room). Observed: names only — what a world
+  // showed has happened is taken as it is, even a region fuller than the
+  // rules allow (the reactive loop's case).
+  enum class ChangeOrigin { Proposed, Observed };
+  // A change of the world between plans (world/change.hpp), checked as
+  // `origin` says (rtamp::Error naming the word that does not fit), then
+  // applied. A relocation keeps the product graph and all experience; other
   // kinds rebuild the TS (the motion-cost cache is kept, minus a removed
   // thing's entries).
-  void apply(const world::Change& change);
+  void apply(const world::Change& change, ChangeOrigin origin = ChangeOrigin::Proposed);
   // The robot executed `a` (the state advances; experience is kept).
   void execute(const task::Action& a);
   // Replace the current state (e.g. from perception).

@@ -1,9 +1,10 @@
 #include "rtamp/plan/registry.hpp"
 
 #include <algorithm>
-#include <mutex>
+#include <utility>
 
 #include "rtamp/util/error.hpp"
+#include "rtamp/util/named_registry.hpp"
 #include "rtamp/world/suggest.hpp"
 
 namespace rtamp::plan {
@@ -26,20 +27,14 @@ const std::vector<AlgorithmInfo> kAlgorithms = {
     {Algorithm::Dijkstra, "dijkstra", "Dijkstra (no heuristic), cold on every plan", false, zero_heuristic},
 };
 
-struct CostRegistry {
-  std::mutex mutex;
-  std::vector<CostModelInfo> entries;
-  CostRegistry() {
-    entries.push_back({"euclid", "hand to the thing, then the thing to its destination, straight lines (metres)",
-                       [](const world::Scenario&) { return std::make_shared<EuclidCost>(); }});
-    entries.push_back({"region", "centre of the thing's location to the destination's centre (metres)",
-                       [](const world::Scenario&) { return std::make_shared<RegionCost>(); }});
-    entries.push_back({"unit", "1 per move", [](const world::Scenario&) { return std::make_shared<UnitCost>(); }});
-  }
-};
-
-CostRegistry& registry() {
-  static CostRegistry r;
+NamedRegistry<CostModelInfo>& registry() {
+  static NamedRegistry<CostModelInfo> r({
+      {"euclid", "hand to the thing, then the thing to its destination, straight lines (metres)",
+       [](const world::Scenario&) { return std::make_shared<EuclidCost>(); }},
+      {"region", "centre of the thing's location to the destination's centre (metres)",
+       [](const world::Scenario&) { return std::make_shared<RegionCost>(); }},
+      {"unit", "1 per move", [](const world::Scenario&) { return std::make_shared<UnitCost>(); }},
+  });
   return r;
 }
 
@@ -67,27 +62,12 @@ Algorithm parse_algorithm(std::string_view name) {
 
 void register_cost_model(CostModelInfo info) {
   if (info.name.empty() || !info.make) throw Error("a motion-cost model needs a name and a factory");
-  CostRegistry& r = registry();
-  std::lock_guard lock(r.mutex);
-  for (auto& e : r.entries)
-    if (e.name == info.name) {
-      e = std::move(info);
-      return;
-    }
-  r.entries.push_back(std::move(info));
+  registry().add(std::move(info));
 }
 
-std::vector<CostModelInfo> cost_models() {
-  CostRegistry& r = registry();
-  std::lock_guard lock(r.mutex);
-  return r.entries;
-}
+std::vector<CostModelInfo> cost_models() { return registry().entries(); }
 
-std::vector<std::string> cost_model_names() {
-  std::vector<std::string> out;
-  for (const auto& e : cost_models()) out.push_back(e.name);
-  return out;
-}
+std::vector<std::string> cost_model_names() { return registry().names(); }
 
 bool has_cost_model(std::string_view name) {
   const auto names = cost_model_names();
@@ -95,16 +75,10 @@ bool has_cost_model(std::string_view name) {
 }
 
 std::shared_ptr<MotionCostModel> make_cost_model(std::string_view name, const world::Scenario& scenario) {
-  CostModelFactory make;
-  {
-    CostRegistry& r = registry();
-    std::lock_guard lock(r.mutex);
-    for (const auto& e : r.entries)
-      if (e.name == name) make = e.make;
-  }
-  if (!make)
+  const auto model = registry().find(name);
+  if (!model)
     throw Error("unknown motion-cost model " + world::quoted(name) + world::suggestion(name, cost_model_names()));
-  return make(scenario);
+  return model->make(scenario);
 }
 
 }  // namespace rtamp::plan
