@@ -2,7 +2,7 @@
 #   make demo    install missing Debian packages, build, run the built-in scenario
 #   make test    install missing Debian packages, build, run every test (ctest -j2)
 #   make test-asan   build with clang under ASan+UBSan into build-asan/ and run the fast tests
-#   make fuzz    build the libFuzzer targets in that same tree (build-asan/), run each for FUZZ_SECONDS
+#   make fuzz    build the libFuzzer targets in that same tree (build-asan/), run each for FUZZ_SECONDS, JOBS at a time
 #   make bench   build and run the Google Benchmark suites
 BUILD ?= build
 JOBS ?= 2
@@ -48,7 +48,7 @@ test-asan: deps
 fuzz: deps
 	$(SAN_CONFIGURE)
 	cmake --build $(SAN_BUILD) -j$(JOBS) --target fuzzers
-	scripts/run-fuzzers $(SAN_BUILD) $(FUZZ_SECONDS)
+	scripts/run-fuzzers $(SAN_BUILD) $(FUZZ_SECONDS) $(JOBS)
 
 bench: build
 	scripts/run-benchmarks $(BUILD)

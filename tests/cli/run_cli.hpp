@@ -11,6 +11,8 @@
 #include <iterator>
 #include <string>
 
+#include "rtamp_source_dir.hpp"
+
 namespace rtamp::cli::testing {
 
 struct Result {

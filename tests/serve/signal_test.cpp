@@ -21,6 +21,7 @@
 #include <thread>
 #include <vector>
 
+#include "rtamp_source_dir.hpp"
 #include "ws_client.hpp"
 
 extern char** environ;

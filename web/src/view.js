@@ -1,4 +1,4 @@
-// The 3-D scene as the page's main thread knows it (issue 14): what is where, the
+// The 3-D scene as the page's main thread knows it: what is where, the
 // camera, the labels, and where a point is on the screen — everything but the drawing,
 // which render/link.js hands to the drawing worker (render/renderer.js) as messages.
 // The main thread keeps, per thing, an undrawn copy of its shape (shapes.js) at the

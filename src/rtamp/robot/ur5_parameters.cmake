@@ -1,5 +1,5 @@
 # Build step (cmake -P): derives the robot layer's UR5 numbers from the model file
-# models/ur5.xml, the one place they are written (issue 12 item 5; docs/robot.md).
+# models/ur5.xml, the one place they are written (docs/robot.md).
 # Invoked by src/rtamp/robot/CMakeLists.txt with
 #   -DMODEL=<repo>/models/ur5.xml -DOUTPUT=<build>/ur5_parameters.inc
 # It reads, by their exact form in the file:

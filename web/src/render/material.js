@@ -1,4 +1,4 @@
-// Cheap lit materials for the page's scene (issue 14's bar: 30 frames a second with
+// Cheap lit materials for the page's scene (the page's bar: 30 frames a second with
 // 3-block-tray, also where WebGL is software-rendered, e.g. headless Chromium on
 // SwiftShader): Lambert shading evaluated per vertex (Gouraud) with the scene's two
 // lights — a hemisphere light and a directional "sun" — so the fragment shader only

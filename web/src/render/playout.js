@@ -1,4 +1,4 @@
-// The playout of the streamed frames (issue 14: the page keeps 30 frames a second): the
+// The playout of the streamed frames (the page keeps 30 frames a second): the
 // server sends a frame every 1/30 s of wall time, but they reach the drawing thread
 // unevenly — two in one animation frame, then none for 60 ms (the network, the page's
 // main thread relaying them, the compositor). Drawing each frame as it arrives shows

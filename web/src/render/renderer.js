@@ -1,4 +1,4 @@
-// The page's 3-D drawing (issue 14), off the main thread: this runs in a dedicated Worker
+// The page's 3-D drawing, off the main thread: this runs in a dedicated Worker
 // on the scene canvas's OffscreenCanvas (render/entry.js), or on the main thread as the
 // fallback where that is unavailable (render/link.js). It owns the three.js scene — the
 // table, the regions, the things, the UR5 (robot.js), the plan's arrows (arrows.js), the
