@@ -60,7 +60,10 @@ void Planner::rebuild() {
   ts_ = std::make_unique<task::System>(scenario_, placement_, hand_);
   ts_->forbid_moves(forbidden_);
   lab_ = std::make_unique<task::Labeling>(*ts_, ba_.atoms, parse_atom);
-  if (options_.symmetry && !(model_->depends() & kDependsThing)) ts_->set_symmetry(lab_->symmetry_groups());
+  if (options_.symmetry && !(model_->depends() & kDependsThing)) {
+    ts_->set_symmetry(lab_->symmetry_groups());
+    ts_->set_container_symmetry(lab_->container_groups());
+  }
   dirty_ = false;
 }
 
@@ -344,7 +347,10 @@ void Planner::diagnose(PlanResult& res, std::int64_t t0) {
   task::System relaxed(scenario_, placement_, hand_, task::System::Options{true});
   relaxed.forbid_moves(forbidden_);
   task::Labeling rlab(relaxed, ba_.atoms, parse_atom);
-  if (options_.symmetry && !(model_->depends() & kDependsThing)) relaxed.set_symmetry(rlab.symmetry_groups());
+  if (options_.symmetry && !(model_->depends() & kDependsThing)) {
+    relaxed.set_symmetry(rlab.symmetry_groups());
+    relaxed.set_container_symmetry(rlab.container_groups());
+  }
   const QueryClock clock(options_.limits.time_limit);
   const LassoExistence e =
       find_accepting_lasso(relaxed, rlab, ba_, ba_starts_, options_.limits.max_nodes, clock.deadline);
