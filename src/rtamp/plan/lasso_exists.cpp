@@ -3,7 +3,6 @@
 #include "rtamp/plan/lasso_exists.hpp"
 
 #include <algorithm>
-#include <unordered_map>
 
 #include "rtamp/plan/search.hpp"
 
@@ -17,29 +16,30 @@ struct Key {
   friend bool operator==(const Key&, const Key&) = default;
 };
 
-struct KeyHash {
-  unsigned words = 1;
-  std::size_t operator()(const Key& k) const { return task::hash_words(k.s.words.data(), words, k.q); }
-};
 
 constexpr std::uint32_t kUnvisited = 0xffffffffu;
 
 class Explorer {
  public:
   Explorer(const task::System& ts, const task::Labeling& lab, const automata::Automaton& ba)
-      : ts_(ts), lab_(lab), ba_(ba), ids_(64, KeyHash{ts.layout().words}) {}
+      : ts_(ts), lab_(lab), ba_(ba), words_(ts.layout().words), table_(1024, kUnvisited) {}
 
   // The id of (s, q), added if new (s without its hand).
   std::uint32_t node(task::State s, std::uint32_t q) {
     ts_.layout().set(s, ts_.hand_field(), 0);
-    const auto [it, added] = ids_.try_emplace(Key{s, q}, static_cast<std::uint32_t>(keys_.size()));
-    if (added) {
-      keys_.push_back(Key{s, q});
-      index_.push_back(kUnvisited);
-      low_.push_back(0);
-      on_stack_.push_back(false);
-    }
-    return it->second;
+    const Key k{s, q};
+    std::size_t mask = table_.size() - 1;
+    std::size_t i = task::hash_words(s.words.data(), words_, q) & mask;
+    for (; table_[i] != kUnvisited; i = (i + 1) & mask)
+      if (keys_[table_[i]] == k) return table_[i];
+    const auto id = static_cast<std::uint32_t>(keys_.size());
+    keys_.push_back(k);
+    index_.push_back(kUnvisited);
+    low_.push_back(0);
+    on_stack_.push_back(false);
+    table_[i] = id;
+    if (2 * keys_.size() > table_.size()) grow();
+    return id;
   }
 
   // Successor ids of n into succ (stay, then moves; every BA successor).
@@ -134,10 +134,22 @@ class Explorer {
   }
 
  private:
+  // Doubles the open-addressing table of ids (load <= 1/2, linear probing).
+  void grow() {
+    table_.assign(table_.size() * 2, kUnvisited);
+    const std::size_t mask = table_.size() - 1;
+    for (std::uint32_t id = 0; id < keys_.size(); ++id) {
+      std::size_t i = task::hash_words(keys_[id].s.words.data(), words_, keys_[id].q) & mask;
+      while (table_[i] != kUnvisited) i = (i + 1) & mask;
+      table_[i] = id;
+    }
+  }
+
   const task::System& ts_;
   const task::Labeling& lab_;
   const automata::Automaton& ba_;
-  std::unordered_map<Key, std::uint32_t, KeyHash> ids_;
+  unsigned words_;
+  std::vector<std::uint32_t> table_;  // node ids, kUnvisited: empty
   std::vector<Key> keys_;
   std::vector<std::uint32_t> index_, low_;
   std::vector<bool> on_stack_;

@@ -247,8 +247,7 @@ void fill_container_keys(const System& ts, const State& s, const std::vector<uns
 
 void System::order_containers(State& s, unsigned* src) const {
   thread_local ContainerKeys k;
-  thread_local std::vector<std::uint32_t> relabel;
-  relabel.resize(num_locations() + 1);
+  std::uint32_t relabel[kMaxLocations + 1];
   for (unsigned l = 0; l <= num_locations(); ++l) relabel[l] = l;
   const State old = s;
   const unsigned n_groups = static_cast<unsigned>(groups_.size());
@@ -256,9 +255,16 @@ void System::order_containers(State& s, unsigned* src) const {
   for (const auto& g : container_groups_) {
     const unsigned m = static_cast<unsigned>(g.size());
     fill_container_keys(*this, old, g, n_groups, k);
+    // Insertion sort (groups are small; stable: equal keys keep member order).
     k.order.resize(m);
-    for (unsigned i = 0; i < m; ++i) k.order[i] = i;
-    std::stable_sort(k.order.begin(), k.order.end(), [&](unsigned a, unsigned b) { return k.less(a, b); });
+    for (unsigned i = 0; i < m; ++i) {
+      unsigned j = i;
+      while (j > 0 && k.less(i, k.order[j - 1])) {
+        k.order[j] = k.order[j - 1];
+        --j;
+      }
+      k.order[j] = i;
+    }
     for (unsigned i = 0; i < m; ++i) {
       const unsigned from = g[k.order[i]], to = g[i];
       if (src) src[to] = from;
@@ -306,7 +312,11 @@ void System::canonicalize(State& s) const {
 
 State System::canonical_successor(const State& s, const Action& a) const {
   State r = successor(s, a);
-  if (!container_groups_.empty() && !a.is_stay()) {
+  // The containers' order changes only if a key changes: a member moved, or
+  // something (the thing, or the hand) put into or taken out of a member.
+  if (!container_groups_.empty() && !a.is_stay() &&
+      (container_group_[a.thing] >= 0 || interchangeable_location(a.to) ||
+       interchangeable_location(location(s, a.thing)) || interchangeable_location(hand(s)))) {
     canonicalize(r);
     return r;
   }
