@@ -12,6 +12,7 @@
 #include "plan_checks.hpp"
 #include "rtamp/plan/lasso_exists.hpp"
 #include "rtamp/plan/registry.hpp"
+#include "rtamp/world/generator.hpp"
 
 namespace {
 
@@ -157,6 +158,40 @@ TEST(TraySymmetry, ExistenceCheckMatchesFullSearch) {
   }
   EXPECT_GT(exists, 50);
   EXPECT_GT(not_exists, 3);
+}
+
+// A forbidden move into a tray, or of a tray, takes that tray out of its
+// group; plans avoid the move and cost what they cost without any symmetry.
+TEST(TraySymmetry, AForbiddenMoveTakesATrayOutOfItsGroup) {
+  world::GeneratorOptions g;
+  g.regions = 4;
+  g.objects = 2;
+  g.containers = 3;
+  g.task = "G F all_in_r2 & G F all_in_r3";
+  g.propositions = {{"all_in_r3", "all block in r3"}};
+  const world::Scenario sc = world::generate_scenario(g);
+  for (const auto& [thing, to] : {std::pair<std::string, std::string>{"o1", "t2"}, {"t3", "r1"}}) {
+    SCOPED_TRACE("forbid move(" + thing + ", " + to + ")");
+    plan::Planner p(sc);
+    p.forbid_move(thing, to);
+    const auto r = p.plan();
+    const auto& ts = p.system();
+    const int moved = ts.find_thing(thing), into = ts.find_location(to);
+    EXPECT_EQ(ts.container_group_of(static_cast<unsigned>(ts.is_container_location(static_cast<unsigned>(into))
+                                                              ? ts.thing_of_location(static_cast<unsigned>(into))
+                                                              : static_cast<unsigned>(moved))),
+              -1);
+    EXPECT_TRUE(ts.has_container_symmetry());
+    plan::PlannerOptions off;
+    off.symmetry = false;
+    plan::Planner q(sc, off);
+    q.forbid_move(thing, to);
+    const auto want = q.plan();
+    ASSERT_EQ(r.found, want.found);
+    if (!r.found) continue;
+    EXPECT_NEAR(r.plan.cost(), want.plan.cost(), 1e-9);
+    for (const auto& a : p.action_tuples(r.plan)) EXPECT_FALSE(a.thing == thing && a.to == to);
+  }
 }
 
 }  // namespace
