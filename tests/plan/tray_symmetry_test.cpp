@@ -92,7 +92,7 @@ TEST(TraySymmetry, RandomTrayScenariosMatchBruteForce) {
   std::mt19937 rng(77);
   int found = 0, none = 0, capacity = 0, grouped = 0;
   const char* models[] = {"euclid", "region", "unit"};
-  for (int trial = 0; trial < 150; ++trial) {
+  for (int trial = 0; trial < 300; ++trial) {
     const world::Scenario sc = random_tray_scenario(rng, formulas);
     const std::string model = models[trial % 3];
     SCOPED_TRACE("trial " + std::to_string(trial) + " task " + sc.task + " model " + model);
@@ -127,10 +127,10 @@ TEST(TraySymmetry, RandomTrayScenariosMatchBruteForce) {
         check_plan(p, r, model);
       }
   }
-  EXPECT_GT(found, 50);
+  EXPECT_GT(found, 100);
   EXPECT_GT(none, 3);
   EXPECT_GT(capacity, 0);
-  EXPECT_GT(grouped, 50);
+  EXPECT_GT(grouped, 100);
 }
 
 // find_accepting_lasso against the full search on the capacity-free TS, also
