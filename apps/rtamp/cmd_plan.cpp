@@ -72,6 +72,8 @@ nlohmann::json stats_json(const plan::SearchStats& s) {
           {"bytes_per_node", s.bytes_per_node()},
           {"construction_seconds", s.construction_seconds},
           {"seconds", s.seconds},
+          {"diagnosis_nodes", s.diagnosis_nodes},
+          {"diagnosis_seconds", s.diagnosis_seconds},
           {"hit_node_limit", s.hit_node_limit},
           {"hit_time_limit", s.hit_time_limit},
           {"hit_memory_limit", s.hit_memory_limit}};
@@ -111,6 +113,8 @@ void print_result(plan::Planner& p, const plan::PlanResult& r, const std::string
       << s.reused_nodes << " reused, " << s.reused_path_edges << " plan edges reused; graph " << s.graph_nodes << " nodes / " << s.graph_edges << " edges; "
       << fmt(s.seconds * 1e3, 3) << " ms";
   if (s.construction_seconds > 0) out << " (construction " << fmt(s.construction_seconds * 1e3, 3) << " ms)";
+  if (s.diagnosis_seconds > 0)
+    out << " (capacity diagnosis " << s.diagnosis_nodes << " nodes, " << fmt(s.diagnosis_seconds * 1e3, 3) << " ms)";
   if (s.cache_used) out << "; cache " << s.cache_hits << " hits / " << s.cache_misses << " misses";
   else if (s.reused_nodes > 0 || s.reused_path_edges > 0) out << "; no cost cache (closed-form costs)";
   out << "; memory " << s.memory_bytes

@@ -221,6 +221,8 @@ void bind_plan(py::module_& m) {
       .def_readonly("expanded", &plan::SearchStats::expanded, "Node expansions (prefix and cycle searches).")
       .def_readonly("successor_generations", &plan::SearchStats::successor_generations, "Expansions that had to compute their successors.")
       .def_readonly("cycle_searches", &plan::SearchStats::cycle_searches, "Cycle searches run (misses of the cycle table).")
+      .def_readonly("diagnosis_nodes", &plan::SearchStats::diagnosis_nodes, "Capacity diagnosis: capacity-free product nodes explored.")
+      .def_readonly("diagnosis_seconds", &plan::SearchStats::diagnosis_seconds, "Capacity diagnosis: its wall time (0 if it did not run).")
       .def_readonly("graph_nodes", &plan::SearchStats::graph_nodes, "Nodes of the product graph after the query.")
       .def_readonly("graph_edges", &plan::SearchStats::graph_edges, "Edges of the product graph after the query.")
       .def_readonly("cache_used", &plan::SearchStats::cache_used, "The motion-cost cache was consulted (astar-exp with an expensive model).")

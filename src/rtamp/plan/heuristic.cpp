@@ -278,9 +278,12 @@ double state_distance_bound(const task::System& ts, const MotionCostModel& model
   for (unsigned t = 0; t < ts.num_things(); ++t) {
     // Canonical states sort interchangeable objects by location, so a member
     // may reach its target as another member: no per-member bound for them.
-    if (ts.group_of(t) >= 0) continue;
+    if (ts.group_of(t) >= 0 || ts.container_group_of(t) >= 0) continue;
     const std::uint32_t want = ts.location(target, t);
     if (ts.location(s, t) == want) continue;
+    // In interchangeable containers at both ends it may stay where it is
+    // (the containers' names permute).
+    if (ts.interchangeable_location(ts.location(s, t)) && ts.interchangeable_location(want)) continue;
     MotionQuery q;
     q.thing = ts.thing_uid(t);
     q.container = ts.is_container(t);

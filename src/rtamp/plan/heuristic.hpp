@@ -158,8 +158,10 @@ class ExperienceHeuristic final : public Heuristic {
 // location differs of the model's lower_bound (thing -> its target location);
 // +inf if the target has the hand at home and s does not (the hand is at home
 // only before the first move, so such a target is never reached again).
-// Interchangeable objects (task::System::set_symmetry) are skipped: in
-// canonical states a member's target may be reached by a twin.
+// Interchangeable objects and containers (task::System::set_symmetry,
+// set_container_symmetry) are skipped: in canonical states a member's target
+// may be reached by a twin; so are things in interchangeable containers in
+// both states (their container's name may permute).
 double state_distance_bound(const task::System& ts, const MotionCostModel& model, const task::State& s,
                             const task::State& target);
 

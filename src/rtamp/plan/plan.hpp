@@ -62,7 +62,9 @@ struct SearchStats {
   std::uint64_t reused_path_edges = 0;  // plan edges taken from an earlier optimal plan (astar-exp)
   std::size_t memory_bytes = 0;       // product graph + search arrays + cache, after the query
   double construction_seconds = 0;    // full construction before the search (graph "full")
-  double seconds = 0;                 // wall time of the whole query
+  double seconds = 0;                 // wall time of the whole query (the capacity diagnosis included)
+  std::uint64_t diagnosis_nodes = 0;  // capacity diagnosis: capacity-free product nodes explored
+  double diagnosis_seconds = 0;       // capacity diagnosis: its wall time (0 if it did not run)
   bool hit_node_limit = false;
   bool hit_time_limit = false;
   bool hit_memory_limit = false;

@@ -3,6 +3,8 @@
 #include <algorithm>
 
 #include "rtamp/automata/translate.hpp"
+#include "rtamp/plan/canonical_replay.hpp"
+#include "rtamp/plan/lasso_exists.hpp"
 #include "rtamp/world/change.hpp"
 #include "rtamp/task/validate.hpp"
 #include "rtamp/ltl/parser.hpp"
@@ -58,7 +60,10 @@ void Planner::rebuild() {
   ts_ = std::make_unique<task::System>(scenario_, placement_, hand_);
   ts_->forbid_moves(forbidden_);
   lab_ = std::make_unique<task::Labeling>(*ts_, ba_.atoms, parse_atom);
-  if (options_.symmetry && !(model_->depends() & kDependsThing)) ts_->set_symmetry(lab_->symmetry_groups());
+  if (options_.symmetry && !(model_->depends() & kDependsThing)) {
+    ts_->set_symmetry(lab_->symmetry_groups());
+    ts_->set_container_symmetry(lab_->container_groups());
+  }
   dirty_ = false;
 }
 
@@ -136,50 +141,131 @@ void Planner::apply(const world::Change& c, ChangeOrigin origin) {
 PlanResult Planner::plan() {
   if (dirty_) rebuild();
   ts_->set_initial(ts_->encode(placement_, hand_));
-  return search(*ts_, *lab_, options_.diagnose_capacity);
+  const std::int64_t t0 = steady_now_ns();
+  const bool keep = algorithm_info(options_.algorithm).keeps_experience;
+  PlanResult res = search(*ts_, *lab_, options_, keep ? Experienced::Kept : Experienced::Cold);
+  // (graph_nodes > 0: the search ran, i.e. some start state could still reach acceptance.)
+  if (!res.found && res.reason == NoPlanReason::NoAcceptingCycle && res.stats.graph_nodes > 0 &&
+      options_.diagnose_capacity)
+    diagnose(res, t0);
+  return res;
 }
 
-PlanResult Planner::search(task::System& ts, task::Labeling& lab, bool allow_diagnosis) {
-  PlanResult res;
-  const std::int64_t t0 = steady_now_ns();
-  const bool exp = algorithm_info(options_.algorithm).keeps_experience && &ts == ts_.get();
-  // No deadline for a limit <= 0, NaN, infinite or beyond ~30 years (it would overflow the clock).
-  const double limit = options_.limits.time_limit;
-  std::int64_t deadline = limit > 0 && limit < 1e9 ? t0 + static_cast<std::int64_t>(limit * 1e9) : 0;
-  auto finish = [&](NoPlanReason reason, std::string message) {
+// ---- one query, step by step -------------------------------------------------
+
+namespace {
+
+// The query's clock: its start, its deadline and how the result is closed.
+struct QueryClock {
+  std::int64_t t0 = steady_now_ns();
+  std::int64_t deadline = 0;
+  explicit QueryClock(double limit) {
+    // No deadline for a limit <= 0, NaN, infinite or beyond ~30 years (it would overflow the clock).
+    if (limit > 0 && limit < 1e9) deadline = t0 + static_cast<std::int64_t>(limit * 1e9);
+  }
+  double since_start(std::int64_t now) const { return double(now - t0) * 1e-9; }
+  PlanResult finish(PlanResult res, NoPlanReason reason, std::string message) const {
     res.reason = reason;
     res.message = std::move(message);
-    res.stats.seconds = double(steady_now_ns() - t0) * 1e-9;
+    res.stats.seconds = since_start(steady_now_ns());
     return res;
-  };
+  }
+};
+
+// Which limit stopped a query, if any.
+struct Stopped {
+  bool node = false, time = false, memory = false;
+  bool any() const { return node || time || memory; }
+};
+
+// The full construction (graph "full"): every reachable node expanded before the search.
+Stopped construct_full(ProductGraph& g, const std::vector<NodeId>& starts, const PlannerOptions& opt,
+                       const QueryClock& clock, std::uint64_t& built, SearchStats& stats) {
+  Stopped stop;
+  const std::int64_t c0 = steady_now_ns();
+  const std::uint64_t built0 = g.expansions();
+  std::function<void(std::int64_t)> tick;
+  if (opt.limits.on_progress) {
+    std::int64_t next = c0 + opt.limits.progress_interval_ns();
+    tick = [&, next](std::int64_t now) mutable {
+      if (now < next) return;
+      next = now + opt.limits.progress_interval_ns();
+      SearchProgress p;
+      p.phase = "constructing";
+      p.graph_nodes = g.size();
+      p.seconds = clock.since_start(now);
+      opt.limits.on_progress(p);
+    };
+  }
+  if (!g.expand_all(starts, opt.limits.max_nodes, clock.deadline, tick, opt.limits.max_memory_bytes)) {
+    if (g.size() >= opt.limits.max_nodes) stop.node = true;
+    else if (clock.deadline && steady_now_ns() > clock.deadline) stop.time = true;
+    else stop.memory = true;
+  }
+  built = g.expansions() - built0;
+  stats.construction_seconds = double(steady_now_ns() - c0) * 1e-9;
+  return stop;
+}
+
+// The message of a query a limit stopped: which limit, and how far it got.
+std::string limit_message(const Stopped& stop, const PlannerOptions& opt, const SearchStats& stats,
+                          std::uint64_t built) {
+  const bool in_construction = stats.expanded == 0 && built > 0;
+  const std::string stopped = in_construction ? "the full construction stopped at its " : "the search stopped at its ";
+  const std::uint64_t expansions = in_construction ? built : stats.expanded;
+  const std::string after = " after " + format_count(expansions) + (expansions == 1 ? " expansion (" : " expansions (") +
+                            format_count(stats.graph_nodes) + " graph nodes, " +
+                            format_bytes(double(stats.memory_bytes)) + "); whether a plan exists is unknown";
+  if (stop.node) return stopped + "node limit (" + format_count(opt.limits.max_nodes) + " nodes)" + after;
+  if (stop.memory) return stopped + "memory limit (" + format_bytes(double(opt.limits.max_memory_bytes)) + ")" + after;
+  return stopped + "time limit (" + format_number(opt.limits.time_limit) + " s)" + after;
+}
+
+NoPlanReason limit_reason(const Stopped& stop) {
+  if (stop.node) return NoPlanReason::NodeLimit;
+  if (stop.memory) return NoPlanReason::MemoryLimit;
+  return NoPlanReason::TimeLimit;
+}
+
+}  // namespace
+
+ProductGraph& Planner::kept_graph(task::System& ts, task::Labeling& lab, const PlannerOptions& opt) {
+  // A kept graph that holds half the memory limit is dropped (experience
+  // only speeds queries up), so that it cannot grow until every query stops.
+  const std::size_t max_bytes = opt.limits.max_memory_bytes;
+  if (graph_ && max_bytes && 2 * (graph_->memory_bytes() + experience_.memory_bytes()) > max_bytes) {
+    exp_heuristic_.reset();
+    graph_.reset();
+    experience_.forget_graph();
+  }
+  if (!graph_) {
+    MotionCostCache& cache = experience_.costs();
+    auto graph = std::make_unique<ProductGraph>(ts, lab, ba_, *model_, model_->expensive() ? &cache : nullptr);
+    exp_heuristic_ = algorithm_info(opt.algorithm).make_heuristic(*graph, experience_);  // may throw
+    graph_ = std::move(graph);
+  }
+  return *graph_;
+}
+
+PlanResult Planner::search(task::System& ts, task::Labeling& lab, const PlannerOptions& opt, Experienced experienced) {
+  PlanResult res;
+  const QueryClock clock(opt.limits.time_limit);
   if (!lab.unknown_atoms().empty())
-    return finish(NoPlanReason::UnknownName, "the task uses '" + lab.unknown_atoms().front() +
-                                                 "', which is neither a proposition of the scenario nor a "
-                                                 "proposition expression");
+    return clock.finish(std::move(res), NoPlanReason::UnknownName,
+                        "the task uses '" + lab.unknown_atoms().front() +
+                            "', which is neither a proposition of the scenario nor a proposition expression");
+  // The graph, experience and search of this query: the kept ones, or cold ones.
+  const bool exp = experienced == Experienced::Kept;
   std::unique_ptr<ProductGraph> cold_graph;
   std::unique_ptr<Experience> cold_experience;
   std::unique_ptr<LassoSearch> cold_search;
-  ProductGraph* g = nullptr;
-  Experience* x = nullptr;
-  LassoSearch* ls = nullptr;
+  std::unique_ptr<Heuristic> cold_heuristic;
   MotionCostCache& cache = experience_.costs();
+  ProductGraph* g = nullptr;
+  Experience* x = &experience_;
+  LassoSearch* ls = &search_;
   if (exp) {
-    // A kept graph that holds half the memory limit is dropped (experience
-    // only speeds queries up), so that it cannot grow until every query stops.
-    const std::size_t max_bytes = options_.limits.max_memory_bytes;
-    if (graph_ && max_bytes && 2 * (graph_->memory_bytes() + experience_.memory_bytes()) > max_bytes) {
-      exp_heuristic_.reset();
-      graph_.reset();
-      experience_.forget_graph();
-    }
-    if (!graph_) {
-      auto graph = std::make_unique<ProductGraph>(ts, lab, ba_, *model_, model_->expensive() ? &cache : nullptr);
-      exp_heuristic_ = algorithm_info(options_.algorithm).make_heuristic(*graph, experience_);  // may throw
-      graph_ = std::move(graph);
-    }
-    g = graph_.get();
-    x = &experience_;
-    ls = &search_;
+    g = &kept_graph(ts, lab, opt);
     cache.reset_counters();
   } else {
     cold_graph = std::make_unique<ProductGraph>(ts, lab, ba_, *model_, nullptr);
@@ -190,7 +276,8 @@ PlanResult Planner::search(task::System& ts, task::Labeling& lab, bool allow_dia
     ls = cold_search.get();
   }
   if (ba_.num_states() == 0 || !g->useful(ba_.initial))
-    return finish(NoPlanReason::Unsatisfiable, "the task is unsatisfiable: its Büchi automaton accepts no word");
+    return clock.finish(std::move(res), NoPlanReason::Unsatisfiable,
+                        "the task is unsatisfiable: its Büchi automaton accepts no word");
   const std::size_t before = g->size();
   std::vector<NodeId> starts;
   for (const std::uint32_t q : ba_starts_)
@@ -198,69 +285,41 @@ PlanResult Planner::search(task::System& ts, task::Labeling& lab, bool allow_dia
   if (starts.empty()) {
     std::string list;
     for (const std::uint32_t q : ba_starts_) list += (list.empty() ? "" : ", ") + std::to_string(q);
-    return finish(NoPlanReason::NoAcceptingCycle,
-                  "no accepting lasso is possible: from none of the automaton states the run is in {" + list +
-                      "} can the automaton still reach an accepting cycle");
+    return clock.finish(std::move(res), NoPlanReason::NoAcceptingCycle,
+                        "no accepting lasso is possible: from none of the automaton states the run is in {" + list +
+                            "} can the automaton still reach an accepting cycle");
   }
   res.stats.reused_nodes = before;
-  bool hit_node = false, hit_time = false, hit_memory = false;
   std::uint64_t built = 0;  // nodes the full construction expanded
-  if (options_.graph == GraphConstruction::Full) {
-    const std::int64_t c0 = steady_now_ns();
-    const std::uint64_t built0 = g->expansions();
-    std::function<void(std::int64_t)> tick;
-    if (options_.limits.on_progress) {
-      std::int64_t next = c0 + options_.limits.progress_interval_ns();
-      tick = [&, next](std::int64_t now) mutable {
-        if (now < next) return;
-        next = now + options_.limits.progress_interval_ns();
-        SearchProgress p;
-        p.phase = "constructing";
-        p.graph_nodes = g->size();
-        p.seconds = double(now - t0) * 1e-9;
-        options_.limits.on_progress(p);
-      };
-    }
-    if (!g->expand_all(starts, options_.limits.max_nodes, deadline, tick, options_.limits.max_memory_bytes)) {
-      if (g->size() >= options_.limits.max_nodes) hit_node = true;
-      else if (deadline && steady_now_ns() > deadline) hit_time = true;
-      else hit_memory = true;
-    }
-    built = g->expansions() - built0;
-    res.stats.construction_seconds = double(steady_now_ns() - c0) * 1e-9;
-  }
+  Stopped stop;
+  if (opt.graph == GraphConstruction::Full) stop = construct_full(*g, starts, opt, clock, built, res.stats);
   LassoResult r;
   const std::uint64_t exp0 = g->expansions();
-  if (!hit_node && !hit_time && !hit_memory) {
-    std::unique_ptr<Heuristic> h;
-    Heuristic* hp = nullptr;
-    if (exp) {
-      hp = exp_heuristic_.get();
-    } else {
-      h = algorithm_info(options_.algorithm).make_heuristic(*g, *x);
-      hp = h.get();
+  if (!stop.any()) {
+    Heuristic* h = exp_heuristic_.get();
+    if (!exp) {
+      cold_heuristic = algorithm_info(opt.algorithm).make_heuristic(*g, *x);
+      h = cold_heuristic.get();
     }
-    const bool astar = options_.algorithm != Algorithm::Dijkstra;
-    SearchLimits limits = options_.limits;
+    const bool astar = opt.algorithm != Algorithm::Dijkstra;
+    SearchLimits limits = opt.limits;
     if (limits.on_progress) {  // the search counts from its own start; report from the query's
-      const double offset = double(steady_now_ns() - t0) * 1e-9;
-      limits.on_progress = [this, offset](SearchProgress p) {
+      const double offset = clock.since_start(steady_now_ns());
+      limits.on_progress = [report = opt.limits.on_progress, offset](SearchProgress p) {
         p.seconds += offset;
-        options_.limits.on_progress(p);
+        report(p);
       };
     }
-    r = ls->run(*g, *x, starts, *hp, astar, exp, limits, deadline, res.stats);
-    hit_node = r.hit_node_limit;
-    hit_time = r.hit_time_limit;
-    hit_memory = r.hit_memory_limit;
+    r = ls->run(*g, *x, starts, *h, astar, exp, limits, clock.deadline, res.stats);
+    stop = {r.hit_node_limit, r.hit_time_limit, r.hit_memory_limit};
   }
   res.stats.successor_generations = g->expansions() - exp0;
   res.stats.generated = g->size() - before;
   res.stats.graph_nodes = g->size();
   res.stats.graph_edges = g->num_edges();
-  res.stats.hit_node_limit = hit_node;
-  res.stats.hit_time_limit = hit_time;
-  res.stats.hit_memory_limit = hit_memory;
+  res.stats.hit_node_limit = stop.node;
+  res.stats.hit_time_limit = stop.time;
+  res.stats.hit_memory_limit = stop.memory;
   if (exp && model_->expensive()) {
     res.stats.cache_used = true;
     res.stats.cache_hits = cache.hits();
@@ -270,83 +329,41 @@ PlanResult Planner::search(task::System& ts, task::Labeling& lab, bool allow_dia
       g->memory_bytes() + x->memory_bytes() + ls->memory_bytes() + (res.stats.cache_used ? cache.bytes() : 0);
   if (r.found) {
     res.found = true;
-    Plan& p = res.plan;
-    // Replay the (canonical) path on concrete states: a move of a group
-    // member at location a becomes a move of the lowest-numbered member of
-    // that group that is at a in the concrete state.
-    task::State concrete = ts.initial();
-    auto add_steps = [&](NodeId cur, const std::vector<std::uint32_t>& edges, std::vector<Step>& out) {
-      for (std::uint32_t e : edges) {
-        const ProductEdge& pe = g->edge(e);
-        task::Action a = task::Action::unpack(pe.action);
-        if (!a.is_stay() && ts.group_of(a.thing) >= 0) {
-          const std::uint32_t at = ts.location(g->state(cur), a.thing);
-          for (unsigned t = 0; t < ts.num_things(); ++t)
-            if (ts.group_of(t) == ts.group_of(a.thing) && ts.location(concrete, t) == at) {
-              a.thing = static_cast<std::uint16_t>(t);
-              break;
-            }
-        }
-        Step st;
-        st.action = a;
-        st.from = concrete;
-        concrete = ts.successor(concrete, a);
-        st.to = concrete;
-        st.ba_from = g->ba_state(cur);
-        st.ba_to = g->ba_state(pe.dst);
-        st.cost = pe.cost;
-        st.label = g->label(cur);
-        out.push_back(st);
-        cur = pe.dst;
-      }
-    };
-    p.prefix.reserve(r.prefix_edges.size());
-    p.cycle.reserve(r.cycle_edges.size());
-    add_steps(r.start, r.prefix_edges, p.prefix);
-    add_steps(r.cycle_start, r.cycle_edges, p.cycle);
-    p.prefix_cost = r.prefix_cost;
-    p.cycle_cost = r.cycle_cost;
-    res.stats.seconds = double(steady_now_ns() - t0) * 1e-9;
+    res.plan = replay_lasso(*g, r);
+    res.stats.seconds = clock.since_start(steady_now_ns());
     return res;
   }
   // A limit says nothing about whether a plan exists: the message says so,
   // and how far the query got.
-  const bool in_construction = res.stats.expanded == 0 && built > 0;
-  const std::string stopped = in_construction ? "the full construction stopped at its " : "the search stopped at its ";
-  const std::uint64_t expansions = in_construction ? built : res.stats.expanded;
-  const std::string after = " after " + format_count(expansions) + (expansions == 1 ? " expansion (" : " expansions (") +
-                            format_count(res.stats.graph_nodes) + " graph nodes, " +
-                            format_bytes(double(res.stats.memory_bytes)) + "); whether a plan exists is unknown";
-  if (hit_node)
-    return finish(NoPlanReason::NodeLimit,
-                  stopped + "node limit (" + format_count(options_.limits.max_nodes) + " nodes)" + after);
-  if (hit_memory)
-    return finish(NoPlanReason::MemoryLimit,
-                  stopped + "memory limit (" + format_bytes(double(options_.limits.max_memory_bytes)) + ")" + after);
-  if (hit_time)
-    return finish(NoPlanReason::TimeLimit, stopped + "time limit (" + format_number(options_.limits.time_limit) +
-                                               " s)" + after);
-  if (allow_diagnosis) {
-    task::System relaxed(scenario_, placement_, hand_, task::System::Options{true});
-    task::Labeling rlab(relaxed, ba_.atoms, parse_atom);
-    if (options_.symmetry && !(model_->depends() & kDependsThing)) relaxed.set_symmetry(rlab.symmetry_groups());
-    PlannerOptions saved = options_;
-    options_.algorithm = Algorithm::AStar;
-    options_.graph = GraphConstruction::Partial;
-    PlanResult rr;
-    try {
-      rr = search(relaxed, rlab, false);
-    } catch (...) {  // e.g. a cost model's bad value: the options stay the user's
-      options_ = std::move(saved);
-      throw;
-    }
-    options_ = std::move(saved);
-    if (rr.found)
-      return finish(NoPlanReason::Capacity,
-                    "no plan within the capacities of the locations (there is one if capacities are ignored)");
+  if (stop.any()) return clock.finish(std::move(res), limit_reason(stop), limit_message(stop, opt, res.stats, built));
+  return clock.finish(std::move(res), NoPlanReason::NoAcceptingCycle,
+                      "no accepting lasso is reachable from the current state: the task cannot be achieved from here");
+}
+
+void Planner::diagnose(PlanResult& res, std::int64_t t0) {
+  // The same TS without capacities (nor rooms), forbidden moves kept: is
+  // there any lasso at all? Existence only, no costs (plan/lasso_exists.hpp).
+  const std::int64_t d0 = steady_now_ns();
+  task::System relaxed(scenario_, placement_, hand_, task::System::Options{true});
+  relaxed.forbid_moves(forbidden_);
+  task::Labeling rlab(relaxed, ba_.atoms, parse_atom);
+  if (options_.symmetry && !(model_->depends() & kDependsThing)) {
+    relaxed.set_symmetry(rlab.symmetry_groups());
+    relaxed.set_container_symmetry(rlab.container_groups());
   }
-  return finish(NoPlanReason::NoAcceptingCycle,
-                "no accepting lasso is reachable from the current state: the task cannot be achieved from here");
+  const QueryClock clock(options_.limits.time_limit);
+  const LassoExistence e =
+      find_accepting_lasso(relaxed, rlab, ba_, ba_starts_, options_.limits.max_nodes, clock.deadline);
+  const std::int64_t now = steady_now_ns();
+  res.stats.diagnosis_nodes = e.nodes;
+  res.stats.diagnosis_seconds = double(now - d0) * 1e-9;
+  res.stats.seconds = double(now - t0) * 1e-9;
+  if (e.exists) {
+    res.reason = NoPlanReason::Capacity;
+    res.message = "no plan within the capacities of the locations (there is one if capacities are ignored)";
+  } else if (e.stopped) {
+    res.message += " (whether there is a plan if capacities are ignored is unknown: that check stopped at its limit)";
+  }
 }
 
 const char* to_string(NoPlanReason r) {

@@ -55,7 +55,7 @@ struct PlannerOptions {
   std::string cost = "euclid";                 // a registered name (plan/registry.hpp); ignored if `model` is set
   std::shared_ptr<MotionCostModel> model;      // e.g. the robot layer's ik model
   SearchLimits limits;
-  bool diagnose_capacity = true;               // on failure, retry without capacities to tell "capacity"
+  bool diagnose_capacity = true;               // on failure, check for a lasso without capacities to tell "capacity"
   bool symmetry = true;                        // search the quotient by interchangeable objects
                                                // (task::System::set_symmetry; costs are unchanged)
 };
@@ -129,7 +129,20 @@ class Planner {
  private:
   void init();
   void rebuild();  // TS, labeling, graph from scenario_ + placement_ + hand_
-  PlanResult search(task::System& ts, task::Labeling& lab, bool allow_diagnosis);
+  // How a query treats experience: the planner's kept graph, experience and
+  // search (astar-exp), or cold ones made for the query and dropped after it.
+  enum class Experienced { Kept, Cold };
+  // One query on `ts` (its initial state is the start) with the options
+  // `opt`: the graph, the start nodes, the full construction if asked, the
+  // lasso search, the statistics, the plan replayed on concrete states.
+  PlanResult search(task::System& ts, task::Labeling& lab, const PlannerOptions& opt, Experienced experienced);
+  // The kept product graph for `ts` (made, or dropped and remade when it holds
+  // half the memory limit).
+  ProductGraph& kept_graph(task::System& ts, task::Labeling& lab, const PlannerOptions& opt);
+  // A query found no lasso: is that because of capacities? Sets reason
+  // Capacity if a lasso exists without them (docs/planning.md "Capacity
+  // diagnosis"); adds its work to the statistics. `t0`: the query's start.
+  void diagnose(PlanResult& res, std::int64_t t0);
 
   world::Scenario scenario_;
   PlannerOptions options_;

@@ -150,6 +150,24 @@ std::vector<std::vector<unsigned>> Labeling::symmetry_groups() const {
   return groups;
 }
 
+std::vector<std::vector<unsigned>> Labeling::container_groups() const {
+  auto named = named_things();
+  for (const Node& n : nodes_)
+    if (n.loc >= 0 && ts_->is_container_location(static_cast<unsigned>(n.loc)))
+      named[ts_->thing_of_location(static_cast<unsigned>(n.loc))] = true;
+  std::vector<std::vector<unsigned>> groups;
+  for (unsigned t = ts_->num_objects(); t < ts_->num_things(); ++t) {
+    if (named[t]) continue;
+    std::size_t g = 0;
+    while (g < groups.size() &&
+           !(ts_->thing_class(groups[g][0]) == ts_->thing_class(t) && ts_->same_containers(groups[g][0], t)))
+      ++g;
+    if (g == groups.size()) groups.emplace_back();
+    groups[g].push_back(t);
+  }
+  return groups;
+}
+
 automata::Letter Labeling::label(const State& s) const {
   automata::Letter l = 0;
   for (std::size_t i = 0; i < roots_.size(); ++i)

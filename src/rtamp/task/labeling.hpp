@@ -64,6 +64,10 @@ class Labeling {
   // the same footprint rules and forbidden moves), so labels and enabled moves
   // are invariant under permuting a group.
   std::vector<std::vector<unsigned>> symmetry_groups() const;
+  // The container groups it allows (System::set_container_symmetry):
+  // containers of one class that no atom names, as a thing or as a location,
+  // and that System::same_containers() says are alike.
+  std::vector<std::vector<unsigned>> container_groups() const;
 
  private:
   std::uint32_t compile(const world::PropExpr& e);

@@ -61,6 +61,7 @@ System::System(const world::Scenario& scenario, const world::Placement& placemen
   group_.assign(num_things(), -1);
   prev_.assign(num_things(), -1);
   next_.assign(num_things(), -1);
+  container_group_.assign(num_things(), -1);
 }
 
 void System::build_fit_tables() {
@@ -92,6 +93,13 @@ void System::forbid_move(unsigned thing, unsigned loc) {
   if (thing >= num_things() || loc >= num_locations() || forbidden(thing, loc)) return;
   forbidden_.emplace_back(thing, loc);
   allowed_[std::size_t{thing} * num_locations() + loc] = 0;
+  // A container moved or filled differently is no longer interchangeable.
+  for (const unsigned c : {thing, is_container_location(loc) ? thing_of_location(loc) : thing})
+    if (container_group_[c] >= 0) {
+      std::vector<std::vector<unsigned>> cgroups = container_groups_;
+      for (auto& g : cgroups) g.erase(std::remove(g.begin(), g.end(), c), g.end());
+      set_container_symmetry(cgroups);
+    }
   if (group_[thing] < 0) return;
   // No longer interchangeable with the rest of its group.
   std::vector<std::vector<unsigned>> groups = groups_;
@@ -156,7 +164,143 @@ void System::set_symmetry(const std::vector<std::vector<unsigned>>& groups) {
   has_symmetry_ = !groups_.empty();
 }
 
+bool System::same_containers(unsigned a, unsigned b) const {
+  if (!same_moves(a, b) || !is_container(a)) return false;
+  const unsigned L = num_locations(), la = location_of_container(a), lb = location_of_container(b);
+  if (capacities_[la] != capacities_[lb] || rooms_[la] != rooms_[lb]) return false;
+  for (unsigned o = 0; o < n_objects_; ++o) {
+    const std::size_t row = std::size_t{o} * L;
+    if (allowed_[row + la] != allowed_[row + lb] || cells_[row + la] != cells_[row + lb]) return false;
+  }
+  return true;
+}
+
+void System::set_container_symmetry(const std::vector<std::vector<unsigned>>& groups) {
+  // Checked before anything changes (a bad call leaves the symmetry as it was).
+  std::vector<std::vector<unsigned>> clean;
+  std::vector<bool> taken(num_things(), false);
+  for (auto g : groups) {
+    std::sort(g.begin(), g.end());
+    g.erase(std::unique(g.begin(), g.end()), g.end());
+    if (g.size() < 2) continue;
+    for (unsigned t : g) {
+      if (t >= num_things() || !is_container(t) || taken[t])
+        throw Error("bad container symmetry group (objects and overlapping groups are not allowed)");
+      taken[t] = true;
+    }
+    for (unsigned t : g)
+      if (!same_containers(t, g[0]))
+        throw Error("bad container symmetry group ('" + thing_names_[t] + "' and '" + thing_names_[g[0]] +
+                    "' differ in footprint, capacity or forbidden moves)");
+    clean.push_back(std::move(g));
+  }
+  container_group_.assign(num_things(), -1);
+  container_groups_ = std::move(clean);
+  for (std::size_t g = 0; g < container_groups_.size(); ++g)
+    for (const unsigned c : container_groups_[g]) container_group_[c] = static_cast<int>(g);
+}
+
+namespace {
+// Keys of the members of one container group, `width` entries each:
+// region, hand (0 in it, 1 not), counts per object group, then the other
+// objects it holds in ascending order (padded with 0xffffffff).
+struct ContainerKeys {
+  std::vector<std::uint32_t> keys;
+  std::vector<unsigned> order, fill;
+  unsigned width = 0;
+  bool less(unsigned a, unsigned b) const {
+    const std::uint32_t* ka = keys.data() + std::size_t{a} * width;
+    const std::uint32_t* kb = keys.data() + std::size_t{b} * width;
+    return std::lexicographical_compare(ka, ka + width, kb, kb + width);
+  }
+  bool equal(unsigned a, unsigned b) const {
+    const std::uint32_t* ka = keys.data() + std::size_t{a} * width;
+    return std::equal(ka, ka + width, keys.data() + std::size_t{b} * width);
+  }
+};
+
+// Fills k.keys with the keys of the members of container group g in s.
+void fill_container_keys(const System& ts, const State& s, const std::vector<unsigned>& g, unsigned n_groups,
+                         ContainerKeys& k) {
+  const unsigned m = static_cast<unsigned>(g.size());
+  k.width = 2 + n_groups + ts.num_objects();
+  k.keys.assign(std::size_t{m} * k.width, 0);
+  k.fill.assign(m, 2 + n_groups);
+  const std::uint32_t hand_at = ts.hand(s);
+  for (unsigned i = 0; i < m; ++i) {
+    std::uint32_t* key = k.keys.data() + std::size_t{i} * k.width;
+    key[0] = ts.location(s, g[i]);
+    key[1] = hand_at == ts.location_of_container(g[i]) ? 0 : 1;
+    std::fill(key + 2 + n_groups, key + k.width, 0xffffffffu);
+  }
+  const int group = ts.container_group_of(g[0]);
+  for (unsigned o = 0; o < ts.num_objects(); ++o) {
+    const std::uint32_t l = ts.location(s, o);
+    if (!ts.is_container_location(l) || ts.container_group_of(ts.thing_of_location(l)) != group) continue;
+    const auto i = static_cast<unsigned>(std::find(g.begin(), g.end(), ts.thing_of_location(l)) - g.begin());
+    std::uint32_t* key = k.keys.data() + std::size_t{i} * k.width;
+    if (ts.group_of(o) >= 0) ++key[2 + static_cast<unsigned>(ts.group_of(o))];
+    else key[k.fill[i]++] = o;
+  }
+}
+}  // namespace
+
+void System::order_containers(State& s, unsigned* src) const {
+  thread_local ContainerKeys k;
+  std::uint32_t relabel[kMaxLocations + 1];
+  for (unsigned l = 0; l <= num_locations(); ++l) relabel[l] = l;
+  const State old = s;
+  const unsigned n_groups = static_cast<unsigned>(groups_.size());
+  const std::uint32_t hand_at = hand(old);
+  for (const auto& g : container_groups_) {
+    const unsigned m = static_cast<unsigned>(g.size());
+    fill_container_keys(*this, old, g, n_groups, k);
+    // Insertion sort (groups are small; stable: equal keys keep member order).
+    k.order.resize(m);
+    for (unsigned i = 0; i < m; ++i) {
+      unsigned j = i;
+      while (j > 0 && k.less(i, k.order[j - 1])) {
+        k.order[j] = k.order[j - 1];
+        --j;
+      }
+      k.order[j] = i;
+    }
+    for (unsigned i = 0; i < m; ++i) {
+      const unsigned from = g[k.order[i]], to = g[i];
+      if (src) src[to] = from;
+      layout_.set(s, to, location(old, from));
+      relabel[location_of_container(from)] = location_of_container(to);
+    }
+  }
+  for (unsigned o = 0; o < n_objects_; ++o) layout_.set(s, o, relabel[location(old, o)]);
+  layout_.set(s, hand_field(), relabel[hand_at]);
+}
+
+void System::container_twins(const State& s, unsigned* first) const {
+  for (unsigned c = 0; c < n_containers_; ++c) first[c] = n_objects_ + c;
+  const unsigned n_groups = static_cast<unsigned>(groups_.size());
+  thread_local ContainerKeys k;
+  for (const auto& g : container_groups_) {
+    const unsigned m = static_cast<unsigned>(g.size());
+    fill_container_keys(*this, s, g, n_groups, k);
+    for (unsigned i = 1; i < m; ++i)
+      for (unsigned j = 0; j < i; ++j)
+        if (k.equal(i, j)) {
+          first[g[i] - n_objects_] = first[g[j] - n_objects_];
+          break;
+        }
+  }
+}
+
+void System::canonical_sources(const State& s, unsigned* src) const {
+  for (unsigned t = 0; t < num_things(); ++t) src[t] = t;
+  if (container_groups_.empty()) return;
+  State c = s;
+  order_containers(c, src);
+}
+
 void System::canonicalize(State& s) const {
+  if (!container_groups_.empty()) order_containers(s, nullptr);
   if (!has_symmetry_) return;
   std::uint32_t vals[kStateWords * 64];
   for (const auto& g : groups_) {
@@ -168,6 +312,14 @@ void System::canonicalize(State& s) const {
 
 State System::canonical_successor(const State& s, const Action& a) const {
   State r = successor(s, a);
+  // The containers' order changes only if a key changes: a member moved, or
+  // something (the thing, or the hand) put into or taken out of a member.
+  if (!container_groups_.empty() && !a.is_stay() &&
+      (container_group_[a.thing] >= 0 || interchangeable_location(a.to) ||
+       interchangeable_location(location(s, a.thing)) || interchangeable_location(hand(s)))) {
+    canonicalize(r);
+    return r;
+  }
   if (!has_symmetry_ || a.is_stay() || group_[a.thing] < 0) return r;
   // Bubble the moved member to its place; the others stay sorted.
   unsigned t = a.thing;

@@ -160,6 +160,35 @@ class System {
   }
   // successor() followed by canonicalisation (cheap: one member moved).
   State canonical_successor(const State& s, const Action& a) const;
+  // Interchangeable containers (e.g. the trays of a class patrol): each group
+  // lists containers that nothing tells apart — same class, never named by a
+  // proposition as a thing or as a location, and same_containers(): the same
+  // moves and capacity, and every object's moves into them alike. A
+  // canonical state orders each group's members by a key of what each holds —
+  // (its region, the hand in it or not, how many members of each object
+  // group are in it, which other objects are in it) — and relabels the
+  // locations of their contents and of the hand with them; objects are then
+  // sorted as above. States that differ by permuting a group's containers
+  // (their contents going with them) and the object groups have the same
+  // canonical state, and labels, enabled moves and costs (a model that ignores
+  // which thing it moves) are invariant under such permutations, so optimal
+  // costs are kept. Members with equal keys hold interchangeable contents:
+  // for_each_move offers only the first of them as a destination and as a
+  // container to move. Throws on a group that is not interchangeable (the
+  // symmetry is left as it was).
+  void set_container_symmetry(const std::vector<std::vector<unsigned>>& groups);
+  bool same_containers(unsigned a, unsigned b) const;
+  int container_group_of(unsigned thing) const { return container_group_[thing]; }
+  bool has_container_symmetry() const { return !container_groups_.empty(); }
+  // Whether `loc` is the location of a container in a group.
+  bool interchangeable_location(unsigned loc) const {
+    return is_container_location(loc) && container_group_[thing_of_location(loc)] >= 0;
+  }
+  // The things canonical(s) puts in each place: src[t] is the thing of s
+  // that becomes thing t (t itself outside container groups; objects of
+  // object groups are not traced: any member at the place will do). `src`
+  // has num_things() entries.
+  void canonical_sources(const State& s, unsigned* src) const;
 
   // Capacities and rooms respected, no container in a container, fields in range.
   bool valid(const State& s) const;
@@ -200,6 +229,14 @@ class System {
   std::vector<int> group_;                  // per thing: group index or -1
   std::vector<int> prev_, next_;            // per thing: neighbour in its group or -1
   std::vector<std::vector<unsigned>> groups_;
+  std::vector<int> container_group_;        // per thing: container group index or -1
+  std::vector<std::vector<unsigned>> container_groups_;
+  // Orders the containers of each group by their keys (relabelling contents
+  // and the hand); fills src (if not null) as canonical_sources() says.
+  void order_containers(State& s, unsigned* src) const;
+  // Per container: the first member of its group with the same key in s
+  // (itself if none before it), for for_each_move.
+  void container_twins(const State& s, unsigned* first) const;
 };
 
 template <class F>
@@ -209,15 +246,22 @@ void System::for_each_move(const State& s, F&& f) const {
   occupancy(s, counts, used);
   const unsigned L = num_locations();
   const bool bounded = !options_.ignore_capacity;
+  // An interchangeable container with the same contents as an earlier member
+  // of its group gives the same canonical successors, as a destination or moved.
+  unsigned twin[kMaxLocations + 1];
+  const bool containers = !container_groups_.empty();
+  if (containers) container_twins(s, twin);
   for (unsigned t = 0; t < num_things(); ++t) {
     const std::uint32_t at = location(s, t);
     // An interchangeable twin at the same place gives the same canonical successors.
     if (has_symmetry_ && prev_[t] >= 0 && location(s, static_cast<unsigned>(prev_[t])) == at) continue;
+    if (containers && is_container(t) && twin[t - n_objects_] != t) continue;
     const unsigned limit = is_container(t) ? n_regions_ : L;
     const std::uint8_t* row = allowed_.data() + std::size_t{t} * L;
     const std::int64_t* cell = cells_.data() + std::size_t{t} * L;
     for (unsigned l = 0; l < limit; ++l) {
       if (!row[l] || l == at) continue;
+      if (containers && l >= n_regions_ && twin[l - n_regions_] != thing_of_location(l)) continue;
       if (bounded && (counts[l] >= capacities_[l] || used[l] + cell[l] > rooms_[l])) continue;
       f(Action::move(static_cast<std::uint16_t>(t), static_cast<std::uint16_t>(l)));
     }
