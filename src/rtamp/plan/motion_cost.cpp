@@ -59,6 +59,11 @@ double MotionCostModel::transport_bound(const TransportQuery& t) const {
 // the hand must leave t, reach the next thing (at p_x, or at some other
 // location point, at least `nearest` away) and come back:
 // min (a + c) + sum of the (m - 1) smallest 2 min(c_x, nearest) (B3).
+// Things that share one point p (B4): if k of them must arrive, the hand's
+// path, projected on the line from p to t, crosses each point between them k
+// times carrying one of them forward and k - 1 times coming back, whatever
+// detours they take: (2k - 1) |p - t| (docs/planning.md, "The chain bound's
+// groups"); k = m minus the candidates elsewhere.
 double EuclidCost::transport_bound(const TransportQuery& t) const {
   std::vector<double>& v = *t.scratch;
   double min_a = std::numeric_limits<double>::infinity(), min_s = min_a;
@@ -78,6 +83,18 @@ double EuclidCost::transport_bound(const TransportQuery& t) const {
     v.clear();
     for (std::size_t i = 0; i < t.n; ++i) v.push_back(2 * std::min(distance(t.from[i], t.to), t.nearest));
     best = std::max(best, min_s + sum_smallest(v, t.m - 1));  // B3
+    for (std::size_t i = 0; i < t.n; ++i) {  // B4, once per distinct point (its first candidate)
+      std::size_t same = 0;
+      bool first = true;
+      for (std::size_t j = 0; j < t.n && first; ++j) {
+        if (t.from[j] != t.from[i]) continue;
+        first = j >= i;
+        ++same;
+      }
+      if (!first || same + t.m <= t.n) continue;
+      const std::size_t k = same + t.m - t.n;
+      best = std::max(best, group_carry_bound(t.from[i], t.to, k));
+    }
   }
   return best;
 }

@@ -249,7 +249,7 @@ PlanResult Planner::search(task::System& ts, task::Labeling& lab, bool allow_dia
         options_.limits.on_progress(p);
       };
     }
-    r = ls->run(*g, *x, starts, *hp, astar, exp, limits, deadline, res.stats);
+    r = ls->run(*g, *x, starts, *hp, LassoConfig{astar, exp}, Termination{limits, deadline}, res.stats);
     hit_node = r.hit_node_limit;
     hit_time = r.hit_time_limit;
     hit_memory = r.hit_memory_limit;
