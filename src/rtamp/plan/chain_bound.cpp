@@ -10,14 +10,6 @@ namespace {
 
 using Kind = world::PropExpr::Kind;
 
-// The model's carry_bound between regions a and b, checked.
-double checked_carry_bound(const MotionCostModel& model, const task::System& ts, unsigned a, unsigned b) {
-  const double d = model.carry_bound(ts.region_center(a), ts.region_center(b));
-  if (!valid_bound(d)) [[unlikely]]
-    throw_bad_bound(model, "carry_bound from " + ts.location_name(a) + " to " + ts.location_name(b), d);
-  return d;
-}
-
 // Records in `at` the locations that proposition node `node`, wanted `want`,
 // forces (see the header); false if it forces a thing to two places (the
 // literal set can then never hold). Anything else forces nothing.
@@ -62,35 +54,22 @@ bool force(const task::Labeling& lab, std::uint32_t node, bool want, std::vector
 constexpr std::uint32_t kMaxNodes = 48;
 
 // D between a state where thing t is in region a[t] and a later one where it
-// is in b[t] (-1: either unknown): the sum of the carry bounds of the things
-// that change region, or, if larger, the largest group_carry_bound of the
-// things that share one (from, to) pair — each alone bounds the moves in
-// between (one group's return trips may carry another group's things, so the
-// groups' surpluses do not add up).
+// is in b[t] (-1: either unknown): the model's carry_set_bound for the things
+// that change region (every move carries one thing: no containers here).
 double between(const MotionCostModel& model, const task::System& ts, const std::vector<int>& a,
                const std::vector<int>& b) {
-  struct Group {
-    int from, to;
-    std::size_t k;
-  };
-  std::vector<Group> groups;
-  double sum = 0;
+  thread_local std::vector<world::Vec3> from, to;
+  from.clear();
+  to.clear();
   for (std::size_t t = 0; t < a.size(); ++t) {
     if (a[t] < 0 || b[t] < 0 || a[t] == b[t]) continue;
-    sum += checked_carry_bound(model, ts, static_cast<unsigned>(a[t]), static_cast<unsigned>(b[t]));
-    auto it = std::find_if(groups.begin(), groups.end(), [&](const Group& g) { return g.from == a[t] && g.to == b[t]; });
-    if (it == groups.end()) groups.push_back({a[t], b[t], 1});
-    else ++it->k;
+    from.push_back(ts.region_center(static_cast<unsigned>(a[t])));
+    to.push_back(ts.region_center(static_cast<unsigned>(b[t])));
   }
-  double best = sum;
-  for (const Group& g : groups) {
-    const auto f = static_cast<unsigned>(g.from), to = static_cast<unsigned>(g.to);
-    const double d = model.group_carry_bound(ts.region_center(f), ts.region_center(to), g.k);
-    if (!valid_bound(d)) [[unlikely]]
-      throw_bad_bound(model, "group_carry_bound from " + ts.location_name(f) + " to " + ts.location_name(to), d);
-    best = std::max(best, d);
-  }
-  return best;
+  const double d = model.carry_set_bound(from.data(), to.data(), from.size());
+  if (!valid_bound(d)) [[unlikely]]
+    throw_bad_bound(model, "carry_set_bound", d);
+  return d;
 }
 
 }  // namespace

@@ -10,11 +10,10 @@
 // c, then later c', every thing that c forces to L and c' to L' != L moves from
 // L to L' in between: with no containers every move carries exactly one thing,
 // so that part of the path costs at least
-//   D(c, c') = sum over such things of the model's carry_bound(L, L'),
-// and at least the model's group_carry_bound(L, L', k) of the k of them that
-// share one pair (L, L') (euclid: (2k - 1) |L - L'|, the hand's way back
-// between them; docs/planning.md "The chain bound's groups"): D is the
-// largest of these (groups' surpluses do not add up).
+//   D(c, c') = the model's carry_set_bound of those moves (L to L' for each
+// such thing): at least the sum of their carry_bound(L, L'), and for euclid
+// also the hand's way back between them (docs/planning.md "The hand's way
+// back").
 // Along a path, sum D over consecutive *forcing* guards (the segments do not
 // overlap); the first forcing guard c1 costs LB(s, c1) from the start state s.
 // A lasso through an accepting node with automaton state qa also pays, in its
