@@ -232,6 +232,13 @@ void ChainBound::dijkstra(std::uint32_t src, bool skip_src) {
   }
 }
 
+double ChainBound::from_state(const task::State& s, std::uint32_t c) const {
+  thread_local std::vector<int> at;
+  at.resize(ts_->num_things());
+  for (unsigned t = 0; t < ts_->num_things(); ++t) at[t] = static_cast<int>(ts_->location(s, t));
+  return between(*model_, *ts_, at, forced_[c]);
+}
+
 double ChainBound::cycle_bound_at(const task::State& s, std::uint32_t q) const {
   return path_bound(s, q, s, q, accepting_[q]);
 }

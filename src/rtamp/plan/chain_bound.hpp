@@ -56,6 +56,9 @@ class ChainBound {
   bool enabled() const { return enabled_; }
   // The forcing guards; bound() takes LB(s, cube) for each, in this order.
   const std::vector<automata::Cube>& forcing_cubes() const { return cubes_; }
+  // D from s's locations to forcing_cubes()[c]'s: also a bound on the way
+  // from s to a state where that guard holds (a first LB(s, c) for bound()).
+  double from_state(const task::State& s, std::uint32_t c) const;
   // The bound above from automaton state q, given first[i] = LB(s, forcing_cubes()[i]).
   double bound(std::uint32_t q, const std::vector<double>& first) const;
   // No cycle of the product through an accepting node costs less (the least

@@ -62,7 +62,8 @@ double GuardHeuristic::evaluate(const task::State& s, std::uint32_t q) {
   }
   if (chain_ && h < kInf) {
     const auto& cubes = chain_->forcing_cubes();
-    for (std::size_t i = 0; i < cubes.size(); ++i) chain_first_[i] = cube_bound(s, cubes[i]);
+    for (std::size_t i = 0; i < cubes.size(); ++i)
+      chain_first_[i] = std::max(cube_bound(s, cubes[i]), chain_->from_state(s, static_cast<std::uint32_t>(i)));
     h = std::max(h, chain_->bound(q, chain_first_));
   }
   return h;
