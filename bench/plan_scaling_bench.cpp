@@ -16,8 +16,8 @@
 // trays grid goes in scaling_grid's marked line).
 // Counters: regions, objects, trays, task, generated, expanded, memory_bytes,
 // bytes_per_node, cost, limit. A plan that stops at a limit (20 s, 40 M
-// nodes) is never reported as a time: its run is an error "limit: ..." and
-// its counter limit is 1 (0 for every finished plan).
+// nodes) is never reported as a time: its run is an error "limit: ...", its
+// label "<task> limit" and its counter limit is 1 (0 for every finished plan).
 // Machine-readable output for the plot (scripts/plot-scaling):
 //   build/bench/plan_scaling_bench --benchmark_out_format=csv
 //       --benchmark_out=docs/results/plan-scaling.csv
@@ -92,6 +92,7 @@ void BM_PlanScaling(benchmark::State& state) {
   state.counters["cost"] = r.found && !limit ? r.plan.cost() : -1;
   state.counters["limit"] = limit ? 1 : 0;
   if (limit) {
+    state.SetLabel(std::string(kTaskNames[task]) + " limit");
     state.SkipWithError(("limit: " + (r.message.empty() ? std::string("stopped at a limit") : r.message)).c_str());
     return;
   }
