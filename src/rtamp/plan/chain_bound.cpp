@@ -10,6 +10,14 @@ namespace {
 
 using Kind = world::PropExpr::Kind;
 
+// The model's carry_bound between regions a and b, checked.
+double checked_carry_bound(const MotionCostModel& model, const task::System& ts, unsigned a, unsigned b) {
+  const double d = model.carry_bound(ts.region_center(a), ts.region_center(b));
+  if (!valid_bound(d)) [[unlikely]]
+    throw_bad_bound(model, "carry_bound from " + ts.location_name(a) + " to " + ts.location_name(b), d);
+  return d;
+}
+
 // Records in `at` the locations that proposition node `node`, wanted `want`,
 // forces (see the header); false if it forces a thing to two places (the
 // literal set can then never hold). Anything else forces nothing.
@@ -117,6 +125,9 @@ ChainBound::ChainBound(const task::System& ts, const task::Labeling& lab, const 
   bool positive = false;
   for (std::uint32_t i = 0; i < n_forcing_; ++i)
     for (std::uint32_t j = 0; j < n_forcing_; ++j) {
+      for (unsigned t = 0; t < ts.num_things(); ++t)  // each pair's carry_bound checked, named in the error
+        if (forced[i][t] >= 0 && forced[j][t] >= 0 && forced[i][t] != forced[j][t])
+          (void)checked_carry_bound(model, ts, static_cast<unsigned>(forced[i][t]), static_cast<unsigned>(forced[j][t]));
       const double sum = between(model, ts, forced[i], forced[j]);
       d_[std::size_t{i} * n_forcing_ + j] = sum;
       positive = positive || sum > 0;
