@@ -2,19 +2,22 @@
 // regions, for four kinds of task (docs/design.md "Benchmarks"; the figure and
 // table are in docs/benchmarks.md, "Scaling").
 //
-//   BM_PlanScaling/<task>/<M>/<n>   a cold A* plan (partial construction,
+//   BM_PlanScaling/<task>/<M>/<n>/<C>  a cold A* plan (partial construction,
 //                                   `euclid`, interchangeable objects merged)
 //                                   on `rtamp gen --regions M --objects n
-//                                   --layout line` with the task below
+//                                   --containers C --layout line` with the task below
 //
 // Tasks (every block starts in r1; regions lie on a line 0.5 m apart):
 //   0 reach     F G all_in_r2                       move everything once
 //   1 sequence  F (all_in_r3 & F G all_in_r2)       gather in r3, then settle in r2
 //   2 split     F G (half_in_r2 & half_in_r3)       ceil(n/2) blocks to r2, floor(n/2) to r3
 //   3 patrol    G F all_in_r2 & G F all_in_r3       a cycle that moves everything twice
-// Grids: n = 1..24 at M = 5 and M = 3..64 at n = 4.
-// Counters: regions, objects, task, generated, expanded, memory_bytes,
-// bytes_per_node, cost. A plan stops at 20 s (reported as an error).
+// Grids: n = 1..48 at M = 5 and M = 3..64 at n = 4, no trays (C = 0; the
+// trays grid goes in scaling_grid's marked line).
+// Counters: regions, objects, trays, task, generated, expanded, memory_bytes,
+// bytes_per_node, cost, limit. A plan that stops at a limit (20 s, 40 M
+// nodes) is never reported as a time: its run is an error "limit: ...", its
+// label "<task> limit" and its counter limit is 1 (0 for every finished plan).
 // Machine-readable output for the plot (scripts/plot-scaling):
 //   build/bench/plan_scaling_bench --benchmark_out_format=csv
 //       --benchmark_out=docs/results/plan-scaling.csv
@@ -32,10 +35,11 @@ using namespace rtamp;
 
 const char* kTaskNames[] = {"reach", "sequence", "split", "patrol"};
 
-world::Scenario scaling_scenario(int task, int regions, int objects) {
+world::Scenario scaling_scenario(int task, int regions, int objects, int trays) {
   world::GeneratorOptions g;
   g.regions = regions;
   g.objects = objects;
+  g.containers = trays;
   g.layout = world::GeneratorOptions::Layout::Line;
   switch (task) {
     case 0: break;  // F G all_in_r2 (the generator's default)
@@ -59,7 +63,8 @@ void BM_PlanScaling(benchmark::State& state) {
   const int task = static_cast<int>(state.range(0));
   const int regions = static_cast<int>(state.range(1));
   const int objects = static_cast<int>(state.range(2));
-  const world::Scenario scenario = scaling_scenario(task, regions, objects);
+  const int trays = static_cast<int>(state.range(3));
+  const world::Scenario scenario = scaling_scenario(task, regions, objects, trays);
   plan::PlannerOptions o;
   o.algorithm = plan::Algorithm::AStar;
   o.cost = "euclid";
@@ -67,31 +72,42 @@ void BM_PlanScaling(benchmark::State& state) {
   o.limits.max_nodes = 40'000'000;
   o.limits.max_memory_bytes = 0;  // the node and time limits bound these runs
   plan::PlanResult r;
+  bool limit = false;
   for (auto _ : state) {
     plan::Planner p(scenario, o);  // translation and TS set-up are not timed
     (void)p.system();
     r = p.plan();
+    limit = r.stats.hit_node_limit || r.stats.hit_time_limit || r.stats.hit_memory_limit;
+    if (limit || !r.found) break;  // no time is recorded for a plan that did not finish
     state.SetIterationTime(r.stats.seconds);
-    if (!r.found) {
-      state.SkipWithError(("no plan: " + r.message).c_str());
-      break;
-    }
   }
   state.counters["task"] = task;
   state.counters["regions"] = regions;
   state.counters["objects"] = objects;
+  state.counters["trays"] = trays;
   state.counters["generated"] = double(r.stats.generated);
   state.counters["expanded"] = double(r.stats.expanded);
   state.counters["memory_bytes"] = double(r.stats.memory_bytes);
   state.counters["bytes_per_node"] = r.stats.bytes_per_node();
-  state.counters["cost"] = r.found ? r.plan.cost() : -1;
+  state.counters["cost"] = r.found && !limit ? r.plan.cost() : -1;
+  state.counters["limit"] = limit ? 1 : 0;
+  if (limit) {
+    state.SetLabel(std::string(kTaskNames[task]) + " limit");
+    state.SkipWithError(("limit: " + (r.message.empty() ? std::string("stopped at a limit") : r.message)).c_str());
+    return;
+  }
+  if (!r.found) {
+    state.SkipWithError(("no plan: " + r.message).c_str());
+    return;
+  }
   state.SetLabel(kTaskNames[task]);
 }
 
 void scaling_grid(benchmark::internal::Benchmark* b) {
   for (int task = 0; task < 4; ++task) {
-    for (int n : {1, 2, 4, 6, 8, 12, 16, 20, 24}) b->Args({task, 5, n});
-    for (int m : {3, 8, 12, 16, 24, 32, 48, 64}) b->Args({task, m, 4});  // M = 5 is in the row above
+    for (int n : {1, 2, 4, 6, 8, 12, 16, 20, 24, 32, 40, 48}) b->Args({task, 5, n, 0});
+    for (int m : {3, 8, 12, 16, 24, 32, 48, 64}) b->Args({task, m, 4, 0});  // M = 5 is in the row above
+    // Trays: b->Args({task, 5, n, C}) rows for C = 1..3 go here.
   }
 }
 BENCHMARK(BM_PlanScaling)->Apply(scaling_grid)->UseManualTime()->Unit(benchmark::kMillisecond);

@@ -198,7 +198,7 @@ void BM_FloorOracleSearch(benchmark::State& state) {
     plan::Experience x;
     plan::SearchStats stats;
     const NodeId init = g.find_or_add(p.system().canonical(p.state()), p.automaton().initial);
-    const auto r = ls.run(g, x, init, h, true, false, plan::SearchLimits{}, 0, stats);
+    const auto r = ls.run(g, x, init, h, plan::LassoConfig{}, plan::Termination{}, stats);
     state.SetIterationTime(since(t0));
     if (!r.found || std::abs(r.prefix_cost + r.cycle_cost - c.cold_cost) > 1e-9)
       state.SkipWithError("the oracle search did not find the optimal cost");

@@ -197,7 +197,7 @@ TEST(Planner, PatrolFromAnAcceptingStartDoesNotSearchTheWholeGraph) {
     plan::SearchStats st;
     plan::SearchLimits one;
     one.max_nodes = 2000;  // the first cycle search would need ~30k nodes without the bound
-    (void)ls.run(g, x, init, h, true, false, one, 0, st);
+    (void)ls.run(g, x, init, h, plan::LassoConfig{}, plan::Termination{one, 0}, st);
     EXPECT_EQ(x.cycle(init).lower, plan::kInf) << "the start's cycle search did not see that none exists";
   }
   o.algorithm = plan::Algorithm::Dijkstra;

@@ -10,16 +10,12 @@ namespace {
 
 using Kind = world::PropExpr::Kind;
 
-// The model's carry_bound between regions a and b (points pa, pb), checked.
-double checked_carry_bound(const MotionCostModel& model, const task::System& ts, unsigned a, unsigned b,
-                           const world::Vec3& pa, const world::Vec3& pb) {
-  const double d = model.carry_bound(pa, pb);
+// The model's carry_bound between regions a and b, checked.
+double checked_carry_bound(const MotionCostModel& model, const task::System& ts, unsigned a, unsigned b) {
+  const double d = model.carry_bound(ts.region_center(a), ts.region_center(b));
   if (!valid_bound(d)) [[unlikely]]
     throw_bad_bound(model, "carry_bound from " + ts.location_name(a) + " to " + ts.location_name(b), d);
   return d;
-}
-double checked_carry_bound(const MotionCostModel& model, const task::System& ts, unsigned a, unsigned b) {
-  return checked_carry_bound(model, ts, a, b, ts.region_center(a), ts.region_center(b));
 }
 
 // Records in `at` the locations that proposition node `node`, wanted `want`,
@@ -64,6 +60,25 @@ bool force(const task::Labeling& lab, std::uint32_t node, bool want, std::vector
 }
 
 constexpr std::uint32_t kMaxNodes = 48;
+
+// D between a state where thing t is in region a[t] and a later one where it
+// is in b[t] (-1: either unknown): the model's carry_set_bound for the things
+// that change region (every move carries one thing: no containers here).
+double between(const MotionCostModel& model, const task::System& ts, const std::vector<int>& a,
+               const std::vector<int>& b) {
+  thread_local std::vector<world::Vec3> from, to;
+  from.clear();
+  to.clear();
+  for (std::size_t t = 0; t < a.size(); ++t) {
+    if (a[t] < 0 || b[t] < 0 || a[t] == b[t]) continue;
+    from.push_back(ts.region_center(static_cast<unsigned>(a[t])));
+    to.push_back(ts.region_center(static_cast<unsigned>(b[t])));
+  }
+  const double d = model.carry_set_bound(from.data(), to.data(), from.size());
+  if (!valid_bound(d)) [[unlikely]]
+    throw_bad_bound(model, "carry_set_bound", d);
+  return d;
+}
 
 }  // namespace
 
@@ -110,12 +125,10 @@ ChainBound::ChainBound(const task::System& ts, const task::Labeling& lab, const 
   bool positive = false;
   for (std::uint32_t i = 0; i < n_forcing_; ++i)
     for (std::uint32_t j = 0; j < n_forcing_; ++j) {
-      double sum = 0;
-      for (unsigned t = 0; t < ts.num_things(); ++t) {
-        const int a = forced[i][t], b = forced[j][t];
-        if (a >= 0 && b >= 0 && a != b)
-          sum += checked_carry_bound(model, ts, static_cast<unsigned>(a), static_cast<unsigned>(b));
-      }
+      for (unsigned t = 0; t < ts.num_things(); ++t)  // each pair's carry_bound checked, named in the error
+        if (forced[i][t] >= 0 && forced[j][t] >= 0 && forced[i][t] != forced[j][t])
+          (void)checked_carry_bound(model, ts, static_cast<unsigned>(forced[i][t]), static_cast<unsigned>(forced[j][t]));
+      const double sum = between(model, ts, forced[i], forced[j]);
       d_[std::size_t{i} * n_forcing_ + j] = sum;
       positive = positive || sum > 0;
     }
@@ -230,21 +243,33 @@ void ChainBound::dijkstra(std::uint32_t src, bool skip_src) {
   }
 }
 
+double ChainBound::from_state(const task::State& s, std::uint32_t c) const {
+  thread_local std::vector<int> at;
+  at.resize(ts_->num_things());
+  for (unsigned t = 0; t < ts_->num_things(); ++t) at[t] = static_cast<int>(ts_->location(s, t));
+  return between(*model_, *ts_, at, forced_[c]);
+}
+
 double ChainBound::cycle_bound_at(const task::State& s, std::uint32_t q) const {
+  return path_bound(s, q, s, q, accepting_[q]);
+}
+
+double ChainBound::path_bound(const task::State& s, std::uint32_t q, const task::State& target,
+                              std::uint32_t target_q, bool accepted) const {
   if (!enabled_) return 0;
   const unsigned things = ts_->num_things();
   const std::uint32_t F = n_forcing_;
-  // D from s's locations to each forcing guard's and back.
+  // D from s's locations to each forcing guard's, and from each to the target's.
   std::vector<double> to(F, 0), back(F, 0);
-  for (std::uint32_t c = 0; c < F; ++c)
-    for (unsigned t = 0; t < things; ++t) {
-      const int b = forced_[c][t];
-      const auto a = static_cast<int>(ts_->location(s, t));
-      if (b < 0 || a == b) continue;
-      const auto pa = ts_->region_center(static_cast<unsigned>(a)), pb = ts_->region_center(static_cast<unsigned>(b));
-      to[c] += checked_carry_bound(*model_, *ts_, static_cast<unsigned>(a), static_cast<unsigned>(b), pa, pb);
-      back[c] += checked_carry_bound(*model_, *ts_, static_cast<unsigned>(b), static_cast<unsigned>(a), pb, pa);
-    }
+  std::vector<int> at(things), end(things);
+  for (unsigned t = 0; t < things; ++t) {
+    at[t] = static_cast<int>(ts_->location(s, t));
+    end[t] = static_cast<int>(ts_->location(target, t));
+  }
+  for (std::uint32_t c = 0; c < F; ++c) {
+    to[c] = between(*model_, *ts_, at, forced_[c]);
+    back[c] = between(*model_, *ts_, forced_[c], end);
+  }
   // Dijkstra over (automaton state, last forcing guard or F = "s itself", accepting seen).
   const std::uint32_t n = n_states_ * (F + 1) * 2;
   auto id = [&](std::uint32_t qq, std::uint32_t l, std::uint32_t seen) { return (qq * (F + 1) + l) * 2 + seen; };
@@ -261,12 +286,12 @@ double ChainBound::cycle_bound_at(const task::State& s, std::uint32_t q) const {
         l2 = static_cast<std::uint32_t>(st.forcing);
         w = l == F ? to[l2] : d_[std::size_t{l} * F + l2];
       }
-      if (st.dst == q && seen2) best = std::min(best, du + w + (l2 == F ? 0.0 : back[l2]));
+      if (st.dst == target_q && seen2) best = std::min(best, du + w + (l2 == F ? 0.0 : back[l2]));
       const std::uint32_t m = id(st.dst, l2, seen2);
       if (du + w < dist[m]) dist[m] = du + w;
     }
   };
-  relax(q, F, accepting_[q] ? 1 : 0, 0);
+  relax(q, F, accepted || accepting_[q] ? 1 : 0, 0);
   for (;;) {
     std::uint32_t u = n;
     for (std::uint32_t v = 0; v < n; ++v)
@@ -275,7 +300,7 @@ double ChainBound::cycle_bound_at(const task::State& s, std::uint32_t q) const {
     done[u] = 1;
     relax(u / 2 / (F + 1), (u / 2) % (F + 1), u % 2, dist[u]);
   }
-  return best == kInf ? 0.0 : best;  // kInf would mean no such cycle: leave that to the search
+  return best == kInf ? 0.0 : best;  // kInf would mean no such path: leave that to the search
 }
 
 double ChainBound::bound(std::uint32_t q, const std::vector<double>& first) const {

@@ -10,7 +10,10 @@
 // c, then later c', every thing that c forces to L and c' to L' != L moves from
 // L to L' in between: with no containers every move carries exactly one thing,
 // so that part of the path costs at least
-//   D(c, c') = sum over such things of the model's carry_bound(L, L').
+//   D(c, c') = the model's carry_set_bound of those moves (L to L' for each
+// such thing): at least the sum of their carry_bound(L, L'), and for euclid
+// also the hand's way back between them (docs/planning.md "The hand's way
+// back").
 // Along a path, sum D over consecutive *forcing* guards (the segments do not
 // overlap); the first forcing guard c1 costs LB(s, c1) from the start state s.
 // A lasso through an accepting node with automaton state qa also pays, in its
@@ -53,6 +56,9 @@ class ChainBound {
   bool enabled() const { return enabled_; }
   // The forcing guards; bound() takes LB(s, cube) for each, in this order.
   const std::vector<automata::Cube>& forcing_cubes() const { return cubes_; }
+  // D from s's locations to forcing_cubes()[c]'s: also a bound on the way
+  // from s to a state where that guard holds (a first LB(s, c) for bound()).
+  double from_state(const task::State& s, std::uint32_t c) const;
   // The bound above from automaton state q, given first[i] = LB(s, forcing_cubes()[i]).
   double bound(std::uint32_t q, const std::vector<double>& first) const;
   // No cycle of the product through an accepting node costs less (the least
@@ -64,6 +70,14 @@ class ChainBound {
   // (every thing a guard on the way forces elsewhere leaves s's location and
   // comes back to it). 0 when disabled.
   double cycle_bound_at(const task::State& s, std::uint32_t q) const;
+  // No path of >= 1 step from (s, q) to (target, target_q) that passes an
+  // accepting node (unless `accepted`: one was passed already) costs less:
+  // the least D-sum along an automaton walk from q to target_q, with s's
+  // locations as the first forcing point and target's as the last
+  // (cycle_bound_at is the case target = s). 0 when disabled. The cycle
+  // search's heuristic back to its join node.
+  double path_bound(const task::State& s, std::uint32_t q, const task::State& target, std::uint32_t target_q,
+                    bool accepted) const;
 
  private:
   struct Arc {

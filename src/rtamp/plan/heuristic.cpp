@@ -62,7 +62,8 @@ double GuardHeuristic::evaluate(const task::State& s, std::uint32_t q) {
   }
   if (chain_ && h < kInf) {
     const auto& cubes = chain_->forcing_cubes();
-    for (std::size_t i = 0; i < cubes.size(); ++i) chain_first_[i] = cube_bound(s, cubes[i]);
+    for (std::size_t i = 0; i < cubes.size(); ++i)
+      chain_first_[i] = std::max(cube_bound(s, cubes[i]), chain_->from_state(s, static_cast<std::uint32_t>(i)));
     h = std::max(h, chain_->bound(q, chain_first_));
   }
   return h;
@@ -294,6 +295,41 @@ double state_distance_bound(const task::System& ts, const MotionCostModel& model
     const double b = model.lower_bound(q, anywhere);
     if (!valid_bound(b)) [[unlikely]]
       throw_bad_lower_bound(model, ts, s, t, anywhere ? -1 : static_cast<int>(want), b);
+    best = std::max(best, b);
+  }
+  // Interchangeable objects: where the target has k more members of a group
+  // in region r than s, at least k members now elsewhere must be put in r by
+  // moves of their own (the model's transport_bound over them).
+  thread_local std::vector<world::Vec3> from;
+  thread_local std::vector<double> scratch;
+  for (unsigned t = 0; t < ts.num_things(); ++t) {
+    const int grp = ts.group_of(t);
+    if (grp < 0) continue;
+    bool first = true;  // one pass per (group, target region), at its first member there
+    const std::uint32_t r = ts.location(target, t);
+    for (unsigned u = 0; u < t && first; ++u) first = !(ts.group_of(u) == grp && ts.location(target, u) == r);
+    if (!first || ts.is_container_location(r)) continue;
+    std::size_t want = 0, have = 0;
+    from.clear();
+    for (unsigned u = 0; u < ts.num_things(); ++u) {
+      if (ts.group_of(u) != grp) continue;
+      want += ts.location(target, u) == r ? 1 : 0;
+      if (ts.location(s, u) == r) ++have;
+      else from.push_back(ts.thing_point(s, u));
+    }
+    if (want <= have) continue;
+    TransportQuery q;
+    q.hand = hand;
+    q.from = from.data();
+    q.n = from.size();
+    q.m = want - have;
+    q.to_known = true;
+    q.to = ts.region_center(r);
+    q.one_at_a_time = ts.num_containers() == 0;
+    q.scratch = &scratch;
+    const double b = model.transport_bound(q);
+    if (!valid_bound(b)) [[unlikely]]
+      throw_bad_lower_bound(model, ts, s, t, static_cast<int>(r), b);
     best = std::max(best, b);
   }
   return best;

@@ -60,6 +60,10 @@ class Heuristic {
   // Lower bound on the cost of every cycle (>= 1 step) through node n that
   // contains an accepting node (the cycle of a lasso joined at n). 0 is always correct.
   virtual double cycle_bound(const ProductGraph&, NodeId) { return 0; }
+  // Lower bound on the cost of a path of at least one step from node n to
+  // node `target` that passes an accepting node unless `accepted` (the rest
+  // of a cycle search's cycle back to its join node). 0 is always correct.
+  virtual double return_bound(const ProductGraph&, NodeId, NodeId /*target*/, bool /*accepted*/) { return 0; }
 };
 
 class ZeroHeuristic final : public Heuristic {
@@ -79,6 +83,11 @@ class GuardHeuristic : public Heuristic {
   // The chain bound's cycle bound at n (0 without it).
   double cycle_bound(const ProductGraph& g, NodeId n) override {
     return chain_ ? std::max(chain_->cycle_bound(), chain_->cycle_bound_at(g.state(n), g.ba_state(n))) : 0.0;
+  }
+  // The chain bound's path bound from n to target (0 without it).
+  double return_bound(const ProductGraph& g, NodeId n, NodeId target, bool accepted) override {
+    return chain_ ? chain_->path_bound(g.state(n), g.ba_state(n), g.state(target), g.ba_state(target), accepted)
+                  : 0.0;
   }
   // Every automaton walk q = q0 -> q1 -> ... -> qk = target (k >= 1, self-loops
   // included) reads each guard in some TS state on the way, so a path along it
@@ -138,6 +147,9 @@ class ExperienceHeuristic final : public Heuristic {
     return guard_.walk_bound(g, n, target);
   }
   double cycle_bound(const ProductGraph& g, NodeId n) override { return guard_.cycle_bound(g, n); }
+  double return_bound(const ProductGraph& g, NodeId n, NodeId target, bool accepted) override {
+    return guard_.return_bound(g, n, target, accepted);
+  }
   double estimate(const ProductGraph& g, NodeId n) override {
     double h = x_->cached_h(n);
     if (h < 0) {
@@ -158,10 +170,13 @@ class ExperienceHeuristic final : public Heuristic {
 // location differs of the model's lower_bound (thing -> its target location);
 // +inf if the target has the hand at home and s does not (the hand is at home
 // only before the first move, so such a target is never reached again).
-// Interchangeable objects and containers (task::System::set_symmetry,
-// set_container_symmetry) are skipped: in canonical states a member's target
-// may be reached by a twin; so are things in interchangeable containers in
-// both states (their container's name may permute).
+// Interchangeable objects (task::System::set_symmetry) count by group: in
+// canonical states a member's target may be reached by a twin, so where the
+// target has k more members of a group in a region than s, the bound is the
+// model's transport_bound for k of the members elsewhere to arrive there.
+// Interchangeable containers (set_container_symmetry) are skipped, and so are
+// things in interchangeable containers in both states (their container's name
+// may permute).
 double state_distance_bound(const task::System& ts, const MotionCostModel& model, const task::State& s,
                             const task::State& target);
 

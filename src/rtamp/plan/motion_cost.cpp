@@ -1,6 +1,7 @@
 #include "rtamp/plan/motion_cost.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 
 #include "rtamp/plan/cost_check.hpp"
@@ -59,6 +60,11 @@ double MotionCostModel::transport_bound(const TransportQuery& t) const {
 // the hand must leave t, reach the next thing (at p_x, or at some other
 // location point, at least `nearest` away) and come back:
 // min (a + c) + sum of the (m - 1) smallest 2 min(c_x, nearest) (B3).
+// Things that share one point p (B4): if k of them must arrive, the hand's
+// path, projected on the line from p to t, crosses each point between them k
+// times carrying one of them forward and k - 1 times coming back, whatever
+// detours they take: (2k - 1) |p - t| (docs/planning.md, "The hand's way
+// back"); k = m minus the candidates elsewhere.
 double EuclidCost::transport_bound(const TransportQuery& t) const {
   std::vector<double>& v = *t.scratch;
   double min_a = std::numeric_limits<double>::infinity(), min_s = min_a;
@@ -78,6 +84,63 @@ double EuclidCost::transport_bound(const TransportQuery& t) const {
     v.clear();
     for (std::size_t i = 0; i < t.n; ++i) v.push_back(2 * std::min(distance(t.from[i], t.to), t.nearest));
     best = std::max(best, min_s + sum_smallest(v, t.m - 1));  // B3
+    for (std::size_t i = 0; i < t.n; ++i) {  // B4, once per distinct point (its first candidate)
+      std::size_t same = 0;
+      bool first = true;
+      for (std::size_t j = 0; j < t.n && first; ++j) {
+        if (t.from[j] != t.from[i]) continue;
+        first = j >= i;
+        ++same;
+      }
+      if (!first || same + t.m <= t.n) continue;
+      const std::size_t k = same + t.m - t.n;
+      best = std::max(best, static_cast<double>(2 * k - 1) * distance(t.from[i], t.to));
+    }
+  }
+  return best;
+}
+
+double MotionCostModel::carry_set_bound(const world::Vec3* from, const world::Vec3* to, std::size_t n) const {
+  double sum = 0;
+  for (std::size_t i = 0; i < n; ++i) sum += carry_bound(from[i], to[i]);
+  return sum;
+}
+
+double EuclidCost::carry_set_bound(const world::Vec3* from, const world::Vec3* to, std::size_t n) const {
+  double best = MotionCostModel::carry_set_bound(from, to, n);
+  // Axes: the distinct directions of the moves (at most 8; any axis is valid).
+  std::vector<world::Vec3> axes;
+  for (std::size_t i = 0; i < n && axes.size() < 8; ++i) {
+    const double d = distance(from[i], to[i]);
+    if (d <= 0) continue;
+    const world::Vec3 u{(to[i][0] - from[i][0]) / d, (to[i][1] - from[i][1]) / d, (to[i][2] - from[i][2]) / d};
+    bool known = false;
+    for (const auto& a : axes) known = known || std::abs(std::abs(a[0] * u[0] + a[1] * u[1] + a[2] * u[2]) - 1) < 1e-12;
+    if (!known) axes.push_back(u);
+  }
+  struct Event {
+    double x;
+    int df, db;  // change of the forward and backward counts at x
+  };
+  std::vector<Event> ev;
+  for (const auto& u : axes) {
+    ev.clear();
+    for (std::size_t i = 0; i < n; ++i) {
+      const double a = from[i][0] * u[0] + from[i][1] * u[1] + from[i][2] * u[2];
+      const double b = to[i][0] * u[0] + to[i][1] * u[1] + to[i][2] * u[2];
+      if (a < b) ev.push_back({a, 1, 0}), ev.push_back({b, -1, 0});
+      else if (b < a) ev.push_back({b, 0, 1}), ev.push_back({a, 0, -1});
+    }
+    std::sort(ev.begin(), ev.end(), [](const Event& p, const Event& q) { return p.x < q.x; });
+    double total = 0;
+    int f = 0, bk = 0;
+    for (std::size_t j = 0; j < ev.size(); ++j) {
+      if (j > 0 && (f > 0 || bk > 0))
+        total += (ev[j].x - ev[j - 1].x) * std::max(f + bk, 2 * std::max(f, bk) - 1);
+      f += ev[j].df;
+      bk += ev[j].db;
+    }
+    best = std::max(best, total);
   }
   return best;
 }

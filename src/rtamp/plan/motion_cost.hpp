@@ -107,6 +107,11 @@ class MotionCostModel {
   // the hand is (plan/chain_bound.hpp sums these over things). 0 is always
   // correct.
   virtual double carry_bound(const world::Vec3& /*from*/, const world::Vec3& /*to*/) const { return 0; }
+  // Lower bound on the total cost of moves, each carrying one thing, after
+  // which thing i has gone from from[i] to to[i] (i < n), wherever the hand
+  // starts and whatever detours the things take (plan/chain_bound.hpp). The
+  // sum of carry_bound is always correct (and the default).
+  virtual double carry_set_bound(const world::Vec3* from, const world::Vec3* to, std::size_t n) const;
   // Costs of this model are expensive enough to be worth caching (the
   // planner's experience cache is used only then). Models are assumed
   // expensive unless they say otherwise; the closed-form ones below are
@@ -133,6 +138,11 @@ class EuclidCost final : public MotionCostModel {
   double transport_bound(const TransportQuery& t) const override;
   // Each move adds |p - t| for the thing's own stretch (triangle inequality).
   double carry_bound(const world::Vec3& from, const world::Vec3& to) const override { return distance(from, to); }
+  // The hand's path, projected on an axis, crosses each point x at least
+  // max(F + B, 2 max(F, B) - 1) times, F (B) the things that must pass x
+  // forward (backward): the integral over x, on the moves' own directions
+  // (docs/planning.md, "The hand's way back").
+  double carry_set_bound(const world::Vec3* from, const world::Vec3* to, std::size_t n) const override;
 };
 
 class RegionCost final : public MotionCostModel {

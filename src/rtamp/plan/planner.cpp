@@ -310,7 +310,7 @@ PlanResult Planner::search(task::System& ts, task::Labeling& lab, const PlannerO
         report(p);
       };
     }
-    r = ls->run(*g, *x, starts, *h, astar, exp, limits, clock.deadline, res.stats);
+    r = ls->run(*g, *x, starts, *h, LassoConfig{astar, exp}, Termination{limits, clock.deadline}, res.stats);
     stop = {r.hit_node_limit, r.hit_time_limit, r.hit_memory_limit};
   }
   res.stats.successor_generations = g->expansions() - exp0;

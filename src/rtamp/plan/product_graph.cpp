@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 
+#include "rtamp/automata/accepting_cycles.hpp"
 #include "rtamp/plan/cost_check.hpp"
 
 namespace rtamp::plan {
@@ -13,50 +14,13 @@ std::int64_t now_ns() {
       .count();
 }
 
-// BA states from which an accepting state lying on a cycle is reachable.
-std::vector<bool> useful_states(const automata::Automaton& ba) {
-  const std::uint32_t n = ba.num_states();
-  std::vector<std::vector<std::uint32_t>> pred(n);
-  for (std::uint32_t q = 0; q < n; ++q)
-    for (const auto& e : ba.edges[q])
-      if (!e.guard.is_false()) pred[e.dst].push_back(q);
-  auto backward = [&](std::vector<std::uint32_t> seeds, bool include_seeds) {
-    std::vector<bool> seen(n, false);
-    std::vector<std::uint32_t> stack;
-    for (auto s : seeds) {
-      if (include_seeds && !seen[s]) {
-        seen[s] = true;
-        stack.push_back(s);
-      } else if (!include_seeds) {
-        stack.push_back(s);
-      }
-    }
-    while (!stack.empty()) {
-      const auto q = stack.back();
-      stack.pop_back();
-      for (auto p : pred[q])
-        if (!seen[p]) {
-          seen[p] = true;
-          stack.push_back(p);
-        }
-    }
-    return seen;
-  };
-  std::vector<std::uint32_t> good;
-  for (std::uint32_t q = 0; q < n; ++q) {
-    if (!ba.is_accepting_state(q)) continue;
-    // q lies on a cycle iff q is a predecessor-closure member of itself (>= 1 step).
-    auto reach_q = backward({q}, false);
-    if (reach_q[q]) good.push_back(q);
-  }
-  return backward(good, true);
-}
 }  // namespace
 
 ProductGraph::ProductGraph(const task::System& ts, const task::Labeling& labeling, const automata::Automaton& ba,
                            const MotionCostModel& model, MotionCostCache* cache)
     : ts_(&ts), lab_(&labeling), ba_(&ba), model_(&model), cache_(cache), words_(ts.layout().words) {
-  useful_ = useful_states(ba);
+  useful_ = automata::useful_states(ba);
+  on_accepting_cycle_ = automata::states_on_accepting_cycles(ba);
   table_.assign(1024, 0);
   succ_q_.reserve(ba.num_states());
 }

@@ -71,6 +71,9 @@ class ProductGraph {
   std::uint32_t ba_state(NodeId n) const { return q_[n]; }
   bool accepting(NodeId n) const { return ba_->is_accepting_state(q_[n]); }
   bool useful(std::uint32_t q) const { return useful_[q]; }
+  // q lies on an automaton cycle through an accepting state: only nodes in
+  // such states can lie on a lasso's cycle (automata/accepting_cycles.hpp).
+  bool on_accepting_cycle(std::uint32_t q) const { return on_accepting_cycle_[q]; }
 
   bool expanded(NodeId n) const { return edge_begin_[n] != kUnexpanded; }
   // Expands n if needed. Edge indices stay valid; references into edges() do
@@ -107,7 +110,7 @@ class ProductGraph {
   const MotionCostModel* model_;
   MotionCostCache* cache_;
   unsigned words_;
-  std::vector<bool> useful_;
+  std::vector<bool> useful_, on_accepting_cycle_;
 
   std::vector<std::uint64_t> states_;
   std::vector<std::uint32_t> q_;

@@ -104,8 +104,9 @@ void LassoSearch::drop_loops(const ProductGraph& g, NodeId from, std::vector<std
   edges.resize(kept);
 }
 
-bool LassoSearch::out_of_budget(const ProductGraph& g, const SearchLimits& limits, std::int64_t deadline_ns,
-                                const SearchStats& stats, LassoResult& r) {
+bool LassoSearch::out_of_budget(const ProductGraph& g, const SearchStats& stats, LassoResult& r) {
+  const SearchLimits& limits = stop_->limits;
+  const std::int64_t deadline_ns = stop_->deadline_ns;
   if (g.size() > limits.max_nodes) {
     r.hit_node_limit = true;
     return true;
@@ -136,8 +137,7 @@ bool LassoSearch::out_of_budget(const ProductGraph& g, const SearchLimits& limit
   return r.hit_time_limit;
 }
 
-int LassoSearch::on_accepting_cycle(ProductGraph& g, NodeId n, const SearchLimits& limits, std::int64_t deadline_ns,
-                                    SearchStats& stats, LassoResult& r) {
+int LassoSearch::on_accepting_cycle(ProductGraph& g, NodeId n, SearchStats& stats, LassoResult& r) {
   auto grow = [&] {
     if (scc_stamp_.size() >= g.size()) return;
     const std::size_t cap = std::max<std::size_t>(g.size(), 2 * scc_stamp_.size());
@@ -173,7 +173,7 @@ int LassoSearch::on_accepting_cycle(ProductGraph& g, NodeId n, const SearchLimit
       } else if (scc_state_[w] == 1) {
         scc_low_[v] = std::min(scc_low_[v], scc_index_[w]);
       }
-      if (out_of_budget(g, limits, deadline_ns, stats, r)) {
+      if (out_of_budget(g, stats, r)) {
         for (NodeId x : scc_stack_) scc_stamp_[x] = scc_gen_ - 1;  // unfinished: forget them
         return -1;
       }
@@ -202,9 +202,8 @@ int LassoSearch::on_accepting_cycle(ProductGraph& g, NodeId n, const SearchLimit
   return scc_state_[n] == 3;
 }
 
-LassoSearch::Cost LassoSearch::cycle(ProductGraph& g, NodeId n, Cost bound, Heuristic* h,
-                                     const SearchLimits& limits, std::int64_t deadline_ns, SearchStats& stats,
-                                     LassoResult& r) {
+LassoSearch::Cost LassoSearch::cycle(ProductGraph& g, NodeId n, Cost bound, SearchStats& stats, LassoResult& r) {
+  Heuristic* const h = cycle_h_;
   const Experience::Cycle known = x_->cycle(n);
   if (known.exact)
     return lex_less(known.lower, known.moves, bound.c, bound.m) ? Cost{known.lower, known.moves} : kNoCost;
@@ -240,8 +239,8 @@ LassoSearch::Cost LassoSearch::cycle(ProductGraph& g, NodeId n, Cost bound, Heur
       S.stamp[m] = S.gen;
       S.closed[m] = 0;
       S.h[m] = !h ? 0.0
-                  : std::max(state_distance_bound(g.system(), g.model(), g.state(pe.dst), target),
-                             h->walk_bound(g, pe.dst, target_q));
+                  : std::max({state_distance_bound(g.system(), g.model(), g.state(pe.dst), target),
+                              h->walk_bound(g, pe.dst, target_q), h->return_bound(g, pe.dst, n, (m & 1) != 0)});
     } else if (!lex_less(ng, nm, S.g[m], S.m[m])) {
       return;
     }
@@ -272,7 +271,7 @@ LassoSearch::Cost LassoSearch::cycle(ProductGraph& g, NodeId n, Cost bound, Heur
       ++stats.successor_generations;
     }
     for (std::uint32_t e = g.edge_begin(x); e < g.edge_end(x); ++e) relax(it.n, e);
-    if (out_of_budget(g, limits, deadline_ns, stats, r)) return kNoCost;
+    if (out_of_budget(g, stats, r)) return kNoCost;
   }
   if (found) {
     x_->set_cycle(n, {best.c, best.m, true});
@@ -283,6 +282,7 @@ LassoSearch::Cost LassoSearch::cycle(ProductGraph& g, NodeId n, Cost bound, Heur
       cur = S.parent[cur];
     } while (cur != start);
     std::reverse(cycle_path_.begin(), cycle_path_.end());
+    x_->set_cycle_path(n, cycle_path_);  // kept from this search: the lasso is rebuilt from it
     return best;
   }
   x_->set_cycle(n, {bound.c, bound.m, false});  // bound is above `known` (checked on entry)
@@ -290,24 +290,25 @@ LassoSearch::Cost LassoSearch::cycle(ProductGraph& g, NodeId n, Cost bound, Heur
   // none, and neither may many nodes reachable from it. Classify them all at
   // once, so that they get no unbounded cycle search of their own (a query
   // without a lasso would otherwise search the graph once per node).
-  if (bound.c >= kInf) (void)on_accepting_cycle(g, n, limits, deadline_ns, stats, r);
+  if (bound.c >= kInf) (void)on_accepting_cycle(g, n, stats, r);
   return kNoCost;
 }
 
-LassoResult LassoSearch::run(ProductGraph& g, Experience& x, NodeId init, Heuristic& h, bool cycle_heuristic,
-                             bool learn, const SearchLimits& limits, std::int64_t deadline_ns, SearchStats& stats) {
+LassoResult LassoSearch::run(ProductGraph& g, Experience& x, NodeId init, Heuristic& h, const LassoConfig& config,
+                             const Termination& stop, SearchStats& stats) {
   starts_.assign(1, init);
-  return run(g, x, starts_, h, cycle_heuristic, learn, limits, deadline_ns, stats);
+  return run(g, x, starts_, h, config, stop, stats);
 }
 
 LassoResult LassoSearch::run(ProductGraph& g, Experience& experience, const std::vector<NodeId>& starts, Heuristic& h,
-                             bool cycle_heuristic, bool learn, const SearchLimits& limits, std::int64_t deadline_ns,
-                             SearchStats& stats) {
+                             const LassoConfig& config, const Termination& stop, SearchStats& stats) {
   x_ = &experience;
+  stop_ = &stop;
+  cycle_h_ = config.cycle_heuristic ? &h : nullptr;
+  const bool learn = config.learn;
   LassoResult r;
-  Heuristic* const cycle_h = cycle_heuristic ? &h : nullptr;
   start_ns_ = steady_now_ns();
-  next_progress_ns_ = start_ns_ + limits.progress_interval_ns();
+  next_progress_ns_ = start_ns_ + stop.limits.progress_interval_ns();
   progress_best_ = kInf;
   progress_bound_ = 0;
   const std::uint32_t stay = task::Action::stay().packed();
@@ -319,34 +320,10 @@ LassoResult LassoSearch::run(ProductGraph& g, Experience& experience, const std:
     std::fill(scc_stamp_.begin(), scc_stamp_.end(), 0);
     scc_gen_ = 1;
   }
-  // Automaton states that lie on a cycle through an accepting state: only
-  // there can a lasso's cycle pass (its automaton projection is such a cycle).
-  const automata::Automaton& ba = g.automaton();
-  if (on_acc_cycle_.size() != ba.num_states() || acc_cycle_of_ != &ba) {
-    acc_cycle_of_ = &ba;
-    const std::uint32_t nq = ba.num_states();
-    std::vector<std::vector<bool>> reach(nq, std::vector<bool>(nq, false));  // >= 1 edge
-    for (std::uint32_t a = 0; a < nq; ++a) {
-      std::vector<std::uint32_t> todo;
-      for (const auto& e : ba.edges[a])
-        if (!e.guard.is_false() && !reach[a][e.dst]) reach[a][e.dst] = true, todo.push_back(e.dst);
-      while (!todo.empty()) {
-        const std::uint32_t q = todo.back();
-        todo.pop_back();
-        for (const auto& e : ba.edges[q])
-          if (!e.guard.is_false() && !reach[a][e.dst]) reach[a][e.dst] = true, todo.push_back(e.dst);
-      }
-    }
-    on_acc_cycle_.assign(nq, false);
-    for (std::uint32_t q = 0; q < nq; ++q)
-      for (std::uint32_t qa = 0; qa < nq && !on_acc_cycle_[q]; ++qa)
-        on_acc_cycle_[q] = ba.is_accepting_state(qa) && reach[q][qa] && reach[qa][q];
-  }
   double best = kInf;  // the incumbent lasso, (best, best_m) in the order (cost, moves)
   std::uint32_t best_m = kManyMoves;
   NodeId best_node = kNoNode;  // an accepting node, or (best_solved) a solved node
   bool best_solved = false;
-  Cost best_cycle = kNoCost;
   // Experience: a solved node m completes a lasso of cost g(m) + learned(m).
   auto offer_solved = [&](NodeId m, double gm, std::uint32_t mm) {
     if (!learn || !x_->solved(m)) return;
@@ -376,13 +353,12 @@ LassoResult LassoSearch::run(ProductGraph& g, Experience& experience, const std:
   // accepting node (cycle()), below what would beat the incumbent.
   auto try_cycle = [&](NodeId n) {
     const Cost bound{best - S.g[n], best_m > S.m[n] ? best_m - S.m[n] : 0};
-    const Cost c = cycle(g, n, bound, cycle_h, limits, deadline_ns, stats, r);
+    const Cost c = cycle(g, n, bound, stats, r);
     if (c.c < kInf && lex_less(S.g[n] + c.c, S.m[n] + c.m, best, best_m)) {
       best = S.g[n] + c.c;
       best_m = S.m[n] + c.m;
       best_node = n;
       best_solved = false;
-      best_cycle = c;
     }
     return !r.stopped();
   };
@@ -429,7 +405,7 @@ LassoResult LassoSearch::run(ProductGraph& g, Experience& experience, const std:
         complete = false;
         break;
       }
-    } else if (on_acc_cycle_[g.ba_state(n)]) {
+    } else if (g.on_accepting_cycle(g.ba_state(n))) {
       // A join candidate: its cycle costs at least what the table knows and
       // at least the way to acceptance (h).
       const Experience::Cycle known = x_->cycle(n);
@@ -439,7 +415,7 @@ LassoResult LassoSearch::run(ProductGraph& g, Experience& experience, const std:
           break;
         }
       } else {
-        const double lb = std::max({known.lower, S.h[n], cycle_h ? cycle_h->cycle_bound(g, n) : 0.0});
+        const double lb = std::max({known.lower, S.h[n], cycle_h_ ? cycle_h_->cycle_bound(g, n) : 0.0});
         const double key = S.g[n] + lb;
         if (key < kInf) {
           cand_.push_back({key, S.g[n], n, S.m[n]});
@@ -474,7 +450,7 @@ LassoResult LassoSearch::run(ProductGraph& g, Experience& experience, const std:
       offer_solved(m, ng, nm);
     }
     progress_best_ = best;
-    if (out_of_budget(g, limits, deadline_ns, stats, r)) {
+    if (out_of_budget(g, stats, r)) {
       complete = false;
       break;
     }
@@ -493,36 +469,17 @@ LassoResult LassoSearch::run(ProductGraph& g, Experience& experience, const std:
         acc = g.edge(e).dst;
         if (++stats.reused_path_edges > g.size()) throw std::logic_error("LassoSearch: solved path loops");
       }
-      best_cycle = {x_->cycle(acc).lower, x_->cycle(acc).moves};  // exact for a solved accepting node
       drop_loops(g, init, r.prefix_edges);
     }
     r.cycle_start = acc;
     r.prefix_cost = 0;
     for (std::uint32_t e : r.prefix_edges) r.prefix_cost += g.edge(e).cost;
-    if (learn && x_->cycle(acc).exact && x_->cycle_path(acc, r.cycle_edges)) {
-      r.cycle_cost = x_->cycle(acc).lower;  // recorded with the exact cost by an earlier query
-    } else {
-      // The cycle's path: search again through the (now exactly known) best
-      // cycle: the least cycle below a bound just above its cost is it.
-      Experience::Cycle saved = x_->cycle(acc);
-      x_->set_cycle(acc, {0, 0, false});
-      LassoResult scratch;
-      SearchLimits unlimited;
-      unlimited.max_nodes = ~std::size_t{0};
-      unlimited.max_memory_bytes = 0;
-      const Cost c = cycle(g, acc, {best_cycle.c + 1e-7 * (1 + best_cycle.c), kManyMoves}, cycle_h, unlimited, 0,
-                           stats, scratch);
-      x_->set_cycle(acc, saved);
-      r.cycle_edges = cycle_path_;
-      r.cycle_cost = c.c;
-      if (learn) {
-        double sum = 0;
-        for (std::uint32_t e : r.cycle_edges) sum += g.edge(e).cost;
-        // Record the path only if it is the exact cheapest cycle the table holds.
-        if (x_->cycle(acc).exact && std::abs(sum - x_->cycle(acc).lower) <= 1e-9 * (1 + sum))
-          x_->set_cycle_path(acc, r.cycle_edges);
-      }
-    }
+    // Every exact entry of the cycle table was set by a search that found
+    // its cycle and kept the path (this query's or, with experience, an
+    // earlier one's on the same graph).
+    if (!x_->cycle(acc).exact || !x_->cycle_path(acc, r.cycle_edges))
+      throw std::logic_error("LassoSearch: the join node's cycle was not kept");
+    r.cycle_cost = x_->cycle(acc).lower;
   }
   if (learn && complete && !r.stopped()) {
     const double total = r.found ? r.prefix_cost + r.cycle_cost : kInf;

@@ -16,8 +16,11 @@
 //      (`cycle`: a best-first search over (node, seen an accepting node yet)
 //      from J's successors back to (J, yes); for an accepting J simply its
 //      cheapest cycle), pruned at best - g(J). Its heuristic is the max of
-//      state_distance_bound to J's state and Heuristic::walk_bound to J's
-//      automaton state (both bound every path back to J). U does not depend
+//      state_distance_bound to J's state, Heuristic::walk_bound to J's
+//      automaton state and Heuristic::return_bound to J (through an
+//      accepting node while none was passed): all bound every way back to
+//      J. The cycle found is kept with its cost (the lasso is rebuilt from
+//      it, never searched again). U does not depend
 //      on the start, so it is kept in the cycle table of the graph's
 //      experience (exact, or "none below b"; plan/experience.hpp) and reused
 //      by later queries. When such a search is unbounded (no
@@ -128,6 +131,21 @@ struct SearchLimits {
   std::int64_t progress_interval_ns() const { return static_cast<std::int64_t>(progress_interval * 1e9); }
 };
 
+// How a lasso search runs.
+struct LassoConfig {
+  bool cycle_heuristic = true;  // cycle searches use state_distance_bound and Heuristic::walk_bound (else 0)
+  bool learn = false;           // use and store learned bounds and solved paths in the experience
+};
+
+// When a search stops without finishing (one termination condition, as in
+// OMPL): the node and memory limits of `limits`, its progress reports, and
+// the query's steady-clock deadline (steady_now_ns; 0: none), which the
+// planner derives from limits.time_limit when the query starts.
+struct Termination {
+  SearchLimits limits;
+  std::int64_t deadline_ns = 0;
+};
+
 struct LassoResult {
   bool found = false;
   bool hit_node_limit = false, hit_time_limit = false, hit_memory_limit = false;
@@ -141,16 +159,14 @@ struct LassoResult {
 class LassoSearch {
  public:
   // `x`: the experience of `g` (plan/experience.hpp); its cycle table is read
-  // and written by every search (a cold query passes a fresh one).
-  // `learn`: also use and store learned bounds and solved paths in `x`.
-  // `cycle_heuristic`: use state_distance_bound and h.walk_bound in cycle searches (else 0).
+  // and written by every search (a cold query passes a fresh one), learned
+  // bounds and solved paths only with config.learn.
   // `starts`: the start nodes (kNoNode entries are skipped); the best lasso
   // from any of them.
   LassoResult run(ProductGraph& g, Experience& x, const std::vector<NodeId>& starts, Heuristic& h,
-                  bool cycle_heuristic, bool learn, const SearchLimits& limits, std::int64_t deadline_ns,
-                  SearchStats& stats);
-  LassoResult run(ProductGraph& g, Experience& x, NodeId init, Heuristic& h, bool cycle_heuristic, bool learn,
-                  const SearchLimits& limits, std::int64_t deadline_ns, SearchStats& stats);
+                  const LassoConfig& config, const Termination& stop, SearchStats& stats);
+  LassoResult run(ProductGraph& g, Experience& x, NodeId init, Heuristic& h, const LassoConfig& config,
+                  const Termination& stop, SearchStats& stats);
   std::size_t memory_bytes() const { return prefix_.bytes() + cycle_.bytes(); }
 
  private:
@@ -199,10 +215,9 @@ class LassoSearch {
     std::size_t bytes() const;
   };
   // Cheapest cycle through n that contains an accepting node, in the order
-  // (cost, moves), below `bound`; kNoCost if none. Fills cycle_path_ when found. `h` (null: none) gives the
-  // walk bounds back to n's automaton state.
-  Cost cycle(ProductGraph& g, NodeId n, Cost bound, Heuristic* h, const SearchLimits& limits,
-             std::int64_t deadline_ns, SearchStats& stats, LassoResult& r);
+  // (cost, moves), below `bound`; kNoCost if none. When found, its path is
+  // kept in the experience beside its cost (the lasso is rebuilt from it).
+  Cost cycle(ProductGraph& g, NodeId n, Cost bound, SearchStats& stats, LassoResult& r);
   // Whether n lies on any cycle through an accepting node: Tarjan's SCCs over
   // the nodes reachable from n (expanding them); n's SCC must hold an
   // accepting node and an edge. Every node of a finished SCC without one gets
@@ -211,21 +226,19 @@ class LassoSearch {
   // query without a lasso does not run one whole-graph cycle search per
   // accepting node and join candidate. Nodes classified by an earlier call of
   // the same query are not visited again (their SCCs are complete). -1: out of budget.
-  int on_accepting_cycle(ProductGraph& g, NodeId n, const SearchLimits& limits, std::int64_t deadline_ns,
-                         SearchStats& stats, LassoResult& r);
+  int on_accepting_cycle(ProductGraph& g, NodeId n, SearchStats& stats, LassoResult& r);
   void drop_loops(const ProductGraph& g, NodeId from, std::vector<std::uint32_t>& edges);
   // Node, memory and time limits; reports progress. Checks the memory estimate
   // and the clock every 128 calls.
-  bool out_of_budget(const ProductGraph& g, const SearchLimits& limits, std::int64_t deadline_ns,
-                     const SearchStats& stats, LassoResult& r);
+  bool out_of_budget(const ProductGraph& g, const SearchStats& stats, LassoResult& r);
 
   Experience* x_ = nullptr;  // the experience of the graph being searched (during run())
+  const Termination* stop_ = nullptr;  // during run()
+  Heuristic* cycle_h_ = nullptr;       // the cycle searches' heuristic (null: none), during run()
   Space prefix_, cycle_;
   std::vector<NodeId> closed_list_;
   std::vector<NodeId> starts_;
   std::vector<Item> cand_;             // join candidates (a heap like Space::heap)
-  std::vector<bool> on_acc_cycle_;     // per automaton state
-  const automata::Automaton* acc_cycle_of_ = nullptr;
   std::vector<std::uint32_t> cycle_path_;
   // on_accepting_cycle: per-node DFS index and lowlink (valid where scc_stamp_
   // == scc_gen_), SCC state (0 open, 1 on the stack, 2 no accepting cycle, 3
