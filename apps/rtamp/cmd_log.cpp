@@ -5,6 +5,7 @@
 // record: "LOG:LINE: what", exit 2, and no output file.
 #include <iostream>
 #include <memory>
+#include <optional>
 
 #include "command.hpp"
 #include "options.hpp"
@@ -16,13 +17,15 @@ namespace {
 struct ToMcapArgs {
   std::string log, out, scenario;
   rtamp::episode::McapCompression compression = rtamp::episode::McapCompression::Zstd;
+  int chunk_kib = 1024;
 };
 
 int run_to_mcap(const ToMcapArgs& a) {
   rtamp::cli::check_output_file("OUT", a.out);
   std::optional<rtamp::world::Scenario> scenario;
   if (!a.scenario.empty()) scenario = rtamp::world::load_scenario(a.scenario);
-  const std::uint64_t n = rtamp::episode::log_to_mcap(a.log, a.out, a.compression, scenario ? &*scenario : nullptr);
+  const std::uint64_t n = rtamp::episode::log_to_mcap(a.log, a.out, a.compression, scenario ? &*scenario : nullptr,
+                                                         static_cast<std::size_t>(a.chunk_kib) * 1024);
   std::cerr << a.out << ": " << n << " records\n";
   return 0;
 }
@@ -43,6 +46,8 @@ rtamp::cli::Registrar reg{
           *to, "--compression", rtamp::cli::mcap_compression_choices(), "zstd",
           [args](const std::string& s) { args->compression = rtamp::episode::parse_mcap_compression(s); },
           "Compression of the chunks:");
+      rtamp::cli::add_integer(*to, "--chunk-kib", args->chunk_kib, 1, 1 << 20,
+                              "Close a chunk when its uncompressed records reach this many KiB (default 1024)");
       to->add_option("--scenario", args->scenario,
                      "The episode's scenario (YAML file or built-in name) for the regions and initial spots "
                      "(default: the built-in the log names, if any)");

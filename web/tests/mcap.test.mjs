@@ -158,15 +158,32 @@ for (const r of runs) {
   console.log(`ok ${r.name}: ${a.total} messages`);
 }
 
-// Many records: several chunks.
+// Many records (a recurring task: the blocks between r1 and r2), small chunks: many of them.
 {
+  const patrol = path.join(tmp, 'patrol.yaml');
+  fs.writeFileSync(patrol, fs.readFileSync(path.resolve('../scenarios/3-block.yaml'), 'utf8')
+    .replace('  all_in_r2: "all block in r2"', '  all_in_r2: "all block in r2"\n  all_in_r1: "all block in r1"')
+    .replace('task: "F G all_in_r2"', 'task: "G F all_in_r2 & G F all_in_r1"'));
   const log = path.join(tmp, 'long.jsonl'), out = path.join(tmp, 'long.mcap');
-  rtamp(['run', '3-block-tray', '--world', 'symbolic', '--rate', '1', '--cycles', '0', '--max-time', '3000', '--quiet', '--log', log], 'ran');
-  rtamp(['log', 'to-mcap', log, out]);
+  rtamp(['run', patrol, '--world', 'symbolic', '--cycles', '40', '--rate', '0.05', '--quiet', '--log', log], 'ran');
+  rtamp(['log', 'to-mcap', log, out, '--chunk-kib', '8', '--scenario', patrol]);
   const { total } = await check(out, log, 'zstd');
-  const bytes = new Uint8Array(fs.readFileSync(out));
-  const chunks = streamRecords(bytes).filter((r) => r.type === 'ChunkIndex').length;
+  const chunks = streamRecords(new Uint8Array(fs.readFileSync(out))).filter((r) => r.type === 'ChunkIndex').length;
+  assert.ok(chunks > 3, `${chunks} chunks`);
   console.log(`ok long: ${total} messages in ${chunks} chunks`);
+}
+
+// A batch writes one MCAP file beside each episode's log.
+{
+  const dir = path.join(tmp, 'batch');
+  rtamp(['batch', '3-block-tray', '--world', 'symbolic', '--trials', '2', '--algo', 'astar', '--bt', 'online-action',
+    '--log-dir', dir, '--mcap', '-q', '-o', path.join(tmp, 'batch.csv')]);
+  const logs = fs.readdirSync(dir).filter((f) => f.endsWith('.jsonl'));
+  assert.ok(logs.length >= 2);
+  for (const l of logs) await check(path.join(dir, l.replace(/\.jsonl$/, '.mcap')), path.join(dir, l), 'zstd');
+  const r = rtamp(['batch', '3-block-tray', '--world', 'symbolic', '--trials', '1', '--mcap', '-q'], 2);
+  assert.match(r.stderr, /--mcap.*--log-dir/);
+  console.log(`ok batch: ${logs.length} episodes`);
 }
 
 // Bad input: one line naming what and where, exit 2, no output left behind.

@@ -185,7 +185,8 @@ struct EpisodeMcap::Impl {
   json tree = json::object();                                 // the last tree record's fields
   std::uint16_t log, timeline, interventions, replans, plan, tree_ch, automaton, scene, joints, tf;
 
-  Impl(const std::string& path, McapCompression c, const world::Scenario* s) : out(path, c) {
+  Impl(const std::string& path, McapCompression c, const world::Scenario* s, std::size_t chunk_bytes)
+      : out(path, c, chunk_bytes) {
     const auto json_schema = [&](const std::string& name, const std::string& data) {
       return out.add_schema(name, "jsonschema", data);
     };
@@ -411,8 +412,9 @@ struct EpisodeMcap::Impl {
   }
 };
 
-EpisodeMcap::EpisodeMcap(const std::string& path, McapCompression compression, const world::Scenario* scenario)
-    : impl_(std::make_unique<Impl>(path, compression, scenario)) {}
+EpisodeMcap::EpisodeMcap(const std::string& path, McapCompression compression, const world::Scenario* scenario,
+                         std::size_t chunk_bytes)
+    : impl_(std::make_unique<Impl>(path, compression, scenario, chunk_bytes)) {}
 
 EpisodeMcap::~EpisodeMcap() = default;
 
@@ -430,13 +432,13 @@ void EpisodeMcap::add(std::string_view record) {
 void EpisodeMcap::close() { impl_->out.close(); }
 
 std::uint64_t log_to_mcap(const std::string& log_path, const std::string& mcap_path, McapCompression compression,
-                          const world::Scenario* scenario) {
+                          const world::Scenario* scenario, std::size_t chunk_bytes) {
   std::ifstream in(log_path);
   if (!in) throw Error("cannot read the episode log '" + log_path + "'");
   std::string failure;
   std::uint64_t records = 0;
   {
-    EpisodeMcap out(mcap_path, compression, scenario);
+    EpisodeMcap out(mcap_path, compression, scenario, chunk_bytes);
     std::string line;
     std::uint64_t n = 0;
     while (failure.empty() && std::getline(in, line)) {

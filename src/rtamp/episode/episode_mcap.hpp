@@ -33,7 +33,8 @@ class EpisodeMcap {
   // Opens `path` (rtamp::Error if it cannot be written). `scenario` (may be
   // null) gives the regions and where things start; without it, the scenario
   // the `episode` record names is used if it is a built-in one.
-  EpisodeMcap(const std::string& path, McapCompression compression, const world::Scenario* scenario);
+  EpisodeMcap(const std::string& path, McapCompression compression, const world::Scenario* scenario,
+              std::size_t chunk_bytes = 1 << 20);
   ~EpisodeMcap();
 
   // One record of the log (one JSON object with "ev" and "t", no newline);
@@ -53,6 +54,6 @@ class EpisodeMcap {
 // Converts the JSON Lines log at `log_path` to `mcap_path`; rtamp::Error
 // "LOG:LINE: what" for a malformed record. Returns the number of records.
 std::uint64_t log_to_mcap(const std::string& log_path, const std::string& mcap_path, McapCompression compression,
-                          const world::Scenario* scenario = nullptr);
+                          const world::Scenario* scenario = nullptr, std::size_t chunk_bytes = 1 << 20);
 
 }  // namespace rtamp::episode
