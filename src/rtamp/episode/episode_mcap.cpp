@@ -3,6 +3,7 @@
 #include <cmath>
 #include <cstdio>
 #include <fstream>
+#include <initializer_list>
 #include <functional>
 #include <map>
 #include <optional>
@@ -14,6 +15,7 @@
 #include "rtamp/exec/thing_layout.hpp"
 #include "rtamp/robot/ur5_kinematics.hpp"
 #include "rtamp/util/error.hpp"
+#include "rtamp/util/json_text.hpp"
 #include "rtamp/world/builtin_scenarios.hpp"
 #include "rtamp/world/scenario_io.hpp"
 
@@ -119,37 +121,66 @@ json stamp(std::uint64_t ns) { return {{"sec", ns / 1000000000ULL}, {"nsec", ns 
 
 json vec3(double x, double y, double z) { return {{"x", x}, {"y", y}, {"z", z}}; }
 
-json pose(const world::Vec3& p, const std::array<double, 4>& wxyz) {
-  return {{"position", vec3(p[0], p[1], p[2])},
-          {"orientation", {{"x", wxyz[1]}, {"y", wxyz[2]}, {"z", wxyz[3]}, {"w", wxyz[0]}}}};
+// The scene's text, written directly (a scene message for every perceived
+// placement: building nlohmann objects for it cost most of a conversion).
+void put_stamp(std::string& o, std::uint64_t ns) {
+  o += "{\"sec\":";
+  o += std::to_string(ns / 1000000000ULL);
+  o += ",\"nsec\":";
+  o += std::to_string(ns % 1000000000ULL);
+  o += '}';
 }
 
-json color(double r, double g, double b, double a) { return {{"r", r}, {"g", g}, {"b", b}, {"a", a}}; }
-
-json entity(std::uint64_t ns, const std::string& id) {
-  return {{"timestamp", stamp(ns)}, {"frame_id", "world"},      {"id", id},           {"lifetime", stamp(0)},
-          {"frame_locked", false},  {"metadata", json::array()}, {"arrows", json::array()},
-          {"cubes", json::array()}, {"spheres", json::array()},  {"cylinders", json::array()},
-          {"lines", json::array()}, {"triangles", json::array()}, {"texts", json::array()},
-          {"models", json::array()}};
+void put_numbers(std::string& o, std::initializer_list<std::pair<const char*, double>> fields) {
+  char sep = '{';
+  for (const auto& [key, value] : fields) {
+    o += sep;
+    sep = ',';
+    o += '"';
+    o += key;
+    o += "\":";
+    json_text::append_number(o, value);
+  }
+  o += '}';
 }
 
-json label(const world::Vec3& at, const std::string& text) {
-  return {{"pose", pose(at, {1, 0, 0, 0})},
-          {"billboard", true},
-          {"font_size", 14.0},
-          {"scale_invariant", true},
-          {"color", color(1, 1, 1, 1)},
-          {"text", text}};
+void put_pose(std::string& o, const world::Vec3& p, const std::array<double, 4>& wxyz) {
+  o += "{\"position\":";
+  put_numbers(o, {{"x", p[0]}, {"y", p[1]}, {"z", p[2]}});
+  o += ",\"orientation\":";
+  put_numbers(o, {{"x", wxyz[1]}, {"y", wxyz[2]}, {"z", wxyz[3]}, {"w", wxyz[0]}});
+  o += '}';
+}
+
+// One entity of the scene: a cube (centre `centre`) and a label above it.
+void put_entity(std::string& o, std::uint64_t ns, std::string_view kind, const std::string& name,
+                const world::Vec3& centre, const std::array<double, 4>& quat, const world::Vec3& size,
+                const std::array<double, 4>& rgba, const world::Vec3& label_at) {
+  o += "{\"timestamp\":";
+  put_stamp(o, ns);
+  o += ",\"frame_id\":\"world\",\"id\":";
+  json_text::append_string(o, std::string(kind) + name);
+  o += ",\"lifetime\":{\"sec\":0,\"nsec\":0},\"frame_locked\":false,\"metadata\":[],\"arrows\":[],\"cubes\":[{\"pose\":";
+  put_pose(o, centre, quat);
+  o += ",\"size\":";
+  put_numbers(o, {{"x", size[0]}, {"y", size[1]}, {"z", size[2]}});
+  o += ",\"color\":";
+  put_numbers(o, {{"r", rgba[0]}, {"g", rgba[1]}, {"b", rgba[2]}, {"a", rgba[3]}});
+  o += "}],\"spheres\":[],\"cylinders\":[],\"lines\":[],\"triangles\":[],\"texts\":[{\"pose\":";
+  put_pose(o, label_at, {1, 0, 0, 0});
+  o += ",\"billboard\":true,\"font_size\":14,\"scale_invariant\":true,"
+       "\"color\":{\"r\":1,\"g\":1,\"b\":1,\"a\":1},\"text\":";
+  json_text::append_string(o, name);
+  o += "}],\"models\":[]}";
 }
 
 // A colour per block name (stable), trays brown.
-json thing_color(const std::string& name, bool container) {
-  if (container) return color(0.55, 0.38, 0.22, 1);
+std::array<double, 4> thing_color(const std::string& name, bool container) {
+  if (container) return {0.55, 0.38, 0.22, 1};
   static const double palette[][3] = {{0.85, 0.2, 0.2}, {0.2, 0.6, 0.9}, {0.95, 0.75, 0.15},
                                       {0.3, 0.75, 0.35}, {0.65, 0.35, 0.8}, {0.95, 0.5, 0.15}};
-  const auto i = std::hash<std::string>{}(name) % 6;
-  return color(palette[i][0], palette[i][1], palette[i][2], 1);
+  const auto k = std::hash<std::string>{}(name) % 6;
+  return {palette[k][0], palette[k][1], palette[k][2], 1};
 }
 
 const char* const kJointNames[] = {"shoulder_pan_joint", "shoulder_lift_joint", "elbow_joint",
@@ -183,6 +214,7 @@ struct EpisodeMcap::Impl {
   bool frames = false;                                        // the log has `frame` records
   std::string status, running;                                // the last tick's
   json tree = json::object();                                 // the last tree record's fields
+  std::string scene_text;                                     // the scene message being written
   std::uint16_t log, timeline, interventions, replans, plan, tree_ch, automaton, scene, joints, tf;
 
   Impl(const std::string& path, McapCompression c, const world::Scenario* s, std::size_t chunk_bytes)
@@ -232,37 +264,43 @@ struct EpisodeMcap::Impl {
         {{"timestamp", stamp(ns)}, {"level", level}, {"message", message}, {"name", "rtamp." + ev}, {"file", ""}, {"line", 0}});
   }
 
-  void regions(std::uint64_t ns, json& entities) {
-    if (!scenario) return;
-    for (const auto& r : scenario->regions) {
-      json e = entity(ns, "region/" + r.name);
-      e["cubes"].push_back({{"pose", pose({r.center[0], r.center[1], r.center[2] + 0.001}, {1, 0, 0, 0})},
-                            {"size", vec3(r.size[0], r.size[1], 0.002)},
-                            {"color", color(0.6, 0.6, 0.6, 0.35)}});
-      e["texts"].push_back(label({r.center[0], r.center[1], r.center[2] + 0.01}, r.name));
-      entities.push_back(std::move(e));
-    }
-  }
-
   // The scene: the regions and `things` (replacing what was shown; things gone deleted).
   void draw(std::uint64_t ns, const std::vector<exec::Frame::Thing>& things) {
-    json entities = json::array(), deletions = json::array();
-    regions(ns, entities);
+    std::string& o = scene_text;
+    o.clear();
     std::set<std::string> now;
+    for (const auto& t : things)
+      if (t.at != "none") now.insert(t.name);
+    o += "{\"deletions\":[";
+    bool first = true;
+    for (const auto& name : shown) {
+      if (now.count(name)) continue;
+      o += first ? "{\"timestamp\":" : ",{\"timestamp\":";
+      first = false;
+      put_stamp(o, ns);
+      o += ",\"type\":0,\"id\":";
+      json_text::append_string(o, "thing/" + name);
+      o += '}';
+    }
+    o += "],\"entities\":[";
+    first = true;
+    if (scenario)
+      for (const auto& r : scenario->regions) {
+        if (!first) o += ',';
+        first = false;
+        put_entity(o, ns, "region/", r.name, {r.center[0], r.center[1], r.center[2] + 0.001}, {1, 0, 0, 0},
+                   {r.size[0], r.size[1], 0.002}, {0.6, 0.6, 0.6, 0.35}, {r.center[0], r.center[1], r.center[2] + 0.01});
+      }
     for (const auto& t : things) {
       if (t.at == "none") continue;
-      now.insert(t.name);
-      json e = entity(ns, "thing/" + t.name);
-      e["cubes"].push_back({{"pose", pose({t.pos[0], t.pos[1], t.pos[2] + t.size[2] / 2}, t.quat)},
-                            {"size", vec3(t.size[0], t.size[1], t.size[2])},
-                            {"color", thing_color(t.name, t.container)}});
-      e["texts"].push_back(label({t.pos[0], t.pos[1], t.pos[2] + t.size[2] + 0.03}, t.name));
-      entities.push_back(std::move(e));
+      if (!first) o += ',';
+      first = false;
+      put_entity(o, ns, "thing/", t.name, {t.pos[0], t.pos[1], t.pos[2] + t.size[2] / 2}, t.quat, t.size,
+                 thing_color(t.name, t.container), {t.pos[0], t.pos[1], t.pos[2] + t.size[2] + 0.03});
     }
-    for (const auto& name : shown)
-      if (!now.count(name)) deletions.push_back({{"timestamp", stamp(ns)}, {"type", 0}, {"id", "thing/" + name}});
+    o += "]}";
     shown = std::move(now);
-    put(scene, ns, {{"deletions", deletions}, {"entities", entities}});
+    out.write(scene, ns, ns, o);
   }
 
   // A placement record ({thing: location}) laid out in its locations.
