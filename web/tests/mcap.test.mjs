@@ -173,6 +173,16 @@ for (const r of runs) {
   console.log(`ok long: ${total} messages in ${chunks} chunks`);
 }
 
+// A served episode (its log has `frame` records): the same checks.
+{
+  const log = path.join(tmp, 'served.jsonl'), out = path.join(tmp, 'served.mcap');
+  rtamp(['serve', '3-block-tray', '--world', 'symbolic', '--speed', '0', '--exit-at-end', '--port', '0', '--quiet',
+    '--web-root', tmp, '--log', log, '--mcap', out], 'ran');
+  assert.ok(fs.readFileSync(log, 'utf8').includes('"ev":"frame"'));
+  const { total } = await check(out, log, 'zstd');
+  console.log(`ok serve: ${total} messages`);
+}
+
 // A batch writes one MCAP file beside each episode's log.
 {
   const dir = path.join(tmp, 'batch');
