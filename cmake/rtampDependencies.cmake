@@ -6,6 +6,7 @@
 #                       carries its own Boost dependencies, so it is linked alone.
 #   rtamp_deps::mujoco  MuJoCo 2.2.2 — no pkg-config, no CMake package usable without qhull.
 #   rtamp_deps::egl     EGL (Mesa), for MuJoCo's offscreen rendering.
+#   rtamp_deps::zstd, rtamp_deps::lz4  the compressions of the MCAP writer (no CMake package on Debian 12).
 #
 #   rtamp_import_library(<target> <library name> [GLOBAL])
 #     Finds lib<name> (cache variable RTAMP_<NAME>_LIBRARY) and defines <target> as an

@@ -52,6 +52,7 @@ struct BatchArgs {
   double max_time = 900;
   std::string cost = "euclid";
   std::string log_dir;
+  bool mcap = false;
   bool scripted = false;
   bool no_randomize = false;
   bool quiet = false;
@@ -130,6 +131,7 @@ int run_batch(const BatchArgs& a) {
   task::validate_task(scenario);  // a bad task is refused once, not run as failed trials
   if (!a.output.empty()) rtamp::cli::check_output_file("--output", a.output);
   if (!a.log_dir.empty()) rtamp::cli::check_output_dir("--log-dir", a.log_dir);
+  if (a.mcap && a.log_dir.empty()) throw Error("--mcap: writes one MCAP file per episode into --log-dir; give --log-dir");
   batch::Grid grid;
   grid.algorithms = parse_all(a.algos, plan::parse_algorithm);
   grid.changes = parse_all(a.changes, batch::parse_change_kind);
@@ -143,6 +145,7 @@ int run_batch(const BatchArgs& a) {
   batch::BatchOptions opt;
   opt.jobs = a.jobs;
   opt.log_dir = a.log_dir;
+  opt.mcap = a.mcap;
   opt.episode = batch::batch_episode_defaults(a.world);
   opt.episode.loop.max_time = a.max_time;
   opt.episode.loop.planner.cost = a.cost;
@@ -283,6 +286,9 @@ rtamp::cli::Registrar reg{
                            "Seconds of world time before an episode gives up");
       rtamp::cli::add_choice(sub, "--cost", a->cost, rtamp::cli::cost_model_choices(), "Planner motion-cost model:");
       sub.add_option("--log-dir", a->log_dir, "Write each episode's JSON Lines log into this directory");
+      sub.add_flag("--mcap", a->mcap,
+                   "Also write each episode as MCAP into --log-dir, beside its log (the same name, .mcap; zstd; "
+                   "docs/formats.md)");
       rtamp::cli::add_choice(sub, "--world", a->world, rtamp::cli::world_choices(), "World:");
       sub.add_flag("--scripted", a->scripted, "Also apply the scenario's own operator script in every episode");
       sub.add_flag("--no-randomize", a->no_randomize, "Keep the scenario's initial object positions");

@@ -51,6 +51,7 @@ rtamp::cli::Registrar reg{
         if (!o->video.empty()) rtamp::cli::check_output_file("--video", o->video);
         episode::EpisodeOptions opt = rtamp::cli::episode_options(*o);
         if (!opt.outputs.log.empty()) rtamp::cli::check_output_file("--log", opt.outputs.log);
+        if (!opt.outputs.mcap.empty()) rtamp::cli::check_output_file("--mcap", opt.outputs.mcap);
         if (!opt.outputs.trees.empty()) rtamp::cli::check_output_dir("--trees", opt.outputs.trees);
         opt.outputs.video = o->video;
         if (!o->quiet) {

@@ -76,6 +76,7 @@ rtamp::cli::Registrar reg{
         task::validate_task(scenario);
         const episode::EpisodeOptions episode_options = rtamp::cli::episode_options(*o);
         if (!episode_options.outputs.log.empty()) rtamp::cli::check_output_file("--log", episode_options.outputs.log);
+        if (!episode_options.outputs.mcap.empty()) rtamp::cli::check_output_file("--mcap", episode_options.outputs.mcap);
         if (!episode_options.outputs.trees.empty())
           rtamp::cli::check_output_dir("--trees", episode_options.outputs.trees);
         if (!o->replay.empty()) check_input_file("--replay", o->replay);
@@ -95,8 +96,10 @@ rtamp::cli::Registrar reg{
           ro.speed = o->speed;
           ro.paused = o->paused;
           replay = std::make_unique<serve::Replay>(scenario, o->replay, ro);
-          if (!episode_options.outputs.log.empty() || !episode_options.outputs.trees.empty())
-            throw Error("--replay: serves a finished episode's log; --log and --trees are for live episodes");
+          if (!episode_options.outputs.log.empty() || !episode_options.outputs.trees.empty() ||
+              !episode_options.outputs.mcap.empty())
+            throw Error("--replay: serves a finished episode's log; --log, --mcap and --trees are for live episodes "
+                        "(rtamp log to-mcap converts a log)");
           handler = replay.get();
         } else {
           serve::LiveOptions lo;

@@ -51,6 +51,13 @@ void add_episode_options(CLI::App& app, EpisodeArgs& a, const std::string& log_h
   app.add_flag("--no-operator{false}", o.scripted_operator, "Ignore the scenario's scripted operator");
   add_real(app, "--max-time", loop.max_time, {0, 1e7, true}, "Give up after this many seconds of world time");
   app.add_option("--log", o.outputs.log, log_help);
+  app.add_option("--mcap", o.outputs.mcap,
+                 "Also write the episode as MCAP to FILE (every log record on /rtamp/log, and the scene, arm, plan, "
+                 "tree, automaton, interventions, replans and timeline on Foxglove channels; docs/formats.md)");
+  add_choice_with(
+      app, "--mcap-compression", mcap_compression_choices(), "zstd",
+      [&o](const std::string& s) { o.outputs.mcap_compression = episode::parse_mcap_compression(s); },
+      "Compression of the --mcap file's chunks:");
   app.add_option("--trees", o.outputs.trees, "Write the tree as BehaviorTree.CPP XML after each change into DIR");
 }
 

@@ -5,7 +5,7 @@
 // Invariant: every value is checked by CLI11 while the command line is parsed
 // (choices from the library's tables and registries, ranges); only the
 // planning mode's default is settled after parsing (the world's). Outputs
-// (--log, --trees) are checked by the command before it runs.
+// (--log, --mcap, --trees) are checked by the command before it runs.
 #pragma once
 
 #include <CLI/CLI.hpp>
@@ -24,7 +24,7 @@ struct EpisodeArgs {
 
 // SCENARIO, --world, --algo, --bt, --cost, --planning, --seed, --change,
 // --rate, --failures, --cycles, --random-initial, --no-operator, --max-time,
-// --log (described by `log_help`), --trees.
+// --log (described by `log_help`), --mcap, --mcap-compression, --trees.
 void add_episode_options(CLI::App& app, EpisodeArgs& args, const std::string& log_help);
 
 // The episode's options after parsing: without --planning, the world's

@@ -240,4 +240,8 @@ void check_output_dir(const std::string& option, const std::string& dir) {
   if (::access(p.c_str(), W_OK | X_OK) != 0) fail(std::error_code(errno, std::generic_category()).message());
 }
 
+std::vector<Choice> mcap_compression_choices() {
+  return {{"zstd", "Zstandard (default)"}, {"lz4", "LZ4 frames"}, {"none", "uncompressed chunks"}};
+}
+
 }  // namespace rtamp::cli

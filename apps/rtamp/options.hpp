@@ -79,6 +79,9 @@ CLI::Option* add_choice_with(CLI::App& app, const std::string& name, const std::
 CLI::Option* add_choices(CLI::App& app, const std::string& name, std::vector<std::string>& target,
                          const std::vector<Choice>& choices, const std::string& description);
 
+// The MCAP compressions (mcap_writer.hpp), for --mcap-compression / --compression.
+std::vector<Choice> mcap_compression_choices();
+
 // The positional SCENARIO: a YAML file or a built-in name (the help lists them all).
 CLI::Option* add_scenario(CLI::App& app, std::string& target);
 

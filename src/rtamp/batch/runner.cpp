@@ -52,6 +52,8 @@ episode::EpisodeOptions episode_options(const Trial& t, const BatchOptions& o) {
     e.person.change = change;
   e.seed = t.seed;
   e.outputs.log = o.log_dir.empty() ? std::string() : (std::filesystem::path(o.log_dir) / log_file_name(t)).string();
+  if (o.mcap && !e.outputs.log.empty())
+    e.outputs.mcap = std::filesystem::path(e.outputs.log).replace_extension(".mcap").string();
   return e;
 }
 

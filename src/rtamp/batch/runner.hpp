@@ -36,6 +36,7 @@ episode::EpisodeOptions batch_episode_defaults(const std::string& world = "mujoc
 struct BatchOptions {
   int jobs = 2;          // worker threads (>= 1)
   std::string log_dir;   // JSON Lines log per episode into this directory; empty: none
+  bool mcap = false;     // and an MCAP file beside each log (the same name, .mcap)
   // Every episode's options; each trial sets its algorithm, tree form, seed,
   // log file and random change (of the trial's kind, in the window of
   // episode.person.change if set, else world::RandomChange's 2-20 s).

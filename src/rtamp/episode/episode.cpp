@@ -7,6 +7,7 @@
 
 #include "rtamp/episode/sim_world.hpp"
 #include "rtamp/episode/video_recorder.hpp"
+#include "rtamp/episode/episode_mcap.hpp"
 #include "rtamp/exec/episode_log.hpp"
 #include "rtamp/exec/person_world.hpp"
 #include "rtamp/exec/timeline.hpp"
@@ -93,6 +94,12 @@ Episode::Episode(const world::Scenario& input, const EpisodeOptions& opt, const 
 
   const EpisodeOutputs& out = opt.outputs;
   if (!out.log.empty()) log_ = std::make_unique<exec::EpisodeLog>(out.log);
+  if (!out.mcap.empty()) {
+    // The MCAP file gets the log's records as they are written (a log without a file if none).
+    mcap_ = std::make_unique<EpisodeMcap>(out.mcap, out.mcap_compression, &scenario_);
+    if (!log_) log_ = std::make_unique<exec::EpisodeLog>();
+    log_->add_sink([m = mcap_.get()](const std::string& record) { m->add(record); });
+  }
   if (!out.trees.empty()) trees_ = std::make_unique<exec::TreeDump>(out.trees);
   if (sim_world_ && !out.video.empty())
     video_ = std::make_unique<VideoRecorder>(sim_world_->session().sim(), out.video);
@@ -109,6 +116,7 @@ Episode::Episode(const world::Scenario& input, const EpisodeOptions& opt, const 
 
 EpisodeMetrics Episode::run() {
   EpisodeMetrics m = loop_->run();
+  if (mcap_) mcap_->close();
   if (video_) video_->close();
   return m;
 }

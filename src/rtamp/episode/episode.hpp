@@ -29,6 +29,7 @@
 #include "rtamp/exec/reactive_loop.hpp"
 #include "rtamp/exec/timeline.hpp"
 #include "rtamp/exec/tree_dump.hpp"
+#include "rtamp/episode/mcap_writer.hpp"
 #include "rtamp/episode/world_registry.hpp"
 #include "rtamp/world/person.hpp"
 #include "rtamp/world/scenario.hpp"
@@ -38,6 +39,8 @@ namespace rtamp::episode {
 // Where the episode writes what happens (each empty or null: none).
 struct EpisodeOutputs {
   std::string log;    // JSON Lines episode log (docs/exec.md)
+  std::string mcap;   // the same records as MCAP, with Foxglove channels (episode_mcap.hpp)
+  McapCompression mcap_compression = McapCompression::Zstd;
   std::string trees;  // directory: BehaviorTree.CPP XML of the tree after each change
   std::string video;  // MP4 of the run (worlds that film: MuJoCo)
   std::function<void(const std::string&)> timeline;  // readable lines as they happen
@@ -65,6 +68,7 @@ using exec::EpisodeMetrics;
 
 EpisodeMetrics run_episode(const world::Scenario& scenario, const EpisodeOptions& options);
 
+class EpisodeMcap;
 class SimWorld;
 class VideoRecorder;
 
@@ -91,11 +95,12 @@ class Episode {
   world::Person& person() { return *person_; }
   // The MuJoCo world, if the episode runs in one (null otherwise).
   SimWorld* sim_world() { return sim_world_; }
-  // The log (null without log_path) — EpisodeLog::add_sink streams it.
+  // The log (null without a log file or an MCAP file) — EpisodeLog::add_sink streams it.
   exec::EpisodeLog* log() { return log_.get(); }
 
  private:
   world::Scenario scenario_;
+  std::unique_ptr<EpisodeMcap> mcap_;  // fed by log_'s sink
   std::unique_ptr<exec::EpisodeLog> log_;
   std::unique_ptr<exec::TreeDump> trees_;
   std::unique_ptr<exec::Timeline> timeline_;

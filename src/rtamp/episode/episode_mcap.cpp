@@ -1,0 +1,539 @@
+#include "rtamp/episode/episode_mcap.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <initializer_list>
+#include <functional>
+#include <map>
+#include <optional>
+#include <set>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "rtamp/exec/thing_layout.hpp"
+#include "rtamp/robot/ur5_kinematics.hpp"
+#include "rtamp/util/error.hpp"
+#include "rtamp/util/json_text.hpp"
+#include "rtamp/world/builtin_scenarios.hpp"
+#include "rtamp/world/scenario_io.hpp"
+
+namespace rtamp::episode {
+
+namespace {
+
+using nlohmann::json;
+
+// JSON Schemas of the channels, after the Foxglove schemas of the same names.
+const char* const kTime =
+    R"({"type":"object","properties":{"sec":{"type":"integer","minimum":0},"nsec":{"type":"integer","minimum":0,"maximum":999999999}}})";
+const char* const kVec3 =
+    R"({"type":"object","properties":{"x":{"type":"number"},"y":{"type":"number"},"z":{"type":"number"}}})";
+const char* const kQuat =
+    R"({"type":"object","properties":{"x":{"type":"number"},"y":{"type":"number"},"z":{"type":"number"},"w":{"type":"number"}}})";
+const char* const kColor =
+    R"({"type":"object","properties":{"r":{"type":"number"},"g":{"type":"number"},"b":{"type":"number"},"a":{"type":"number"}}})";
+
+std::string log_schema() {
+  return json{{"title", "foxglove.Log"},
+              {"description", "A log message"},
+              {"type", "object"},
+              {"properties",
+               {{"timestamp", json::parse(kTime)},
+                {"level", {{"type", "integer"}, {"description", "0 unknown, 1 debug, 2 info, 3 warning, 4 error, 5 fatal"}}},
+                {"message", {{"type", "string"}}},
+                {"name", {{"type", "string"}}},
+                {"file", {{"type", "string"}}},
+                {"line", {{"type", "integer"}, {"minimum", 0}}}}}}
+      .dump();
+}
+
+std::string scene_schema() {
+  const json pose{{"type", "object"}, {"properties", {{"position", json::parse(kVec3)}, {"orientation", json::parse(kQuat)}}}};
+  const json cube{{"type", "object"},
+                  {"properties", {{"pose", pose}, {"size", json::parse(kVec3)}, {"color", json::parse(kColor)}}}};
+  const json text{{"type", "object"},
+                  {"properties",
+                   {{"pose", pose},
+                    {"billboard", {{"type", "boolean"}}},
+                    {"font_size", {{"type", "number"}}},
+                    {"scale_invariant", {{"type", "boolean"}}},
+                    {"color", json::parse(kColor)},
+                    {"text", {{"type", "string"}}}}}};
+  const json entity{{"type", "object"},
+                    {"properties",
+                     {{"timestamp", json::parse(kTime)},
+                      {"frame_id", {{"type", "string"}}},
+                      {"id", {{"type", "string"}}},
+                      {"lifetime", json::parse(kTime)},
+                      {"frame_locked", {{"type", "boolean"}}},
+                      {"metadata", {{"type", "array"}}},
+                      {"arrows", {{"type", "array"}}},
+                      {"cubes", {{"type", "array"}, {"items", cube}}},
+                      {"spheres", {{"type", "array"}}},
+                      {"cylinders", {{"type", "array"}}},
+                      {"lines", {{"type", "array"}}},
+                      {"triangles", {{"type", "array"}}},
+                      {"texts", {{"type", "array"}, {"items", text}}},
+                      {"models", {{"type", "array"}}}}}};
+  const json deletion{{"type", "object"},
+                      {"properties",
+                       {{"timestamp", json::parse(kTime)},
+                        {"type", {{"type", "integer"}, {"description", "0 matching id, 1 all"}}},
+                        {"id", {{"type", "string"}}}}}};
+  return json{{"title", "foxglove.SceneUpdate"},
+              {"description", "An update to the entities displayed in a 3D scene"},
+              {"type", "object"},
+              {"properties",
+               {{"deletions", {{"type", "array"}, {"items", deletion}}},
+                {"entities", {{"type", "array"}, {"items", entity}}}}}}
+      .dump();
+}
+
+std::string transforms_schema() {
+  const json tf{{"type", "object"},
+                {"properties",
+                 {{"timestamp", json::parse(kTime)},
+                  {"parent_frame_id", {{"type", "string"}}},
+                  {"child_frame_id", {{"type", "string"}}},
+                  {"translation", json::parse(kVec3)},
+                  {"rotation", json::parse(kQuat)}}}};
+  return json{{"title", "foxglove.FrameTransforms"},
+              {"description", "An array of transforms between frames"},
+              {"type", "object"},
+              {"properties", {{"transforms", {{"type", "array"}, {"items", tf}}}}}}
+      .dump();
+}
+
+// rtamp's own channels: an object with a timestamp and the record's fields.
+std::string rtamp_schema(const std::string& title, const std::string& description) {
+  return json{{"title", title},
+              {"description", description},
+              {"type", "object"},
+              {"properties", {{"timestamp", json::parse(kTime)}}}}
+      .dump();
+}
+
+std::uint64_t nanos(double t) { return t <= 0 ? 0 : static_cast<std::uint64_t>(std::llround(t * 1e9)); }
+
+json stamp(std::uint64_t ns) { return {{"sec", ns / 1000000000ULL}, {"nsec", ns % 1000000000ULL}}; }
+
+json vec3(double x, double y, double z) { return {{"x", x}, {"y", y}, {"z", z}}; }
+
+// The scene's text, written directly (a scene message for every perceived
+// placement: building nlohmann objects for it cost most of a conversion).
+void put_stamp(std::string& o, std::uint64_t ns) {
+  o += "{\"sec\":";
+  o += std::to_string(ns / 1000000000ULL);
+  o += ",\"nsec\":";
+  o += std::to_string(ns % 1000000000ULL);
+  o += '}';
+}
+
+void put_numbers(std::string& o, std::initializer_list<std::pair<const char*, double>> fields) {
+  char sep = '{';
+  for (const auto& [key, value] : fields) {
+    o += sep;
+    sep = ',';
+    o += '"';
+    o += key;
+    o += "\":";
+    json_text::append_number(o, value);
+  }
+  o += '}';
+}
+
+void put_pose(std::string& o, const world::Vec3& p, const std::array<double, 4>& wxyz) {
+  o += "{\"position\":";
+  put_numbers(o, {{"x", p[0]}, {"y", p[1]}, {"z", p[2]}});
+  o += ",\"orientation\":";
+  put_numbers(o, {{"x", wxyz[1]}, {"y", wxyz[2]}, {"z", wxyz[3]}, {"w", wxyz[0]}});
+  o += '}';
+}
+
+// One entity of the scene: a cube (centre `centre`) and a label above it.
+void put_entity(std::string& o, std::uint64_t ns, std::string_view kind, const std::string& name,
+                const world::Vec3& centre, const std::array<double, 4>& quat, const world::Vec3& size,
+                const std::array<double, 4>& rgba, const world::Vec3& label_at) {
+  o += "{\"timestamp\":";
+  put_stamp(o, ns);
+  o += ",\"frame_id\":\"world\",\"id\":";
+  json_text::append_string(o, std::string(kind) + name);
+  o += ",\"lifetime\":{\"sec\":0,\"nsec\":0},\"frame_locked\":false,\"metadata\":[],\"arrows\":[],\"cubes\":[{\"pose\":";
+  put_pose(o, centre, quat);
+  o += ",\"size\":";
+  put_numbers(o, {{"x", size[0]}, {"y", size[1]}, {"z", size[2]}});
+  o += ",\"color\":";
+  put_numbers(o, {{"r", rgba[0]}, {"g", rgba[1]}, {"b", rgba[2]}, {"a", rgba[3]}});
+  o += "}],\"spheres\":[],\"cylinders\":[],\"lines\":[],\"triangles\":[],\"texts\":[{\"pose\":";
+  put_pose(o, label_at, {1, 0, 0, 0});
+  o += ",\"billboard\":true,\"font_size\":14,\"scale_invariant\":true,"
+       "\"color\":{\"r\":1,\"g\":1,\"b\":1,\"a\":1},\"text\":";
+  json_text::append_string(o, name);
+  o += "}],\"models\":[]}";
+}
+
+// A colour per block name (stable), trays brown.
+std::array<double, 4> thing_color(const std::string& name, bool container) {
+  if (container) return {0.55, 0.38, 0.22, 1};
+  static const double palette[][3] = {{0.85, 0.2, 0.2}, {0.2, 0.6, 0.9}, {0.95, 0.75, 0.15},
+                                      {0.3, 0.75, 0.35}, {0.65, 0.35, 0.8}, {0.95, 0.5, 0.15}};
+  const auto k = std::hash<std::string>{}(name) % 6;
+  return {palette[k][0], palette[k][1], palette[k][2], 1};
+}
+
+const char* const kJointNames[] = {"shoulder_pan_joint", "shoulder_lift_joint", "elbow_joint",
+                                   "wrist_1_joint",      "wrist_2_joint",       "wrist_3_joint"};
+
+std::string text_of(const json& j, const char* key) {
+  auto it = j.find(key);
+  if (it == j.end() || it->is_null()) return "";
+  return it->is_string() ? it->get<std::string>() : it->dump();
+}
+
+std::string join(const json& a) {
+  std::string s;
+  if (!a.is_array()) return s;
+  for (const auto& x : a) {
+    if (!s.empty()) s += ", ";
+    s += x.is_string() ? x.get<std::string>() : x.dump();
+  }
+  return s;
+}
+
+}  // namespace
+
+struct EpisodeMcap::Impl {
+  McapWriter out;
+  std::optional<world::Scenario> scenario;
+  std::optional<exec::ThingLayout> layout;
+  std::optional<robot::Ur5Kinematics> arm;
+  std::map<std::string, std::pair<std::string, bool>> kinds;  // thing -> class, container
+  std::set<std::string> shown;                                // things on the scene now
+  bool frames = false;                                        // the log has `frame` records
+  std::string status, running;                                // the last tick's
+  json tree = json::object();                                 // the last tree record's fields
+  std::string scene_text;                                     // the scene message being written
+  std::uint16_t log, timeline, interventions, replans, plan, tree_ch, automaton, scene, joints, tf;
+
+  Impl(const std::string& path, McapCompression c, const world::Scenario* s, std::size_t chunk_bytes)
+      : out(path, c, chunk_bytes) {
+    const auto json_schema = [&](const std::string& name, const std::string& data) {
+      return out.add_schema(name, "jsonschema", data);
+    };
+    const std::uint16_t log_s = json_schema("foxglove.Log", log_schema());
+    log = out.add_channel("/rtamp/log", json_schema("rtamp.EpisodeLogRecord",
+                                                    R"js({"title":"rtamp.EpisodeLogRecord","description":"A record of the rtamp episode log (docs/exec.md)","type":"object","properties":{"ev":{"type":"string"},"t":{"type":"number"}},"required":["ev","t"]})js"),
+                          "json");
+    timeline = out.add_channel("/timeline", log_s, "json");
+    interventions = out.add_channel("/interventions", log_s, "json");
+    replans = out.add_channel("/replans", log_s, "json");
+    plan = out.add_channel("/plan", json_schema("rtamp.Plan", rtamp_schema("rtamp.Plan", "A plan: its moves, costs and search")), "json");
+    tree_ch = out.add_channel(
+        "/tree", json_schema("rtamp.TreeStatus", rtamp_schema("rtamp.TreeStatus", "The behavior tree: its last change and tick status")),
+        "json");
+    automaton = out.add_channel(
+        "/automaton",
+        json_schema("rtamp.AutomatonStates", rtamp_schema("rtamp.AutomatonStates", "The Büchi states tracked after a step of the run")),
+        "json");
+    scene = out.add_channel("/scene", json_schema("foxglove.SceneUpdate", scene_schema()), "json");
+    joints = out.add_channel(
+        "/joint_states", json_schema("rtamp.JointState", rtamp_schema("rtamp.JointState", "The UR5's joint angles (rad)")), "json");
+    tf = out.add_channel("/tf", json_schema("foxglove.FrameTransforms", transforms_schema()), "json");
+    if (s) use(*s);
+  }
+
+  void use(const world::Scenario& s) {
+    scenario = s;
+    layout.emplace(s);
+    robot::Ur5Kinematics::Config config;
+    config.base = robot::Ur5Kinematics::base_pose(s.robot);
+    arm.emplace(config);
+    for (const auto& o : s.objects) kinds[o.name] = {o.cls, false};
+    for (const auto& c : s.containers) kinds[c.name] = {c.cls, true};
+  }
+
+  void put(std::uint16_t channel, std::uint64_t ns, const json& j) {
+    const std::string text = j.dump(-1, ' ', false, json::error_handler_t::replace);
+    out.write(channel, ns, ns, text);
+  }
+
+  void logline(std::uint16_t channel, std::uint64_t ns, int level, const std::string& ev, const std::string& message) {
+    put(channel, ns,
+        {{"timestamp", stamp(ns)}, {"level", level}, {"message", message}, {"name", "rtamp." + ev}, {"file", ""}, {"line", 0}});
+  }
+
+  // The scene: the regions and `things` (replacing what was shown; things gone deleted).
+  void draw(std::uint64_t ns, const std::vector<exec::Frame::Thing>& things) {
+    std::string& o = scene_text;
+    o.clear();
+    std::set<std::string> now;
+    for (const auto& t : things)
+      if (t.at != "none") now.insert(t.name);
+    o += "{\"deletions\":[";
+    bool first = true;
+    for (const auto& name : shown) {
+      if (now.count(name)) continue;
+      o += first ? "{\"timestamp\":" : ",{\"timestamp\":";
+      first = false;
+      put_stamp(o, ns);
+      o += ",\"type\":0,\"id\":";
+      json_text::append_string(o, "thing/" + name);
+      o += '}';
+    }
+    o += "],\"entities\":[";
+    first = true;
+    if (scenario)
+      for (const auto& r : scenario->regions) {
+        if (!first) o += ',';
+        first = false;
+        put_entity(o, ns, "region/", r.name, {r.center[0], r.center[1], r.center[2] + 0.001}, {1, 0, 0, 0},
+                   {r.size[0], r.size[1], 0.002}, {0.6, 0.6, 0.6, 0.35}, {r.center[0], r.center[1], r.center[2] + 0.01});
+      }
+    for (const auto& t : things) {
+      if (t.at == "none") continue;
+      if (!first) o += ',';
+      first = false;
+      put_entity(o, ns, "thing/", t.name, {t.pos[0], t.pos[1], t.pos[2] + t.size[2] / 2}, t.quat, t.size,
+                 thing_color(t.name, t.container), {t.pos[0], t.pos[1], t.pos[2] + t.size[2] + 0.03});
+    }
+    o += "]}";
+    shown = std::move(now);
+    out.write(scene, ns, ns, o);
+  }
+
+  // A placement record ({thing: location}) laid out in its locations.
+  void draw_placement(std::uint64_t ns, double t, const json& placement) {
+    if (frames || !layout || !placement.is_object()) return;
+    world::Placement p;
+    for (const auto& [name, where] : placement.items()) {
+      const auto k = kinds.find(name);
+      const bool container = k != kinds.end() && k->second.second;
+      p.set(name, where.is_string() ? where.get<std::string>() : "none", k != kinds.end() ? k->second.first : "block",
+            container);
+    }
+    world::Vec3 hand{0, 0, 0};
+    if (scenario) hand = {scenario->robot.base[0], scenario->robot.base[1], scenario->robot.base[2] + 0.5};
+    draw(ns, layout->frame(t, p, hand).things);
+  }
+
+  void draw_frame(std::uint64_t ns, const json& j) {
+    frames = true;
+    std::vector<exec::Frame::Thing> things;
+    for (const auto& x : j.value("things", json::array())) {
+      exec::Frame::Thing t;
+      t.name = x.value("name", "");
+      t.container = x.value("kind", "") == "container";
+      const auto pos = x.value("pos", std::vector<double>{0, 0, 0});
+      const auto q = x.value("quat", std::vector<double>{1, 0, 0, 0});
+      const auto size = x.value("size", std::vector<double>{0, 0, 0});
+      if (pos.size() == 3) t.pos = {pos[0], pos[1], pos[2]};
+      if (q.size() == 4) t.quat = {q[0], q[1], q[2], q[3]};
+      if (size.size() == 3) t.size = {size[0], size[1], size[2]};
+      t.at = x.value("at", "");
+      things.push_back(std::move(t));
+    }
+    draw(ns, things);
+    const auto q = j.find("q");
+    if (q == j.end() || !q->is_array() || q->size() != 6) return;
+    robot::Joints joints_now{};
+    json names = json::array(), positions = json::array();
+    for (std::size_t i = 0; i < 6; ++i) {
+      joints_now[i] = (*q)[i].get<double>();
+      names.push_back(kJointNames[i]);
+      positions.push_back(joints_now[i]);
+    }
+    put(joints, ns, {{"timestamp", stamp(ns)}, {"name", names}, {"position", positions}});
+    if (!arm) return;
+    const auto frames_now = arm->link_frames(joints_now);
+    json transforms = json::array();
+    for (std::size_t i = 0; i < frames_now.size(); ++i) {
+      const Eigen::Quaterniond r(frames_now[i].rotation());
+      const Eigen::Vector3d p = frames_now[i].translation();
+      transforms.push_back({{"timestamp", stamp(ns)},
+                            {"parent_frame_id", "world"},
+                            {"child_frame_id", i == 0 ? std::string("ur5/base") : "ur5/link" + std::to_string(i)},
+                            {"translation", vec3(p.x(), p.y(), p.z())},
+                            {"rotation", {{"x", r.x()}, {"y", r.y()}, {"z", r.z()}, {"w", r.w()}}}});
+    }
+    put(tf, ns, {{"transforms", transforms}});
+  }
+
+  void tree_status(std::uint64_t ns) {
+    json j = tree;
+    j["timestamp"] = stamp(ns);
+    j["status"] = status;
+    j["running"] = running;
+    put(tree_ch, ns, j);
+  }
+
+  void tick(double t, std::string_view r, std::string_view s, std::string_view text) {
+    const std::uint64_t ns = nanos(t);
+    out.write(log, ns, ns, text);
+    if (s != status || r != running) {
+      status = s;
+      running = r;
+      tree_status(ns);
+    }
+  }
+
+  void add(const json& j, std::string_view text) {
+    const std::string ev = j.at("ev").get<std::string>();
+    const double t = j.at("t").get<double>();
+    const std::uint64_t ns = nanos(t);
+    if (ev == "tick") {
+      tick(t, text_of(j, "running"), text_of(j, "status"), text);
+      return;
+    }
+    out.write(log, ns, ns, text);
+    if (ev == "episode") {
+      if (!scenario) {
+        const std::string name = text_of(j, "scenario");
+        if (world::builtin_scenario_text(name)) use(world::load_scenario(name));
+      }
+      logline(timeline, ns, 2, ev,
+              "episode " + text_of(j, "scenario") + ": " + text_of(j, "task") + " (world " + text_of(j, "world") +
+                  ", seed " + text_of(j, "seed") + ")");
+      if (scenario) draw(ns, {});  // the regions, before anything is perceived
+    } else if (ev == "action") {
+      const std::string what = text_of(j, "what"), why = text_of(j, "reason");
+      logline(timeline, ns, what == "failed" ? 3 : 2, ev, what + " " + text_of(j, "action") + (why.empty() ? "" : ": " + why));
+    } else if (ev == "intervention") {
+      const bool applied = j.value("applied", false);
+      std::string m = text_of(j, "kind") + " " + text_of(j, "subject");
+      if (!text_of(j, "location").empty()) m += " -> " + text_of(j, "location");
+      m += applied ? " (applied)" : " (refused)";
+      if (!text_of(j, "detail").empty()) m += ": " + text_of(j, "detail");
+      if (const auto c = j.find("class"); c != j.end() && c->is_string())
+        kinds[text_of(j, "subject")] = {c->get<std::string>(), text_of(j, "kind").find("container") != std::string::npos};
+      logline(interventions, ns, applied ? 2 : 3, ev, m);
+      logline(timeline, ns, applied ? 2 : 3, ev, "intervention: " + m);
+    } else if (ev == "perceived") {
+      draw_placement(ns, t, j.value("placement", json::object()));
+    } else if (ev == "things") {
+      logline(timeline, ns, 2, ev, "things added [" + join(j.value("added", json::array())) + "] removed [" +
+                                      join(j.value("removed", json::array())) + "]");
+    } else if (ev == "run") {
+      put(automaton, ns,
+          {{"timestamp", stamp(ns)},
+           {"automaton_states", j.value("automaton_states", json::array())},
+           {"state", j.value("state", json::object())}});
+    } else if (ev == "handled_by_tree") {
+      logline(timeline, ns, 2, ev, "handled by the tree: " + text_of(j, "by"));
+    } else if (ev == "replan") {
+      logline(replans, ns, 2, ev, "replan: " + text_of(j, "why"));
+      logline(timeline, ns, 2, ev, "replan: " + text_of(j, "why"));
+    } else if (ev == "plan") {
+      json p = j;
+      p.erase("ev");
+      p.erase("t");
+      p["timestamp"] = stamp(ns);
+      put(plan, ns, p);
+      logline(timeline, ns, 2, ev,
+              std::string(j.value("first", false) ? "first plan" : "plan") + ", cost " + text_of(j, "cost") + ": " +
+                  join(j.value("actions", json::array())));
+    } else if (ev == "tree") {
+      tree = j;
+      tree.erase("ev");
+      tree.erase("t");
+      tree_status(ns);
+      logline(timeline, ns, 2, ev,
+              std::string(j.value("deferred", false) ? "tree change deferred" : "tree changed") + ": inserted " +
+                  text_of(j, "inserted") + ", removed " + text_of(j, "removed") + ", updated " + text_of(j, "updated"));
+    } else if (ev == "cycle") {
+      logline(timeline, ns, 2, ev, "cycle " + text_of(j, "completed") + " completed");
+    } else if (ev == "frame") {
+      draw_frame(ns, j);
+    } else if (ev == "end") {
+      draw_placement(ns, t, j.value("placement", json::object()));
+      const bool success = j.value("success", false);
+      logline(timeline, ns, success ? 2 : text_of(j, "end") == "error" ? 4 : 3, ev,
+              std::string(success ? "success" : "no success") + " (" + text_of(j, "end") + ")" +
+                  (text_of(j, "reason").empty() ? "" : ": " + text_of(j, "reason")));
+    } else {
+      logline(timeline, ns, 2, ev, std::string(text));
+    }
+  }
+};
+
+EpisodeMcap::EpisodeMcap(const std::string& path, McapCompression compression, const world::Scenario* scenario,
+                         std::size_t chunk_bytes)
+    : impl_(std::make_unique<Impl>(path, compression, scenario, chunk_bytes)) {}
+
+EpisodeMcap::~EpisodeMcap() = default;
+
+namespace {
+
+// A tick record as the log writes it ({"ev":"tick","running":"..","status":"..","t":T},
+// no escapes): its fields without parsing JSON — half of a log's records are ticks.
+bool tick_fields(std::string_view r, std::string_view& running, std::string_view& status, double& t) {
+  constexpr std::string_view head = R"({"ev":"tick","running":")", mid = R"(","status":")", tail = R"(","t":)";
+  if (r.substr(0, head.size()) != head || r.back() != '}' || r.find('\\') != std::string_view::npos) return false;
+  const auto m = r.find(mid, head.size());
+  if (m == std::string_view::npos) return false;
+  const auto e = r.find(tail, m + mid.size());
+  if (e == std::string_view::npos) return false;
+  running = r.substr(head.size(), m - head.size());
+  status = r.substr(m + mid.size(), e - m - mid.size());
+  const std::string number(r.substr(e + tail.size(), r.size() - 1 - e - tail.size()));
+  char* end = nullptr;
+  t = std::strtod(number.c_str(), &end);
+  return !number.empty() && end == number.c_str() + number.size() && std::isfinite(t);
+}
+
+}  // namespace
+
+void EpisodeMcap::add(std::string_view record) {
+  std::string_view running, status;
+  double tick_time = 0;
+  if (tick_fields(record, running, status, tick_time)) {
+    impl_->tick(tick_time, running, status, record);
+    ++records_;
+    return;
+  }
+  json j = json::parse(record, nullptr, false);
+  if (j.is_discarded() || !j.is_object()) throw Error("not a JSON object");
+  const auto ev = j.find("ev");
+  const auto t = j.find("t");
+  if (ev == j.end() || !ev->is_string()) throw Error("a record without \"ev\"");
+  if (t == j.end() || !t->is_number()) throw Error("a record without a time \"t\"");
+  impl_->add(j, record);
+  ++records_;
+}
+
+void EpisodeMcap::close() { impl_->out.close(); }
+
+std::uint64_t log_to_mcap(const std::string& log_path, const std::string& mcap_path, McapCompression compression,
+                          const world::Scenario* scenario, std::size_t chunk_bytes) {
+  std::ifstream in(log_path);
+  if (!in) throw Error("cannot read the episode log '" + log_path + "'");
+  std::string failure;
+  std::uint64_t records = 0;
+  {
+    EpisodeMcap out(mcap_path, compression, scenario, chunk_bytes);
+    std::string line;
+    std::uint64_t n = 0;
+    while (failure.empty() && std::getline(in, line)) {
+      ++n;
+      if (line.find_first_not_of(" \t\r") == std::string::npos) continue;
+      try {
+        out.add(line);
+      } catch (const Error& e) {
+        failure = log_path + ":" + std::to_string(n) + ": " + e.message();
+      } catch (const std::exception& e) {
+        failure = log_path + ":" + std::to_string(n) + ": " + e.what();
+      }
+    }
+    if (failure.empty()) out.close();
+    records = out.records();
+  }
+  if (!failure.empty()) {
+    std::remove(mcap_path.c_str());  // no half-converted file
+    throw Error(failure);
+  }
+  return records;
+}
+
+}  // namespace rtamp::episode

@@ -1,0 +1,59 @@
+// An episode's log as an MCAP file that Foxglove and other MCAP viewers draw
+// without plugins: every JSON Lines record of the episode log (exec/episode_log.hpp)
+// goes in, as it is, on /rtamp/log — so that channel holds exactly the log's
+// records — and is turned into messages of JSON channels with JSON Schemas in
+// the Foxglove conventions (docs/formats.md "MCAP"):
+//   /scene          foxglove.SceneUpdate   regions, trays and blocks (from `frame`
+//                                          records, else laid out from `perceived`
+//                                          and `end` placements: exec/thing_layout.hpp)
+//   /joint_states   rtamp.JointState       the UR5's joint angles (`frame` records with q)
+//   /tf             foxglove.FrameTransforms  the arm's link frames in the world (UR5 FK)
+//   /plan           rtamp.Plan             each plan
+//   /tree           rtamp.TreeStatus       tree changes and the tick status when it changes
+//   /automaton      rtamp.AutomatonStates  the tracked Büchi states after each step of the run
+//   /timeline       foxglove.Log           everything that happened, one line each
+//   /interventions  foxglove.Log           interventions (refused ones as warnings)
+//   /replans        foxglove.Log           replan requests
+// Message times are the records' world times (ns). Used live, as a sink of the
+// episode log (Episode, `--mcap`), and by `rtamp log to-mcap` on a finished log.
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <string_view>
+
+#include "rtamp/episode/mcap_writer.hpp"
+#include "rtamp/world/scenario.hpp"
+
+namespace rtamp::episode {
+
+class EpisodeMcap {
+ public:
+  // Opens `path` (rtamp::Error if it cannot be written). `scenario` (may be
+  // null) gives the regions and where things start; without it, the scenario
+  // the `episode` record names is used if it is a built-in one.
+  EpisodeMcap(const std::string& path, McapCompression compression, const world::Scenario* scenario,
+              std::size_t chunk_bytes = 1 << 20);
+  ~EpisodeMcap();
+
+  // One record of the log (one JSON object with "ev" and "t", no newline);
+  // rtamp::Error if it is not one.
+  void add(std::string_view record);
+  // Writes the summary and closes the file (the destructor does it quietly).
+  void close();
+
+  std::uint64_t records() const { return records_; }
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+  std::uint64_t records_ = 0;
+};
+
+// Converts the JSON Lines log at `log_path` to `mcap_path`; rtamp::Error
+// "LOG:LINE: what" for a malformed record. Returns the number of records.
+std::uint64_t log_to_mcap(const std::string& log_path, const std::string& mcap_path, McapCompression compression,
+                          const world::Scenario* scenario = nullptr, std::size_t chunk_bytes = 1 << 20);
+
+}  // namespace rtamp::episode
