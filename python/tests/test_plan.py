@@ -227,8 +227,8 @@ def test_an_infinite_cost_is_a_move_the_model_cannot_do(tray):
 
 
 def test_the_memory_limit_stops_a_query_with_its_own_reason():
-    # about 10,000 product nodes without symmetry reduction, 5 MB
-    s = rtamp.generate_scenario(regions=5, objects=5, layout="random", seed=3, task="F all_in_r2 & F all_in_r3",
+    # seven objects without symmetry reduction: A* passes its first memory check (128 expansions)
+    s = rtamp.generate_scenario(regions=5, objects=7, layout="random", seed=3, task="F all_in_r2 & F all_in_r3",
                                 propositions=[("all_in_r3", "all object in r3")])
     plan = rtamp.Planner(s, symmetry=False, max_memory_bytes=64 << 10).plan()
     assert not plan and plan.reason == "memory-limit" and plan.stats.hit_memory_limit

@@ -84,7 +84,7 @@ bool relaxed_search_finds(const plan::Planner& p, bool symmetry) {
   const auto h = plan::algorithm_info(plan::Algorithm::AStar).make_heuristic(g, x);
   plan::SearchStats st;
   const std::vector<plan::NodeId> starts{g.find_or_add(relaxed.canonical(relaxed.initial()), p.automaton().initial)};
-  return ls.run(g, x, starts, *h, true, false, plan::SearchLimits{}, 0, st).found;
+  return ls.run(g, x, starts, *h, plan::LassoConfig{true, false}, plan::Termination{plan::SearchLimits{}, 0}, st).found;
 }
 
 TEST(TraySymmetry, RandomTrayScenariosMatchBruteForce) {

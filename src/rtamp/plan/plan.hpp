@@ -55,6 +55,7 @@ struct SearchStats {
   std::uint64_t cycle_searches = 0;   // cycle searches run (cache misses of the cycle table)
   std::uint64_t graph_nodes = 0;      // nodes in the product graph after the query
   std::uint64_t graph_edges = 0;
+  std::uint64_t impossible_moves = 0;  // moves the cost model priced +inf (dropped), over the graph's life
   bool cache_used = false;            // the motion-cost cache was consulted (astar-exp, expensive models)
   std::uint64_t cache_hits = 0;       // motion-cost cache
   std::uint64_t cache_misses = 0;

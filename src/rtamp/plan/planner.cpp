@@ -317,6 +317,7 @@ PlanResult Planner::search(task::System& ts, task::Labeling& lab, const PlannerO
   res.stats.generated = g->size() - before;
   res.stats.graph_nodes = g->size();
   res.stats.graph_edges = g->num_edges();
+  res.stats.impossible_moves = g->impossible_moves();
   res.stats.hit_node_limit = stop.node;
   res.stats.hit_time_limit = stop.time;
   res.stats.hit_memory_limit = stop.memory;
@@ -354,14 +355,27 @@ void Planner::diagnose(PlanResult& res, std::int64_t t0) {
   const QueryClock clock(options_.limits.time_limit);
   const LassoExistence e =
       find_accepting_lasso(relaxed, rlab, ba_, ba_starts_, options_.limits.max_nodes, clock.deadline);
-  const std::int64_t now = steady_now_ns();
   res.stats.diagnosis_nodes = e.nodes;
+  bool exists = e.exists;
+  bool stopped = e.stopped;
+  // The existence check asks no costs, so it cannot know the moves the model
+  // prices +inf: if the search met any, a lasso it finds is confirmed by a
+  // search of the capacity-free TS that does (rare: only such models pay).
+  if (exists && res.stats.impossible_moves > 0) {
+    PlannerOptions confirm = options_;
+    confirm.graph = GraphConstruction::Partial;
+    const PlanResult c = search(relaxed, rlab, confirm, Experienced::Cold);
+    exists = c.found;
+    stopped = c.stats.hit_node_limit || c.stats.hit_time_limit || c.stats.hit_memory_limit;
+    res.stats.diagnosis_nodes += c.stats.graph_nodes;
+  }
+  const std::int64_t now = steady_now_ns();
   res.stats.diagnosis_seconds = double(now - d0) * 1e-9;
   res.stats.seconds = double(now - t0) * 1e-9;
-  if (e.exists) {
+  if (exists) {
     res.reason = NoPlanReason::Capacity;
     res.message = "no plan within the capacities of the locations (there is one if capacities are ignored)";
-  } else if (e.stopped) {
+  } else if (stopped) {
     res.message += " (whether there is a plan if capacities are ignored is unknown: that check stopped at its limit)";
   }
 }

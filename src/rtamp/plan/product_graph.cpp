@@ -92,7 +92,10 @@ void ProductGraph::expand(NodeId n) {
       const double c = cache_ ? cache_->lookup(mq, *model_) : model_->cost(mq);
       if (!valid_cost(c)) [[unlikely]]
         throw_bad_cost(*model_, *ts_, s, a, c);
-      if (c == kInf) return;  // the model cannot do this move
+      if (c == kInf) {  // the model cannot do this move
+        ++impossible_moves_;
+        return;
+      }
       const task::State s2 = ts_->canonical_successor(s, a);
       for (std::uint32_t q2 : succ_q_) edges_.push_back({find_or_add(s2, q2), a.packed(), c});
     });

@@ -96,6 +96,8 @@ class ProductGraph {
                   const std::function<void(std::int64_t now_ns)>& tick = {}, std::size_t max_bytes = 0);
 
   std::uint64_t expansions() const { return expansions_; }
+  // Moves the cost model priced +inf (not edges of the graph), since the graph was made.
+  std::uint64_t impossible_moves() const { return impossible_moves_; }
   std::size_t num_edges() const { return edges_.size(); }
   std::size_t memory_bytes() const;
 
@@ -120,6 +122,7 @@ class ProductGraph {
   std::vector<std::uint32_t> table_;  // node id + 1, 0 = empty
   std::vector<std::uint32_t> succ_q_;  // scratch: BA successors of the node being expanded
   std::uint64_t expansions_ = 0;
+  std::uint64_t impossible_moves_ = 0;
 };
 
 }  // namespace rtamp::plan

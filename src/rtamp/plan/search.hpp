@@ -1,87 +1,15 @@
-// Search strategies over the product graph and the lasso search (paper
-// Section III.B: graph search with motion costs; docs/design.md "Plans are lassos").
-//
-// A lasso plan is a path (the prefix) from one of the start nodes to a node
-// J plus a cycle (>= 1 edge) from J back to J that passes an accepting node:
-// the prefix may join the cycle anywhere, so the lasso is optimal for the
-// task's run and not for where one automaton happens to put its accepting
-// state (`G F a & G F b` and `G F b & G F a` cost the same). Its cost is
-// prefix + cycle; LassoSearch minimises it exactly over all start nodes:
-//   1. Best-first search from the start nodes (multi-source: all at g = 0; the
-//      planner passes (s, q) for every tracked automaton state q) in order of
-//      f = g + h (h = 0: Dijkstra; h admissible: A*). g(m) is then the distance
-//      from the nearest start. Nodes are re-opened when a cheaper path is
-//      found, so admissibility suffices for exact g at the end.
-//   2. U(J) = the cheapest cycle through J that contains an accepting node
-//      (`cycle`: a best-first search over (node, seen an accepting node yet)
-//      from J's successors back to (J, yes); for an accepting J simply its
-//      cheapest cycle), pruned at best - g(J). Its heuristic is the max of
-//      state_distance_bound to J's state, Heuristic::walk_bound to J's
-//      automaton state and Heuristic::return_bound to J (through an
-//      accepting node while none was passed): all bound every way back to
-//      J. The cycle found is kept with its cost (the lasso is rebuilt from
-//      it, never searched again). U does not depend
-//      on the start, so it is kept in the cycle table of the graph's
-//      experience (exact, or "none below b"; plan/experience.hpp) and reused
-//      by later queries. When such a search is unbounded (no
-//      incumbent yet) and finds nothing, the SCCs reachable from J are
-//      classified at once (on_accepting_cycle): nodes whose SCC has no
-//      accepting cycle get "none" in the table and no search of their own.
-//      An accepting node gets its search when it
-//      is popped. A non-accepting node whose automaton state lies on an
-//      automaton cycle through an accepting state is a join candidate: it
-//      waits in a second heap under the key g + a lower bound on U (the
-//      table's, h, and Heuristic::cycle_bound) and is searched only once an
-//      incumbent exists and its key is the least open one (the first lasso
-//      comes, as before, from an accepting node: any lasso's accepting node
-//      has a cycle through itself). Other nodes cannot be on a lasso's cycle.
-//   3. Stop when the least key of both heaps is >= best.
-// Ties: paths, cycles and lassos are compared as (cost, number of moves)
-// lexicographically (costs equal within 1e-9), so among the cheapest lassos
-// the one with the fewest moves is returned. h stays a cost bound (its moves
-// part is 0, admissible in that order); labels are re-opened when (g, moves)
-// improves; an open entry is skipped when (f, moves) is not below the
-// incumbent and the search stops when f exceeds the incumbent's cost; the
-// arguments below hold in that order.
-// Optimality: let L* = P + C be an optimal lasso (over all starts) joining
-// its cycle at J*, its prefix P from start node s*. Every node m on P (J*
-// included) has f(m) <= g*(m) + V(m) <= L*, where V(m) is the cost of the
-// best lasso continuing from m and h(m) <= V(m) (the guard heuristic's parts
-// bound the distance to some accepting node, or the whole lasso as max(path
-// to acceptance, least cycle through it): plan/heuristic.hpp,
-// chain_bound.hpp). So until J* is popped with g = g*(J*) the open list holds
-// a node with f <= L*, and the search cannot stop with best > L*; once it is,
-// J* (accepting, or a candidate whose key g*(J*) + lb <= g*(J*) + U(J*) = L*)
-// gets its cycle search, which finds C (the bound best - g(J*) > C unless
-// best is already optimal). Several starts change nothing in this: s* is
-// pushed with g = 0 like the others.
-// Learned values (experience) are C*_old - g_old(m) for nodes m closed by an
-// earlier complete search on the same graph, from any set of starts: g_old(m)
-// >= the distance from some old start s, and C*_old <= dist(s, m) + V(m) (the
-// old optimum is at most the lasso from s through m), so they are <= V(m),
-// whatever the starts of a later query.
-// Solved paths (experience, `learn`): the prefix nodes of an optimal lasso
-// found by a complete search are marked solved in the experience (their best
-// lasso cost is then known exactly, Experience::set_solved; the join node's via
-// is kViaCycle and its U is exact in the cycle table). A later search on
-// the same graph that reaches a solved node m with cost g(m) has a lasso of
-// cost g(m) + V(m) at once (the path to m, then m's recorded lasso); it keeps
-// it as the incumbent and never expands solved nodes (nothing through m can
-// be cheaper). With several starts the value of a prefix node x is C* minus
-// its cost from the start s* the lasso used, again exact (V(x) >= C* -
-// g(x) by the learned-bound argument). The stopping rule above then ends the
-// search as soon as no open node could beat it, so a replan that starts on or
-// next to an earlier plan expands few or no nodes. Optimality is unchanged:
-// the incumbent is a real lasso, and the argument above only needs h
-// admissible.
-// What is not covered: a TS lasso u·v^ω whose automaton run needs several
-// turns of v to return to the automaton state it entered v in is, in the
-// product, the cycle v^k; it costs k·|v| there, so a cheaper plan of that
-// kind is not found (tests/plan/lasso_join_test.cpp checks that every
-// cheaper TS lasso it finds is of that kind; rare for patrol tasks).
-// Memory: per-search arrays indexed by node id (g, parent, parent edge,
-// heuristic, generation stamp), a binary heap with lazy deletion (stale
-// entries are skipped), all grown geometrically and reused across queries.
+// Search strategies over the product graph and the lasso search (paper Section III.B).
+// LassoSearch returns a minimum-cost lasso over all start nodes: a prefix to a node J
+// and a cycle (>= 1 edge) back to J through an accepting node, joined anywhere; cost
+// prefix + cycle, ties broken by fewer moves. Invariants: every heuristic is admissible
+// (a cost bound, moves part 0); learned bounds and solved paths from the experience are
+// at most the true remaining cost, so they never cost optimality; a stopped search
+// reports which termination condition hit and never "no plan". Per-search arrays are
+// indexed by node id and reused across queries (no allocation per expanded node).
+// The algorithm, its proof of optimality, the experience argument and the one kind of
+// lasso not covered (a cycle the automaton needs several turns of): docs/planning.md,
+// "Lasso search and why it is optimal".
+
 #pragma once
 
 #include <cstdint>
