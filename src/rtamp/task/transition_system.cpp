@@ -129,8 +129,13 @@ bool System::same_moves(unsigned a, unsigned b) const {
                     allowed_.begin() + std::ptrdiff_t(std::size_t{b} * L));
 }
 
-void System::set_symmetry(const std::vector<std::vector<unsigned>>& groups) {
-  // Checked before anything changes (a bad call leaves the symmetry as it was).
+// Groups sorted, deduplicated, those of one member dropped; every member a
+// thing of the right kind (containers or not), in one group only, and
+// `same(member, first)`. Throws naming the rule before anything changes.
+template <class Same>
+std::vector<std::vector<unsigned>> System::checked_groups(const std::vector<std::vector<unsigned>>& groups,
+                                                          bool containers, Same same) const {
+  const std::string what = containers ? "container symmetry group" : "symmetry group";
   std::vector<std::vector<unsigned>> clean;
   std::vector<bool> taken(num_things(), false);
   for (auto g : groups) {
@@ -138,16 +143,24 @@ void System::set_symmetry(const std::vector<std::vector<unsigned>>& groups) {
     g.erase(std::unique(g.begin(), g.end()), g.end());
     if (g.size() < 2) continue;
     for (unsigned t : g) {
-      if (t >= num_things() || is_container(t) || taken[t])
-        throw Error("bad symmetry group (containers and overlapping groups are not allowed)");
+      if (t >= num_things() || is_container(t) != containers || taken[t])
+        throw Error("bad " + what + " (" + (containers ? "objects" : "containers") +
+                    " and overlapping groups are not allowed)");
       taken[t] = true;
     }
     for (unsigned t : g)
-      if (!same_moves(t, g[0]))
-        throw Error("bad symmetry group ('" + thing_names_[t] + "' and '" + thing_names_[g[0]] +
-                    "' differ in footprint or forbidden moves)");
+      if (!same(t, g[0]))
+        throw Error("bad " + what + " ('" + thing_names_[t] + "' and '" + thing_names_[g[0]] + "' differ in " +
+                    (containers ? "footprint, capacity or forbidden moves)" : "footprint or forbidden moves)"));
     clean.push_back(std::move(g));
   }
+  return clean;
+}
+
+void System::set_symmetry(const std::vector<std::vector<unsigned>>& groups) {
+  // Checked before anything changes (a bad call leaves the symmetry as it was).
+  std::vector<std::vector<unsigned>> clean =
+      checked_groups(groups, false, [this](unsigned a, unsigned b) { return same_moves(a, b); });
   group_.assign(num_things(), -1);
   prev_.assign(num_things(), -1);
   next_.assign(num_things(), -1);
@@ -177,23 +190,8 @@ bool System::same_containers(unsigned a, unsigned b) const {
 
 void System::set_container_symmetry(const std::vector<std::vector<unsigned>>& groups) {
   // Checked before anything changes (a bad call leaves the symmetry as it was).
-  std::vector<std::vector<unsigned>> clean;
-  std::vector<bool> taken(num_things(), false);
-  for (auto g : groups) {
-    std::sort(g.begin(), g.end());
-    g.erase(std::unique(g.begin(), g.end()), g.end());
-    if (g.size() < 2) continue;
-    for (unsigned t : g) {
-      if (t >= num_things() || !is_container(t) || taken[t])
-        throw Error("bad container symmetry group (objects and overlapping groups are not allowed)");
-      taken[t] = true;
-    }
-    for (unsigned t : g)
-      if (!same_containers(t, g[0]))
-        throw Error("bad container symmetry group ('" + thing_names_[t] + "' and '" + thing_names_[g[0]] +
-                    "' differ in footprint, capacity or forbidden moves)");
-    clean.push_back(std::move(g));
-  }
+  std::vector<std::vector<unsigned>> clean =
+      checked_groups(groups, true, [this](unsigned a, unsigned b) { return same_containers(a, b); });
   container_group_.assign(num_things(), -1);
   container_groups_ = std::move(clean);
   for (std::size_t g = 0; g < container_groups_.size(); ++g)

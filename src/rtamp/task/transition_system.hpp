@@ -209,6 +209,10 @@ class System {
   const world::Vec3& home_point() const { return home_point_; }
 
  private:
+  // The groups of set_symmetry / set_container_symmetry, checked (transition_system.cpp).
+  template <class Same>
+  std::vector<std::vector<unsigned>> checked_groups(const std::vector<std::vector<unsigned>>& groups, bool containers,
+                                                    Same same) const;
   void build_fit_tables();
 
   world::Scenario scenario_;
