@@ -8,13 +8,13 @@
 #include <fstream>
 #include <iostream>
 #include <memory>
-#include <sstream>
 
 #include "command.hpp"
 #include "rtamp/bt/text_render.hpp"
 #include "rtamp/bt/tree.hpp"
 #include "rtamp/bt/xml_import.hpp"
 #include "rtamp/bt/xml_schema.hpp"
+#include "rtamp/util/text_file.hpp"
 
 namespace {
 
@@ -25,11 +25,7 @@ struct BtCheckArgs {
 };
 
 int run_check(const BtCheckArgs& a) {
-  std::ifstream in(a.file, std::ios::binary);
-  if (!in) throw rtamp::Error("cannot read the behavior-tree file", rtamp::SourceLocation{a.file});
-  std::ostringstream text;
-  text << in.rdbuf();
-  const std::string xml = text.str();
+  const std::string xml = rtamp::read_text_file(a.file, "the behavior-tree file");
   const rtamp::bt::XmlDocument doc = rtamp::bt::parse_xml(xml, a.file);
   rtamp::bt::NodeRegistry stand_ins;
   for (const rtamp::bt::NodeModel& m : rtamp::bt::read_tree_nodes_model(doc, a.file)) {

@@ -3,8 +3,6 @@
 // claim or one line of statistics per formula. Formulas come from the command
 // line or, one per line, from files (-F), like Spot's ltl2tgba.
 #include <chrono>
-#include <filesystem>
-#include <fstream>
 #include <iostream>
 #include <iterator>
 #include <memory>
@@ -19,6 +17,7 @@
 #include "rtamp/ltl/parser.hpp"
 #include "rtamp/ltl/printer.hpp"
 #include "rtamp/util/error.hpp"
+#include "rtamp/util/text_file.hpp"
 
 namespace {
 
@@ -80,13 +79,7 @@ std::vector<Job> read_formula_file(const std::string& path) {
   if (path == "-") {
     text.assign(std::istreambuf_iterator<char>(std::cin), std::istreambuf_iterator<char>());
   } else {
-    std::error_code ec;
-    if (std::filesystem::is_directory(path, ec))
-      throw rtamp::Error("-F: cannot read formula file '" + path + "': it is a directory");
-    std::ifstream in(path, std::ios::binary);
-    if (!in) throw rtamp::Error("-F: cannot open formula file '" + path + "'");
-    text.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
-    if (in.bad()) throw rtamp::Error("-F: cannot read formula file '" + path + "'");
+    text = rtamp::read_text_file(path, "the formula file (-F)");
   }
   std::vector<Job> jobs;
   std::istringstream lines(text);

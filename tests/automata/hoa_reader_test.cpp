@@ -249,6 +249,9 @@ TEST(HoaReader, SyntaxErrorsNameLineAndColumn) {
                "acceptance set 1 out of range");
   expect_error("HOA: v1\nAcceptance: 0 t\nAP: 2 \"a\"\n--BODY--\n--END--\n", 4, 1, "expected string");
   expect_error("HOA: v1\nAcceptance: 0 t\nAP: 2 \"a\" \"a\"\n--BODY--\n--END--\n", 3, 11, "declared twice");
+  // Names leave rtamp as Python str and JSON: a string that is not UTF-8 is refused where it is.
+  expect_error("HOA: v1\nAcceptance: 0 t\nAP: 1 \"a\xff\"\n--BODY--\n--END--\n", 3, 7, "not UTF-8 (byte 2");
+  expect_error("HOA: v1\nname: \"\xc0\xaf\"\nAcceptance: 0 t\n--BODY--\n--END--\n", 2, 7, "not UTF-8 (byte 1");
   expect_error("HOA: v1\nAcceptance: 0 t\nAP: 1 \"a\"\n--BODY--\nState: 0\n0 0 0\n--END--\n", 5, 8,
                "implicit labels need exactly 2^1 = 2");
   expect_error("HOA: v1\nAcceptance: 0 t\nAP: 1 \"a\"\n--BODY--\nState: 0\n[0] 0 0\n--END--\n", 6, 7,

@@ -119,7 +119,11 @@ class RandomTrees {
       case 7: {  // one draw per statement: the same trees from every compiler
         const int success = pick(5) - 2;
         const int failure = pick(5) - 2;
-        return composite(std::make_unique<Parallel>(name, success, failure), depth);
+        auto p = composite(std::make_unique<Parallel>(name, success, failure), depth);
+        // BehaviorTree.CPP (and the importer) refuse a threshold above the number of children.
+        const int n = static_cast<int>(p->child_count());
+        static_cast<Parallel&>(*p).set_thresholds(std::min(success, n), std::min(failure, n));
+        return p;
       }
       case 8:
         return std::make_unique<Inverter>(name, make(depth + 1));
@@ -386,6 +390,43 @@ TEST(XmlImport, ErrorsNameFileLineAndColumn) {
                      "<TreeNodesModel><Condition ID=\"Go\"/></TreeNodesModel></root>",
                      r),
             "t.xml:1:45: 'Go' is declared as a Condition in <TreeNodesModel> but builds an Action node");
+}
+
+// What BehaviorTree.CPP itself refuses is refused at import, where it is written.
+TEST(XmlImport, RefusesWhatBehaviorTreeCppRefuses) {
+  NodeRegistry r;
+  r.add_action("Go", Action::Callbacks{[](Node&) { return Status::Success; }, {}, {}});
+  EXPECT_EQ(error_of(wrap("    <Parallel success_count=\"5\"><Go/><Go/></Parallel>"), r),
+            "t.xml:3:5: port success_count=\"5\" of <Parallel> is more than its 2 children (the threshold could never "
+            "be met)");
+  EXPECT_EQ(error_of(wrap("    <Parallel failure_count=\"2\"><Go/></Parallel>"), r),
+            "t.xml:3:5: port failure_count=\"2\" of <Parallel> is more than its 1 child (the threshold could never be "
+            "met)");
+  EXPECT_NO_THROW(from_btcpp_xml(wrap("    <Parallel success_count=\"2\" failure_count=\"-1\"><Go/><Go/></Parallel>"), r));
+  const std::string tree = "<root BTCPP_format=\"4\">\n<BehaviorTree ID=\"T\"><Go/></BehaviorTree>\n<TreeNodesModel>\n";
+  EXPECT_EQ(error_of(tree + "<Action ID=\"Go\"/>\n<Condition ID=\"Go\"/>\n</TreeNodesModel></root>", r),
+            "t.xml:5:1: 'Go' is declared twice in <TreeNodesModel> (as <Action> on line 4 and as <Condition> here)");
+  for (const auto& [port, why] : std::vector<std::pair<std::string, std::string>>{
+           {"bad name", "it holds the character ' '"},
+           {"a.b", "it holds the character '.'"},
+           {"1st", "it starts with a digit"},
+           {"_skipIf", "it is a reserved attribute"},
+           {"ID", "it is a reserved attribute"}}) {
+    EXPECT_EQ(error_of(tree + "<Action ID=\"Go\"><input_port name=\"" + port + "\"/></Action>\n</TreeNodesModel></root>", r),
+              "t.xml:4:17: port name '" + port + "' in the model of 'Go' is not allowed: " + why);
+  }
+  EXPECT_EQ(error_of(tree + "<Action ID=\"Go\"><input_port name=\"a\"/><output_port name=\"a\"/></Action>\n"
+                            "</TreeNodesModel></root>",
+                     r),
+            "t.xml:4:39: port 'a' is declared twice in the model of 'Go'");
+  EXPECT_NO_THROW(from_btcpp_xml(tree + "<Action ID=\"Go\"><input_port name=\"Tür_öffnen-2\"/></Action>\n"
+                                        "</TreeNodesModel></root>",
+                                 r));
+  // The parser reads UTF-8: a file declaring another encoding is refused, not misread.
+  EXPECT_EQ(error_of("<?xml version=\"1.0\" encoding=\"UTF-16\"?>\n" + wrap("    <Go/>"), r),
+            "t.xml:1:1: the XML declaration names encoding \"UTF-16\": rtamp reads behavior-tree files as UTF-8 "
+            "(convert the file, e.g. with iconv, and declare UTF-8)");
+  EXPECT_NO_THROW(from_btcpp_xml("<?xml version=\"1.0\" encoding=\"utf-8\"?>\n" + wrap("    <Go/>"), r));
 }
 
 }  // namespace

@@ -245,6 +245,7 @@ void yaml_cases(std::vector<Case>& t) {
   op("{time: 5, action: relocate, object: o1, to: r2, position: [0.4, 0.32, 0]}", "[0.4", "not inside region 'r2'");
   op("{time: 5, action: relocate, object: o1, position: [3, 0.32, 0]}", "[3", "position [3, 0.32, 0] is off the table");
   op("{time: 5, action: add, object: o9, class: block, position: [0.4, 0.32, -3]}", "[0.4", "is below the table top");
+  op("{time: 5, action: add, object: o9, class: block, position: [0.4, 0.32, 3]}", "[0.4", "is 3 m above the table top");
   op("{time: 5, action: relocate, object: o1, to: r2, speed: 3}", "speed", "unknown key 'speed'");
 }
 
@@ -598,6 +599,11 @@ void option_cases(std::vector<Case>& t) {
                "is not a directory", {"ep2.jsonl"}});
   t.push_back({"options", with(run, {"--log", "ep3.jsonl", "--trees", a_file + "/below"}),
                "--trees: cannot write into", "is not a directory", {"ep3.jsonl"}});
+  // A directory given where a file is read: said so, not a parser's "empty input".
+  const std::string d = (dir / "a_dir").string();
+  t.push_back({"options", {"plan", d}, d + ": cannot read scenario:", "it is a directory"});
+  t.push_back({"options", {"bt", "check", d}, d + ": cannot read the behavior-tree file:", "it is a directory"});
+  t.push_back({"options", {"batch", "--merge", d}, d + ": cannot read the CSV file:", "it is a directory"});
   // Several unexpected arguments: the first unknown option of the command line.
   t.push_back({"options", {"plan", "3-block", "--seed", "1e3"}, "unknown option '--seed'", ""});
   t.push_back({"options", {"plan", "3-block", "--bogus", "x", "--worse"}, "unknown option '--bogus'", ""});

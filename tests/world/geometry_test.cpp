@@ -13,13 +13,16 @@
 namespace rtamp::world {
 namespace {
 
+// A raised region ("high", surface at z = 0.2) exercises the rules' heights;
+// validate() refuses one in a scenario file (a region is a patch of the table
+// top), so it is raised after parsing.
 Scenario scene() {
-  return parse_scenario(R"yaml(
+  Scenario s = parse_scenario(R"yaml(
 name: g
 regions:
   - {name: r1, center: [0.4, 0.3, 0], size: [0.3, 0.2], capacity: 9}
   - {name: r2, center: [0.4, -0.3, 0], size: [0.3, 0.2], capacity: 9}
-  - {name: high, center: [0.8, 0, 0.2], size: [0.1, 0.1], capacity: 9}
+  - {name: high, center: [0.8, 0, 0], size: [0.1, 0.1], capacity: 9}
 containers:
   - {name: t1, position: [0.5, -0.3, 0], size: [0.2, 0.1, 0.03], capacity: 4}
 objects:
@@ -28,7 +31,9 @@ objects:
   - {name: o3, position: [0.3, -0.3, 0]}
 task: "true"
 )yaml",
-                        "g.yaml");
+                              "g.yaml");
+  s.regions[2].center[2] = 0.2;  // "high"
+  return s;
 }
 
 TEST(Footprint, Predicates) {

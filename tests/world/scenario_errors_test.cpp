@@ -198,12 +198,21 @@ TEST(ScenarioErrors, Geometry) {
          "{", "region 'r2' overlaps region 'r1'"});
   check({"coordinates out of range", with_line(6, "  - {name: o1, position: [4000, 0.3, 0]}"), 6, "[4000",
          "out of range"});
+  // The physically impossible: things float, regions sink, the robot spins.
+  check({"object above its region", with_line(6, "  - {name: o1, position: [0.4, 0.3, 5]}"), 6, "[0.4",
+         "object 'o1' at [0.4, 0.3, 5] floats 5 m above the surface of 'r1'"});
+  check({"region below the table", with_line(3, "  - {name: r1, center: [0.4, 0.3, -3], size: [0.3, 0.3], capacity: 4}"),
+         3, "[0.4", "region 'r1': centre z = -3 is not on the table top"});
+  check({"yaw out of range", valid() + "robot: {model: ur5, yaw: 1e300}\n", 10, "1e300",
+         "robot: yaw 1e+300 is out of range (radians within ±2π)"});
 }
 
 TEST(ScenarioErrors, Containers) {
   const std::string tray = "containers:\n  - {name: t1, position: [0.4, -0.3, 0], capacity: 1}\n";  // lines 10-11
   check({"container outside", valid() + "containers:\n  - {name: t1, position: [2, 2, 0]}\n", 11, "[2",
          "container 't1' at [2, 2, 0] is not in any region"});
+  check({"container above its region", valid() + "containers:\n  - {name: t1, position: [0.4, -0.3, 2]}\n", 11, "[0.4",
+         "container 't1' at [0.4, -0.3, 2] floats 2 m above the surface of 'r2'"});
   check({"containers overlap", valid() + tray + "  - {name: t2, position: [0.45, -0.3, 0]}\n", 12, "{",
          "container 't2' overlaps container 't1'"});
   check({"container bigger than its region",

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cctype>
-#include <fstream>
 #include <iostream>
 #include <iterator>
 #include <map>
@@ -11,6 +10,8 @@
 
 #include "rtamp/automata/boolean_guard.hpp"
 #include "rtamp/util/error.hpp"
+#include "rtamp/util/text_file.hpp"
+#include "rtamp/util/utf8.hpp"
 
 namespace rtamp::automata {
 
@@ -162,6 +163,8 @@ class Lexer {
         out += d;
         bump();
       }
+      if (const std::size_t bad = utf8::first_invalid(out); bad != std::string::npos)
+        fail("a string that is not UTF-8 (byte " + std::to_string(bad + 1) + " of the string)", cur_.line, cur_.col);
       cur_.kind = T::String;
       cur_.text = std::move(out);
       return;
@@ -668,10 +671,7 @@ std::vector<Automaton> read_hoa_file(const std::string& path) {
     text.assign(std::istreambuf_iterator<char>(std::cin), std::istreambuf_iterator<char>());
     return read_hoa(text, "<stdin>");
   }
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw Error("cannot open '" + path + "'", SourceLocation{path, 0, 0});
-  text.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
-  return read_hoa(text, path);
+  return read_hoa(read_text_file(path, "the HOA file"), path);
 }
 
 }  // namespace rtamp::automata

@@ -9,6 +9,7 @@
 
 #include "rtamp/batch/trials.hpp"
 #include "rtamp/util/error.hpp"
+#include "rtamp/util/text_file.hpp"
 
 namespace rtamp::batch {
 
@@ -284,10 +285,7 @@ std::vector<EpisodeRecord> read_csv(const std::string& text, const std::string& 
 }
 
 std::vector<EpisodeRecord> read_csv_file(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw Error("cannot read '" + path + "'");
-  const std::string text{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-  return read_csv(text, path);
+  return read_csv(read_text_file(path, "the CSV file"), path);
 }
 
 }  // namespace rtamp::batch

@@ -1,12 +1,12 @@
 #include "rtamp/batch/merge.hpp"
 
-#include <fstream>
 #include <iterator>
 #include <map>
 #include <tuple>
 
 #include "rtamp/batch/csv.hpp"
 #include "rtamp/util/error.hpp"
+#include "rtamp/util/text_file.hpp"
 
 namespace rtamp::batch {
 
@@ -53,9 +53,7 @@ std::vector<EpisodeRecord> merge_slices(const std::vector<CsvSource>& sources) {
 std::vector<EpisodeRecord> merge_files(const std::vector<std::string>& paths) {
   std::vector<CsvSource> sources;
   for (const auto& p : paths) {
-    std::ifstream in(p, std::ios::binary);
-    if (!in) throw Error("cannot read '" + p + "'");
-    sources.push_back({p, std::string{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()}});
+    sources.push_back({p, read_text_file(p, "the CSV file")});
   }
   return merge_slices(sources);
 }

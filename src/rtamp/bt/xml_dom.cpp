@@ -2,6 +2,7 @@
 
 #include <expat.h>
 
+#include <cctype>
 #include <climits>
 #include <exception>
 #include <memory>
@@ -87,6 +88,19 @@ void XMLCALL on_comment(void* data, const XML_Char* s) {
   }
 }
 
+// The XML declaration: the parser reads UTF-8 whatever a file declares, so a
+// declaration of another encoding (UTF-16 over UTF-8 bytes, Latin-1) is refused
+// rather than silently misread. US-ASCII is a subset of UTF-8.
+void XMLCALL on_declaration(void* data, const XML_Char* /*version*/, const XML_Char* encoding, int /*standalone*/) {
+  auto& b = *static_cast<Builder*>(data);
+  if (encoding == nullptr) return;
+  std::string e(encoding);
+  for (char& c : e) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+  if (e != "UTF-8" && e != "UTF8" && e != "US-ASCII" && e != "ASCII")
+    b.fail(std::string("the XML declaration names encoding \"") + encoding +
+           "\": rtamp reads behavior-tree files as UTF-8 (convert the file, e.g. with iconv, and declare UTF-8)");
+}
+
 }  // namespace
 
 XmlDocument parse_xml(std::string_view text, const std::string& file) {
@@ -101,6 +115,7 @@ XmlDocument parse_xml(std::string_view text, const std::string& file) {
   XML_SetElementHandler(b.parser, on_start, on_end);
   XML_SetCharacterDataHandler(b.parser, on_text);
   XML_SetCommentHandler(b.parser, on_comment);
+  XML_SetXmlDeclHandler(b.parser, on_declaration);
   const XML_Status st = XML_Parse(b.parser, text.data(), static_cast<int>(text.size()), XML_TRUE);
   if (b.failure) std::rethrow_exception(b.failure);
   if (st != XML_STATUS_OK) {

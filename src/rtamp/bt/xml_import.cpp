@@ -4,8 +4,6 @@
 #include <cerrno>
 #include <climits>
 #include <cstdlib>
-#include <fstream>
-#include <sstream>
 
 #include "rtamp/bt/composite.hpp"
 #include "rtamp/bt/controls/chooser.hpp"
@@ -21,6 +19,8 @@
 #include "rtamp/bt/decorators/timeout.hpp"
 #include "rtamp/bt/xml_dom.hpp"
 #include "rtamp/bt/xml_export.hpp"
+#include "rtamp/bt/xml_schema.hpp"
+#include "rtamp/util/text_file.hpp"
 
 namespace rtamp::bt {
 
@@ -103,13 +103,14 @@ class Importer {
         if (!trees_.emplace(*id, &e).second) fail(e, "two behavior trees with ID '" + *id + "'");
         tree_order_.push_back(*id);
       } else if (e.tag == "TreeNodesModel") {
-        read_model(e);
+        continue;  // read_models
       } else if (e.tag == "include") {
         fail(e, "<include> is not supported: put every tree in one file");
       } else {
         fail(e, "unexpected <" + e.tag + "> under <root> (expected BehaviorTree or TreeNodesModel)");
       }
     }
+    read_models(doc);
     std::string id = opt.tree_id;
     if (id.empty()) {
       if (const std::string* main = root.attribute("main_tree_to_execute"); main != nullptr) id = *main;
@@ -139,19 +140,14 @@ class Importer {
     throw rtamp::Error(what, location_of(e, file_));
   }
 
-  void read_model(const XmlElement& section) {
-    for (const XmlElement& e : section.children) {
-      auto kind = kind_from_tag(e.tag);
-      if (e.tag == "SubTree") continue;
-      if (!kind) fail(e, "<" + e.tag + "> in <TreeNodesModel>: expected Action, Condition, Control, Decorator or SubTree");
-      const std::string* id = e.attribute("ID");
-      if (id == nullptr || id->empty()) fail(e, "<" + e.tag + "> in <TreeNodesModel> has no ID");
+  // The file's <TreeNodesModel>, read and checked once (xml_schema.hpp).
+  void read_models(const XmlDocument& doc) {
+    for (const NodeModel& m : read_tree_nodes_model(doc, file_)) {
+      const auto kind = kind_from_tag(m.kind);
+      if (!kind) continue;  // SubTree models describe trees, not nodes
       ModelInfo info{*kind, {}};
-      for (const XmlElement& p : e.children) {
-        const std::string* name = p.attribute("name");
-        if (name != nullptr) info.descriptions[*name] = p.text;
-      }
-      models_[*id] = std::move(info);
+      for (const ModelPort& p : m.ports) info.descriptions[p.name] = p.description;
+      models_[m.id] = std::move(info);
     }
   }
 
@@ -245,8 +241,18 @@ class Importer {
     }
     if (type_id == "Parallel") {
       only_ports(e, ports, {"success_count", "failure_count"}, type_id);
-      return std::make_unique<Parallel>(name, static_cast<int>(integer(e, ports, "success_count", -1, INT_MIN)),
-                                        static_cast<int>(integer(e, ports, "failure_count", 1, INT_MIN)));
+      const long success = integer(e, ports, "success_count", -1, INT_MIN);
+      const long failure = integer(e, ports, "failure_count", 1, INT_MIN);
+      // BehaviorTree.CPP refuses a threshold written above the number of children (it could never be met).
+      const long n = static_cast<long>(e.children.size());
+      for (const auto& [port, value] : {std::pair{"success_count", success}, std::pair{"failure_count", failure}}) {
+        const bool written = std::any_of(ports.begin(), ports.end(), [&](const Port& p) { return p.name == port; });
+        if (written && value > n) {
+          fail(e, std::string("port ") + port + "=\"" + std::to_string(value) + "\" of <Parallel> is more than its " +
+                      std::to_string(n) + (n == 1 ? " child" : " children") + " (the threshold could never be met)");
+        }
+      }
+      return std::make_unique<Parallel>(name, static_cast<int>(success), static_cast<int>(failure));
     }
     if (type_id == "RetryUntilSuccessful") {
       only_ports(e, ports, {"num_attempts"}, type_id);
@@ -372,12 +378,9 @@ std::unique_ptr<Node> from_btcpp_xml(std::string_view xml, const NodeRegistry& r
 }
 
 std::unique_ptr<Node> load_btcpp_xml(const std::string& path, const NodeRegistry& registry, XmlImportOptions options) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw rtamp::Error("cannot read the behavior-tree file", SourceLocation{path});
-  std::ostringstream text;
-  text << in.rdbuf();
+  const std::string text = read_text_file(path, "the behavior-tree file");
   if (options.file.empty()) options.file = path;
-  return from_btcpp_xml(text.str(), registry, options);
+  return from_btcpp_xml(text, registry, options);
 }
 
 }  // namespace rtamp::bt

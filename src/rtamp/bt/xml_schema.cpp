@@ -14,9 +14,9 @@ constexpr const char* kBool = "booleanOrBlackboardType";
 constexpr const char* kString = "stringOrBlackboardType";
 constexpr const char* kBlackboard = "blackboardType";
 
-ModelPort req(std::string name, std::string type = {}) { return ModelPort{std::move(name), std::move(type), {}}; }
+ModelPort req(std::string name, std::string type = {}) { return ModelPort{std::move(name), std::move(type), {}, {}}; }
 ModelPort opt(std::string name, std::string type, std::string def) {
-  return ModelPort{std::move(name), std::move(type), std::move(def)};
+  return ModelPort{std::move(name), std::move(type), std::move(def), {}};
 }
 
 std::vector<NodeModel> make_builtins() {
@@ -183,8 +183,23 @@ const std::vector<NodeModel>& btcpp_builtin_models() {
   return models;
 }
 
+std::string port_name_problem(std::string_view name) {
+  if (name.empty()) return "it is empty";
+  if (name.front() >= '0' && name.front() <= '9') return "it starts with a digit";
+  if (name == "ID" || name == "name" || name.front() == '_') return "it is a reserved attribute";
+  for (const char ch : name) {
+    const auto c = static_cast<unsigned char>(ch);
+    if (c >= 0x80) continue;  // UTF-8 multibyte sequences are allowed
+    if (c < 32 || c == 127) return "it holds a control character";
+    if (std::string_view(" <>&\"'/\\:*?|.").find(ch) != std::string_view::npos)
+      return std::string("it holds the character '") + ch + "'";
+  }
+  return {};
+}
+
 std::vector<NodeModel> read_tree_nodes_model(const XmlDocument& doc, const std::string& file) {
   std::vector<NodeModel> out;
+  std::map<std::string, const XmlElement*, std::less<>> declared;
   for (const XmlElement& section : doc.root.children) {
     if (section.tag != "TreeNodesModel") continue;
     for (const XmlElement& e : section.children) {
@@ -198,6 +213,11 @@ std::vector<NodeModel> read_tree_nodes_model(const XmlDocument& doc, const std::
                                "\"> in <TreeNodesModel>: expected Action, Condition, Control, Decorator or SubTree",
                            location_of(e, file));
       }
+      if (auto [it, fresh] = declared.emplace(*id, &e); !fresh) {
+        throw rtamp::Error("'" + *id + "' is declared twice in <TreeNodesModel> (as <" + it->second->tag + "> on line " +
+                               std::to_string(it->second->line) + " and as <" + e.tag + "> here)",
+                           location_of(e, file));
+      }
       NodeModel m{*id, e.tag, {}};
       for (const XmlElement& p : e.children) {
         if (p.tag == "description" || p.tag == "metadata") continue;
@@ -209,7 +229,16 @@ std::vector<NodeModel> read_tree_nodes_model(const XmlDocument& doc, const std::
         if (name == nullptr || name->empty()) {
           throw rtamp::Error("<" + p.tag + "> in the model of '" + *id + "' has no name", location_of(p, file));
         }
-        ModelPort port{*name, xsd_type(p.tag, p.attribute("type")), {}};
+        if (const std::string why = port_name_problem(*name); !why.empty()) {
+          throw rtamp::Error("port name '" + *name + "' in the model of '" + *id + "' is not allowed: " + why,
+                             location_of(p, file));
+        }
+        for (const ModelPort& q : m.ports) {
+          if (q.name == *name) {
+            throw rtamp::Error("port '" + *name + "' is declared twice in the model of '" + *id + "'", location_of(p, file));
+          }
+        }
+        ModelPort port{*name, xsd_type(p.tag, p.attribute("type")), {}, p.text};
         if (const std::string* d = p.attribute("default"); d != nullptr && p.tag != "output_port") port.default_value = *d;
         m.ports.push_back(std::move(port));
       }

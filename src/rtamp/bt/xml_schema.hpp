@@ -25,6 +25,7 @@ struct ModelPort {
   std::string name;
   std::string xsd_type;                      // writeTreeXSD's attribute type; empty: untyped
   std::optional<std::string> default_value;  // none: the attribute is required
+  std::string description;                   // the port element's text
 };
 
 struct NodeModel {
@@ -37,9 +38,17 @@ struct NodeModel {
 const std::vector<NodeModel>& btcpp_builtin_models();
 
 // The <TreeNodesModel> entries of a parsed file (ports: input_port, output_port,
-// inout_port with their `type` and `default`). Throws rtamp::Error (file:line:col)
-// on a malformed entry.
+// inout_port with their `type`, `default` and text). Throws rtamp::Error
+// (file:line:col) on a malformed entry: no ID, an unknown kind, an ID declared
+// twice, a port without a name, a name declared twice in one model, or a port
+// name BehaviorTree.CPP refuses (port_name_problem).
 std::vector<NodeModel> read_tree_nodes_model(const XmlDocument& doc, const std::string& file = {});
+
+// Why BehaviorTree.CPP 4 refuses `name` as a port name (IsAllowedPortName: empty,
+// a digit first, a reserved attribute — ID, name, anything starting with '_' —
+// or a character of findForbiddenChar: whitespace, control characters,
+// < > & " ' / \ : * ? | .), or "" if it is allowed.
+std::string port_name_problem(std::string_view name);
 
 // The schema for the built-ins plus `custom` (a custom model replaces a built-in of
 // the same ID, as a factory registration would be refused; here it simply wins).

@@ -23,6 +23,7 @@
 #include "rtamp/world/propositions.hpp"
 #include "rtamp/world/suggest.hpp"
 #include "rtamp/world/validate.hpp"
+#include "rtamp/util/text_file.hpp"
 
 namespace rtamp::world {
 
@@ -607,21 +608,13 @@ Scenario parse_scenario(std::string_view yaml_text, const std::string& source_na
 Scenario load_scenario(const std::string& path_or_builtin) {
   if (auto text = builtin_scenario_text(path_or_builtin))
     return parse_scenario(*text, path_or_builtin + " (built-in)");
-  std::ifstream in(path_or_builtin, std::ios::binary);
-  if (!in) {
+  if (!path_exists(path_or_builtin)) {
     std::string names;
     for (const std::string& n : builtin_scenario_names()) names += (names.empty() ? "" : ", ") + n;
     throw Error("cannot read scenario " + quoted(path_or_builtin) +
                 ": no such file, and no built-in scenario of that name (built-ins: " + names + ")");
   }
-  std::string text;
-  char buf[65536];
-  while (in.read(buf, sizeof buf) || in.gcount() > 0) {
-    text.append(buf, static_cast<std::size_t>(in.gcount()));
-    if (text.size() > kMaxScenarioBytes) break;
-  }
-  if (in.bad()) throw Error("error reading scenario file " + quoted(path_or_builtin));
-  return parse_scenario(text, path_or_builtin);
+  return parse_scenario(read_text_file(path_or_builtin, "scenario", kMaxScenarioBytes), path_or_builtin);
 }
 
 std::string to_yaml(const Scenario& s) {

@@ -29,6 +29,9 @@ std::string off_table(const TableTop& top, const Vec3& p) {
     return at + " is off the table (x in [" + format_number(top.xmin) + ", " + format_number(top.xmax) +
            "], y in [" + format_number(top.ymin) + ", " + format_number(top.ymax) + "])";
   if (!(p[2] >= -kUnderTableTolerance && std::isfinite(p[2]))) return at + " is below the table top (z = 0)";
+  if (p[2] > kMaxPutHeight)
+    return at + " is " + format_number(p[2]) + " m above the table top (a thing is put down at most " +
+           format_number(kMaxPutHeight) + " m above it)";
   return {};
 }
 

@@ -17,10 +17,13 @@ struct TableTop {
 
 TableTop table_top(const Scenario& s);
 
-// "" if (x, y) lies on the table top and z is not below it (1 mm of
-// tolerance), else "position [x, y, z] is off the table (x in [..], y in
-// [..])" or "... is below the table top (z = 0)".
-inline constexpr double kUnderTableTolerance = 0.001;
+// "" if (x, y) lies on the table top and z is neither below it (1 mm of
+// tolerance) nor more than kMaxPutHeight above it (a person puts a thing down
+// on the table or on a tray's floor; they do not drop it from a height), else
+// "position [x, y, z] is off the table (x in [..], y in [..])", "... is below
+// the table top (z = 0)" or "... is z m above the table top (...)".
+inline constexpr double kUnderTableTolerance = 0.001;  // m
+inline constexpr double kMaxPutHeight = 0.05;          // m: above a 3 cm tray's rim
 std::string off_table(const TableTop& top, const Vec3& p);
 
 }  // namespace rtamp::world

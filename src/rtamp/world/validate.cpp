@@ -10,6 +10,7 @@
 #include "rtamp/world/fit.hpp"
 #include "rtamp/world/geometry.hpp"
 #include "rtamp/world/intervention_rules.hpp"
+#include "rtamp/world/table.hpp"
 #include "rtamp/world/names.hpp"
 #include "rtamp/world/propositions.hpp"
 #include "rtamp/world/suggest.hpp"
@@ -97,7 +98,8 @@ class Validator {
     if (s_.robot.model != "ur5")
       fail(at({}, "robot.model"), "unknown robot model " + quote(s_.robot.model) + " (rtamp knows: ur5)");
     check_vec(s_.robot.base, "robot", "robot.base", {});
-    if (!std::isfinite(s_.robot.yaw)) fail(at({}, "robot.yaw"), "robot: yaw must be a finite number of radians");
+    if (!(std::abs(s_.robot.yaw) <= kMaxYaw))
+      fail(at({}, "robot.yaw"), "robot: yaw " + fmt(s_.robot.yaw) + " is out of range (radians within ±2π)");
   }
 
   void check_regions() const {
@@ -106,6 +108,9 @@ class Validator {
       check_name(r.name, "region", r.where);
       const std::string owner = "region " + quote(r.name);
       check_vec(r.center, owner, "center", r.where);
+      if (!(std::abs(r.center[2]) <= kUnderTableTolerance))
+        fail(at(r.where, "center"), owner + ": centre z = " + fmt(r.center[2]) +
+                                        " is not on the table top (z = 0; a region is a patch of the table)");
       check_size(r.size, 2, owner, r.where);
       check_capacity(r.capacity, owner, r.where);
     }
@@ -175,6 +180,7 @@ class Validator {
         fail(at(c.where, "position"), "container " + quote(c.name) + " at " + fmt(c.position) +
                                           " is not in any region (a container must stand in a region)");
       check_fits(c.size, "container " + quote(c.name), loc, c.where);
+      check_rests(c.position, "container " + quote(c.name), loc, g, c.where);
       ++load[loc];
     }
     for (const Object& o : s_.objects) {
@@ -183,6 +189,7 @@ class Validator {
         fail(at(o.where, "position"), "object " + quote(o.name) + " at " + fmt(o.position) +
                                           " is outside every region and container");
       check_fits(o.size, "object " + quote(o.name), loc, o.where);
+      check_rests(o.position, "object " + quote(o.name), loc, g, o.where);
       ++load[loc];
     }
     for (const Region& r : s_.regions)
@@ -193,6 +200,17 @@ class Validator {
       if (load[c.name] > c.capacity)
         fail(at(c.where, "capacity"), "container " + quote(c.name) + " initially holds " + std::to_string(load[c.name]) +
                                           " objects but its capacity is " + std::to_string(c.capacity));
+  }
+
+  // The thing starts resting on its location's surface (geometry.hpp), not
+  // floating above it; locate() already refuses a point below it.
+  void check_rests(const Vec3& p, const std::string& owner, const std::string& loc, const Geometry& g,
+                   const SourceLocation& where) const {
+    const double surface = g.surface_z(loc).value_or(0);
+    if (p[2] - surface > kBelowTolerance)
+      fail(at(where, "position"), owner + " at " + fmt(p) + " floats " + fmt(p[2] - surface) + " m above the surface of " +
+                                      quote(loc) + " (z = " + fmt(surface) + "; things start resting on their location, within " +
+                                      fmt(kBelowTolerance) + " m)");
   }
 
   // The thing's footprint fits the location it starts in (fit.hpp: no

@@ -8,7 +8,10 @@
 // keyword of the proposition grammar, not "none"), unique across regions,
 // containers, objects and things added by interventions; classes are
 // identifiers other than "object", and no class names both objects and
-// containers; coordinates are finite and within ±1000 m; sizes are positive
+// containers; coordinates are finite and within ±1000 m; the robot's yaw
+// within ±2π; regions lie on the table top (centre z = 0, table.hpp) and
+// things start resting on their location's surface (at most 2 cm above it,
+// geometry.hpp); a scripted position is on the table (table.hpp); sizes are positive
 // (regions: x and y) and at most 100 m; capacities are >= 1; regions do not
 // overlap; containers do not overlap each other and each stands in a region;
 // every object lies in a container or a region (geometry.hpp); every thing's
@@ -36,6 +39,7 @@ void validate(const Scenario& s);
 
 inline constexpr double kMaxCoordinate = 1000.0;  // m
 inline constexpr double kMaxSize = 100.0;         // m
+inline constexpr double kMaxYaw = 6.283185307179586;  // rad: 2π
 
 namespace detail {
 // Maps (an element's `where`, a field name such as "size") to the field's own
