@@ -90,7 +90,7 @@ TEST(EpisodeMcap, MessagesWrittenDirectlyAreNlohmannsText) {
     EpisodeMcap m(path, McapCompression::None, nullptr);
     m.add(R"({"ev":"episode","scenario":"not-built-in","t":0})");
     m.add(dumped(tree));
-    m.add(R"({"ev":"tick","running":"move(o1, r2)","status":"running","t":2})");
+    m.add(R"js({"ev":"tick","running":"move(o1, r2)","status":"running","t":2})js");
     m.add(dumped(run));
     m.add(dumped(action));
     m.close();

@@ -190,10 +190,10 @@ async function check(file, logFile, compression, liveArm = false) {
   // tick) or from `frame` records with joint angles; /tf a chain world -> ur5/base ->
   // ur5/link1 .. link6 at the same times. Each link's offset in its parent has a
   // constant length (a rigid arm), which link frames given in the world would not.
-  const records = lines.map((l) => JSON.parse(l));
+  const logRecords = lines.map((l) => JSON.parse(l));
   const joints = byTopic.get('/joint_states') ?? [], tfs = byTopic.get('/tf') ?? [];
-  assert.equal(joints.length, liveArm ? records.filter((r) => r.ev === 'tick').length + 1
-    : records.filter((r) => r.ev === 'frame' && Array.isArray(r.q)).length, `${file}: /joint_states`);
+  assert.equal(joints.length, liveArm ? logRecords.filter((r) => r.ev === 'tick').length + 1
+    : logRecords.filter((r) => r.ev === 'frame' && Array.isArray(r.q)).length, `${file}: /joint_states`);
   assert.deepEqual(tfs.map((m) => m.logTime), joints.map((m) => m.logTime));
   const lengths = [];
   for (const [k, m] of tfs.entries()) {
@@ -281,7 +281,7 @@ for (const r of runs) {
   rtamp(['log', 'to-mcap', log, converted]);
   await check(converted, log, 'zstd');
   const dir = path.join(tmp, 'mujoco-batch');
-  rtamp(['batch', '3-block', '--trials', '1', '--log-dir', dir, '--mcap', '-q', '-o', path.join(tmp, 'mujoco-batch.csv')]);
+  rtamp(['batch', '3-block', '--trials', '1', '--change', 'none', '--algo', 'astar', '--log-dir', dir, '--mcap', '-q', '-o', path.join(tmp, 'mujoco-batch.csv')]);
   const logs = fs.readdirSync(dir).filter((f) => f.endsWith('.jsonl'));
   assert.equal(logs.length, 1);
   for (const l of logs) await check(path.join(dir, l.replace(/\.jsonl$/, '.mcap')), path.join(dir, l), 'zstd', true);
