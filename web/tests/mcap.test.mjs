@@ -7,7 +7,10 @@
 // its summary (McapIndexedReader: the summary CRC, statistics, chunk indexes,
 // message indexes), and the data-section CRC is recomputed here. Oracles: the
 // /rtamp/log channel holds exactly the JSON Lines records, in order; message counts
-// equal the statistics; the Foxglove channels carry the fields their schemas name.
+// equal the statistics; every message satisfies its channel's JSON Schema, and a
+// foxglove.* schema is a part of the npm @foxglove/schemas one of that name, whose
+// whole schema every message satisfies too; the MuJoCo arm's joint states and
+// frame transforms (`rtamp run` and `rtamp batch`) one per tick, a rigid chain.
 // Bad input: a malformed log and an unwritable --mcap give one line and exit 2.
 import assert from 'node:assert/strict';
 import { execFileSync, spawnSync } from 'node:child_process';
@@ -15,7 +18,39 @@ import fs from 'node:fs';
 import os from 'node:os';
 import path from 'node:path';
 import zlib from 'node:zlib';
+import { createRequire } from 'node:module';
 import { McapIndexedReader, McapStreamReader } from '@mcap/core';
+
+// Foxglove's own JSON Schemas (npm @foxglove/schemas), by title ("foxglove.SceneUpdate").
+const foxglove = new Map(Object.values(createRequire(import.meta.url)('@foxglove/schemas/jsonschema')).map((s) => [s.title, s]));
+
+// The JSON Schema keywords those schemas use: type, properties, required, items,
+// oneOf of consts, minimum, maximum. Returns the first violation, or null.
+function violation(value, schema, where = '$') {
+  const types = { object: (v) => v !== null && typeof v === 'object' && !Array.isArray(v), array: Array.isArray,
+    string: (v) => typeof v === 'string', number: (v) => typeof v === 'number', boolean: (v) => typeof v === 'boolean',
+    integer: Number.isInteger };
+  if (schema.type && !types[schema.type](value)) return `${where}: not ${schema.type}`;
+  if (schema.oneOf && schema.oneOf.filter((o) => o.const === value).length !== 1) return `${where}: ${value} not one of`;
+  if (schema.minimum !== undefined && value < schema.minimum) return `${where}: below ${schema.minimum}`;
+  if (schema.maximum !== undefined && value > schema.maximum) return `${where}: above ${schema.maximum}`;
+  for (const k of schema.required ?? []) if (!(k in value)) return `${where}: no ${k}`;
+  for (const [k, sub] of Object.entries(schema.properties ?? {}))
+    if (value[k] !== undefined) { const v = violation(value[k], sub, `${where}.${k}`); if (v) return v; }
+  if (schema.items) for (const [i, x] of value.entries()) { const v = violation(x, schema.items, `${where}[${i}]`); if (v) return v; }
+  return null;
+}
+
+// Every property `ours` declares is in `theirs`, with the same type where theirs has one.
+function subschema(ours, theirs, where) {
+  if (theirs.type) assert.equal(ours.type, theirs.type, `${where}: type`);
+  if (theirs.oneOf) assert.equal(ours.type, 'integer', `${where}: an enumeration`);
+  for (const [k, sub] of Object.entries(ours.properties ?? {})) {
+    assert.ok(theirs.properties && k in theirs.properties, `${where}.${k} is not in Foxglove's schema`);
+    subschema(sub, theirs.properties[k], `${where}.${k}`);
+  }
+  if (ours.items) subschema(ours.items, theirs.items, `${where}[]`);
+}
 
 const bin = process.env.RTAMP_BIN ?? path.resolve('../build/bin/rtamp');
 const tmpBase = process.argv[2] ?? process.env.RTAMP_TEST_TMP ?? os.tmpdir();
@@ -44,7 +79,7 @@ function streamRecords(bytes) {
   return records;
 }
 
-async function check(file, logFile, compression) {
+async function check(file, logFile, compression, liveArm = false) {
   const bytes = new Uint8Array(fs.readFileSync(file));
   const lines = fs.readFileSync(logFile, 'utf8').split('\n').filter((l) => l.length > 0);
 
@@ -69,9 +104,24 @@ async function check(file, logFile, compression) {
       byTopic.get(ch.topic).push({ text, logTime: r.logTime });
     } else if (r.type === 'DataEnd') dataEnd = r;
   }
+  // Every schema is JSON Schema; a foxglove.* one is Foxglove's (a part of it); every
+  // message satisfies its channel's schema, and Foxglove's for a foxglove.* one.
   for (const s of schemas.values()) {
     assert.equal(s.encoding, 'jsonschema');
-    JSON.parse(new TextDecoder().decode(s.data));
+    s.json = JSON.parse(new TextDecoder().decode(s.data));
+    assert.equal(s.json.title, s.name);
+    if (s.name.startsWith('foxglove.')) {
+      assert.ok(foxglove.has(s.name), `${s.name} is a schema of @foxglove/schemas`);
+      subschema(s.json, foxglove.get(s.name), s.name);
+    }
+  }
+  for (const ch of channels.values()) {
+    const schema = schemas.get(ch.schemaId);
+    for (const m of byTopic.get(ch.topic) ?? []) {
+      const j = JSON.parse(m.text);
+      assert.equal(violation(j, schema.json), null, `${file}: ${ch.topic}`);
+      if (foxglove.has(schema.name)) assert.equal(violation(j, foxglove.get(schema.name)), null, `${file}: ${ch.topic} (Foxglove's ${schema.name})`);
+    }
   }
 
   // The log channel is the log.
@@ -135,7 +185,32 @@ async function check(file, logFile, compression) {
   assert.equal((byTopic.get('/interventions') ?? []).length, interventions);
   assert.equal((byTopic.get('/replans') ?? []).length, lines.filter((l) => JSON.parse(l).ev === 'replan').length);
   assert.equal((byTopic.get('/automaton') ?? []).length, lines.filter((l) => JSON.parse(l).ev === 'run').length);
-  return { total, topics: byTopic };
+
+  // The arm: joint states from the live MuJoCo world (where it starts, then after each
+  // tick) or from `frame` records with joint angles; /tf a chain world -> ur5/base ->
+  // ur5/link1 .. link6 at the same times. Each link's offset in its parent has a
+  // constant length (a rigid arm), which link frames given in the world would not.
+  const logRecords = lines.map((l) => JSON.parse(l));
+  const joints = byTopic.get('/joint_states') ?? [], tfs = byTopic.get('/tf') ?? [];
+  assert.equal(joints.length, liveArm ? logRecords.filter((r) => r.ev === 'tick').length + 1
+    : logRecords.filter((r) => r.ev === 'frame' && Array.isArray(r.q)).length, `${file}: /joint_states`);
+  assert.deepEqual(tfs.map((m) => m.logTime), joints.map((m) => m.logTime));
+  const lengths = [];
+  for (const [k, m] of tfs.entries()) {
+    const j = JSON.parse(joints[k].text);
+    assert.deepEqual(j.joints.map((x) => x.name), ['shoulder_pan_joint', 'shoulder_lift_joint', 'elbow_joint', 'wrist_1_joint', 'wrist_2_joint', 'wrist_3_joint']);
+    const { transforms } = JSON.parse(m.text);
+    assert.deepEqual(transforms.map((t) => t.child_frame_id), ['ur5/base', 'ur5/link1', 'ur5/link2', 'ur5/link3', 'ur5/link4', 'ur5/link5', 'ur5/link6']);
+    transforms.forEach((t, i) => {
+      assert.equal(t.parent_frame_id, i === 0 ? 'world' : transforms[i - 1].child_frame_id);
+      const { x, y, z, w } = t.rotation;
+      assert.ok(Math.abs(Math.hypot(x, y, z, w) - 1) < 1e-9, 'a unit quaternion');
+      const length = Math.hypot(t.translation.x, t.translation.y, t.translation.z);
+      if (k === 0) lengths.push(length);
+      else assert.ok(Math.abs(length - lengths[i]) < 1e-9, `${t.child_frame_id}: offset ${length} != ${lengths[i]}`);
+    });
+  }
+  return { total, topics: byTopic, joints: joints.length };
 }
 
 const runs = [
@@ -194,6 +269,23 @@ for (const r of runs) {
   const r = rtamp(['batch', '3-block-tray', '--world', 'symbolic', '--trials', '1', '--mcap', '-q'], 2);
   assert.match(r.stderr, /--mcap.*--log-dir/);
   console.log(`ok batch: ${logs.length} episodes`);
+}
+
+// The MuJoCo UR5, run and in a batch: the files have the arm (joint states and frames
+// after each tick), which the log's conversion has not.
+{
+  const log = path.join(tmp, 'mujoco.jsonl'), live = path.join(tmp, 'mujoco.mcap'), converted = path.join(tmp, 'mujoco-converted.mcap');
+  rtamp(['run', '3-block', '--quiet', '--log', log, '--mcap', live], 'ran');
+  const { joints } = await check(live, log, 'zstd', true);
+  assert.ok(joints > 10, `${joints} joint states`);
+  rtamp(['log', 'to-mcap', log, converted]);
+  await check(converted, log, 'zstd');
+  const dir = path.join(tmp, 'mujoco-batch');
+  rtamp(['batch', '3-block', '--trials', '1', '--change', 'none', '--algo', 'astar', '--log-dir', dir, '--mcap', '-q', '-o', path.join(tmp, 'mujoco-batch.csv')]);
+  const logs = fs.readdirSync(dir).filter((f) => f.endsWith('.jsonl'));
+  assert.equal(logs.length, 1);
+  for (const l of logs) await check(path.join(dir, l.replace(/\.jsonl$/, '.mcap')), path.join(dir, l), 'zstd', true);
+  console.log(`ok mujoco: ${joints} joint states`);
 }
 
 // Bad input: one line naming what and where, exit 2, no output left behind.

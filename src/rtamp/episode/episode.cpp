@@ -8,6 +8,7 @@
 #include "rtamp/episode/sim_world.hpp"
 #include "rtamp/episode/video_recorder.hpp"
 #include "rtamp/episode/episode_mcap.hpp"
+#include "rtamp/episode/mcap_arm.hpp"
 #include "rtamp/exec/episode_log.hpp"
 #include "rtamp/exec/person_world.hpp"
 #include "rtamp/exec/timeline.hpp"
@@ -108,6 +109,10 @@ Episode::Episode(const world::Scenario& input, const EpisodeOptions& opt, const 
     if (SimWorld* sw = sim_world_)
       log_->add_end_field("mujoco_warnings", [sw] { return static_cast<double>(sw->session().sim().warnings().total()); });
     loop_->add_observer(*log_);
+  }
+  if (mcap_ && sim_world_) {
+    mcap_arm_ = std::make_unique<McapArm>(sim_world_->session().sim(), *mcap_);
+    loop_->add_observer(*mcap_arm_);  // after the log: a tick's record, then the arm
   }
   if (timeline_) loop_->add_observer(*timeline_);
   if (trees_) loop_->add_observer(*trees_);

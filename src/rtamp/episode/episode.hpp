@@ -69,6 +69,7 @@ using exec::EpisodeMetrics;
 EpisodeMetrics run_episode(const world::Scenario& scenario, const EpisodeOptions& options);
 
 class EpisodeMcap;
+class McapArm;
 class SimWorld;
 class VideoRecorder;
 
@@ -102,6 +103,7 @@ class Episode {
   world::Scenario scenario_;
   std::unique_ptr<EpisodeMcap> mcap_;  // fed by log_'s sink
   std::unique_ptr<exec::EpisodeLog> log_;
+  std::unique_ptr<McapArm> mcap_arm_;  // the MuJoCo arm's joint angles into mcap_
   std::unique_ptr<exec::TreeDump> trees_;
   std::unique_ptr<exec::Timeline> timeline_;
   std::unique_ptr<world::Person> person_;

@@ -107,6 +107,19 @@ std::string transforms_schema() {
       .dump();
 }
 
+std::string joint_states_schema() {
+  const json joint{{"title", "foxglove.JointState"},
+                   {"type", "object"},
+                   {"properties", {{"name", {{"type", "string"}}}, {"position", {{"type", "number"}}}}},
+                   {"required", {"name"}}};
+  return json{{"title", "foxglove.JointStates"},
+              {"description", "The states of a robot's joints"},
+              {"type", "object"},
+              {"properties", {{"timestamp", json::parse(kTime)}, {"joints", {{"type", "array"}, {"items", joint}}}}},
+              {"required", {"timestamp", "joints"}}}
+      .dump();
+}
+
 // rtamp's own channels: an object with a timestamp and the record's fields.
 std::string rtamp_schema(const std::string& title, const std::string& description) {
   return json{{"title", title},
@@ -120,8 +133,6 @@ std::uint64_t nanos(double t) { return t <= 0 ? 0 : static_cast<std::uint64_t>(s
 
 json stamp(std::uint64_t ns) { return {{"sec", ns / 1000000000ULL}, {"nsec", ns % 1000000000ULL}}; }
 
-json vec3(double x, double y, double z) { return {{"x", x}, {"y", y}, {"z", z}}; }
-
 // The scene's text, written directly (a scene message for every perceived
 // placement: building nlohmann objects for it cost most of a conversion).
 void put_stamp(std::string& o, std::uint64_t ns) {
@@ -129,6 +140,15 @@ void put_stamp(std::string& o, std::uint64_t ns) {
   o += std::to_string(ns / 1000000000ULL);
   o += ",\"nsec\":";
   o += std::to_string(ns % 1000000000ULL);
+  o += '}';
+}
+
+// The same, keys in nlohmann's order (messages that also carry a record's fields).
+void put_sorted_stamp(std::string& o, std::uint64_t ns) {
+  o += "{\"nsec\":";
+  o += std::to_string(ns % 1000000000ULL);
+  o += ",\"sec\":";
+  o += std::to_string(ns / 1000000000ULL);
   o += '}';
 }
 
@@ -153,13 +173,12 @@ void put_pose(std::string& o, const world::Vec3& p, const std::array<double, 4>&
   o += '}';
 }
 
-// One entity of the scene: a cube (centre `centre`) and a label above it.
-void put_entity(std::string& o, std::uint64_t ns, std::string_view kind, const std::string& name,
-                const world::Vec3& centre, const std::array<double, 4>& quat, const world::Vec3& size,
-                const std::array<double, 4>& rgba, const world::Vec3& label_at) {
-  o += "{\"timestamp\":";
-  put_stamp(o, ns);
-  o += ",\"frame_id\":\"world\",\"id\":";
+// One entity of the scene, a cube (centre `centre`) and a label above it: its
+// text after the timestamp (the part that stays while the thing stays put).
+std::string entity_tail(std::string_view kind, const std::string& name, const world::Vec3& centre,
+                        const std::array<double, 4>& quat, const world::Vec3& size, const std::array<double, 4>& rgba,
+                        const world::Vec3& label_at) {
+  std::string o = ",\"frame_id\":\"world\",\"id\":";
   json_text::append_string(o, std::string(kind) + name);
   o += ",\"lifetime\":{\"sec\":0,\"nsec\":0},\"frame_locked\":false,\"metadata\":[],\"arrows\":[],\"cubes\":[{\"pose\":";
   put_pose(o, centre, quat);
@@ -173,6 +192,7 @@ void put_entity(std::string& o, std::uint64_t ns, std::string_view kind, const s
        "\"color\":{\"r\":1,\"g\":1,\"b\":1,\"a\":1},\"text\":";
   json_text::append_string(o, name);
   o += "}],\"models\":[]}";
+  return o;
 }
 
 // A colour per block name (stable), trays brown.
@@ -213,9 +233,13 @@ struct EpisodeMcap::Impl {
   std::map<std::string, std::pair<std::string, bool>> kinds;  // thing -> class, container
   std::set<std::string> shown;                                // things on the scene now
   bool frames = false;                                        // the log has `frame` records
+  bool live_arm = false;  // arm() was called: the arm comes from it, not from `frame` records
   std::string status, running;                                // the last tick's
-  json tree = json::object();                                 // the last tree record's fields
+  std::map<std::string, std::string> tree_fields;             // the last tree record's fields (their JSON)
   std::string scene_text;                                     // the scene message being written
+  std::string scratch;                                        // another message being written
+  std::vector<std::string> region_tails;                      // the regions' entities after their timestamps
+  std::map<std::string, std::pair<std::array<double, 11>, std::string>> thing_tails;  // a thing's, with its pose
   std::uint16_t log, timeline, interventions, replans, plan, tree_ch, automaton, scene, joints, tf;
 
   Impl(const std::string& path, McapCompression c, const world::Scenario* s, std::size_t chunk_bytes)
@@ -239,8 +263,7 @@ struct EpisodeMcap::Impl {
         json_schema("rtamp.AutomatonStates", rtamp_schema("rtamp.AutomatonStates", "The Büchi states tracked after a step of the run")),
         "json");
     scene = out.add_channel("/scene", json_schema("foxglove.SceneUpdate", scene_schema()), "json");
-    joints = out.add_channel(
-        "/joint_states", json_schema("rtamp.JointState", rtamp_schema("rtamp.JointState", "The UR5's joint angles (rad)")), "json");
+    joints = out.add_channel("/joint_states", json_schema("foxglove.JointStates", joint_states_schema()), "json");
     tf = out.add_channel("/tf", json_schema("foxglove.FrameTransforms", transforms_schema()), "json");
     if (s) use(*s);
   }
@@ -260,9 +283,19 @@ struct EpisodeMcap::Impl {
     out.write(channel, ns, ns, text);
   }
 
+  // A foxglove.Log message, written as nlohmann would dump it (keys in order).
   void logline(std::uint16_t channel, std::uint64_t ns, int level, const std::string& ev, const std::string& message) {
-    put(channel, ns,
-        {{"timestamp", stamp(ns)}, {"level", level}, {"message", message}, {"name", "rtamp." + ev}, {"file", ""}, {"line", 0}});
+    std::string& o = scratch;
+    o = "{\"file\":\"\",\"level\":";
+    o += std::to_string(level);
+    o += ",\"line\":0,\"message\":";
+    json_text::append_string(o, message);
+    o += ",\"name\":";
+    json_text::append_string(o, "rtamp." + ev);
+    o += ",\"timestamp\":";
+    put_sorted_stamp(o, ns);
+    o += '}';
+    out.write(channel, ns, ns, o);
   }
 
   // The scene: the regions and `things` (replacing what was shown; things gone deleted).
@@ -285,19 +318,30 @@ struct EpisodeMcap::Impl {
     }
     o += "],\"entities\":[";
     first = true;
-    if (scenario)
-      for (const auto& r : scenario->regions) {
-        if (!first) o += ',';
-        first = false;
-        put_entity(o, ns, "region/", r.name, {r.center[0], r.center[1], r.center[2] + 0.001}, {1, 0, 0, 0},
-                   {r.size[0], r.size[1], 0.002}, {0.6, 0.6, 0.6, 0.35}, {r.center[0], r.center[1], r.center[2] + 0.01});
-      }
+    if (scenario && region_tails.size() != scenario->regions.size())
+      for (const auto& r : scenario->regions)
+        region_tails.push_back(entity_tail("region/", r.name, {r.center[0], r.center[1], r.center[2] + 0.001},
+                                           {1, 0, 0, 0}, {r.size[0], r.size[1], 0.002}, {0.6, 0.6, 0.6, 0.35},
+                                           {r.center[0], r.center[1], r.center[2] + 0.01}));
+    const auto put_entity = [&](const std::string& tail) {
+      o += first ? "{\"timestamp\":" : ",{\"timestamp\":";
+      first = false;
+      put_stamp(o, ns);
+      o += tail;
+    };
+    for (const auto& tail : region_tails) put_entity(tail);
     for (const auto& t : things) {
       if (t.at == "none") continue;
-      if (!first) o += ',';
-      first = false;
-      put_entity(o, ns, "thing/", t.name, {t.pos[0], t.pos[1], t.pos[2] + t.size[2] / 2}, t.quat, t.size,
-                 thing_color(t.name, t.container), {t.pos[0], t.pos[1], t.pos[2] + t.size[2] + 0.03});
+      // A thing's text is made again only when it moved.
+      const std::array<double, 11> key{t.pos[0],  t.pos[1],  t.pos[2],  t.quat[0], t.quat[1], t.quat[2],
+                                       t.quat[3], t.size[0], t.size[1], t.size[2], t.container ? 1.0 : 0.0};
+      auto& [cached_key, tail] = thing_tails[t.name];
+      if (tail.empty() || cached_key != key) {
+        cached_key = key;
+        tail = entity_tail("thing/", t.name, {t.pos[0], t.pos[1], t.pos[2] + t.size[2] / 2}, t.quat, t.size,
+                           thing_color(t.name, t.container), {t.pos[0], t.pos[1], t.pos[2] + t.size[2] + 0.03});
+      }
+      put_entity(tail);
     }
     o += "]}";
     shown = std::move(now);
@@ -337,36 +381,79 @@ struct EpisodeMcap::Impl {
     }
     draw(ns, things);
     const auto q = j.find("q");
-    if (q == j.end() || !q->is_array() || q->size() != 6) return;
-    robot::Joints joints_now{};
-    json names = json::array(), positions = json::array();
-    for (std::size_t i = 0; i < 6; ++i) {
-      joints_now[i] = (*q)[i].get<double>();
-      names.push_back(kJointNames[i]);
-      positions.push_back(joints_now[i]);
-    }
-    put(joints, ns, {{"timestamp", stamp(ns)}, {"name", names}, {"position", positions}});
-    if (!arm) return;
-    const auto frames_now = arm->link_frames(joints_now);
-    json transforms = json::array();
-    for (std::size_t i = 0; i < frames_now.size(); ++i) {
-      const Eigen::Quaterniond r(frames_now[i].rotation());
-      const Eigen::Vector3d p = frames_now[i].translation();
-      transforms.push_back({{"timestamp", stamp(ns)},
-                            {"parent_frame_id", "world"},
-                            {"child_frame_id", i == 0 ? std::string("ur5/base") : "ur5/link" + std::to_string(i)},
-                            {"translation", vec3(p.x(), p.y(), p.z())},
-                            {"rotation", {{"x", r.x()}, {"y", r.y()}, {"z", r.z()}, {"w", r.w()}}}});
-    }
-    put(tf, ns, {{"transforms", transforms}});
+    if (live_arm || q == j.end() || !q->is_array() || q->size() != 6) return;
+    std::array<double, 6> angles{};
+    for (std::size_t i = 0; i < 6; ++i) angles[i] = (*q)[i].get<double>();
+    draw_arm(ns, angles);
   }
 
+  // The arm at joint angles `q`: /joint_states, and /tf as a chain world ->
+  // ur5/base -> ur5/link1 .. ur5/link6 (each link in its parent), so that a 3-D
+  // panel draws the arm as the lines between its frames.
+  void draw_arm(std::uint64_t ns, const std::array<double, 6>& q) {
+    std::string& o = scratch;
+    o = "{\"timestamp\":";
+    put_stamp(o, ns);
+    o += ",\"joints\":[";
+    for (std::size_t i = 0; i < 6; ++i) {
+      o += i ? ",{\"name\":\"" : "{\"name\":\"";
+      o += kJointNames[i];
+      o += "\",\"position\":";
+      json_text::append_number(o, q[i]);
+      o += '}';
+    }
+    o += "]}";
+    out.write(joints, ns, ns, o);
+    if (!arm) return;
+    const auto frames_now = arm->link_frames({q[0], q[1], q[2], q[3], q[4], q[5]});
+    o = "{\"transforms\":[";
+    for (std::size_t i = 0; i < frames_now.size(); ++i) {
+      const Eigen::Isometry3d local = i == 0 ? frames_now[0] : frames_now[i - 1].inverse() * frames_now[i];
+      const Eigen::Quaterniond r(local.rotation());
+      const Eigen::Vector3d p = local.translation();
+      o += i ? ",{\"timestamp\":" : "{\"timestamp\":";
+      put_stamp(o, ns);
+      o += ",\"parent_frame_id\":\"";
+      o += i == 0 ? "world" : i == 1 ? "ur5/base" : "ur5/link" + std::to_string(i - 1);
+      o += "\",\"child_frame_id\":\"";
+      o += i == 0 ? std::string("ur5/base") : "ur5/link" + std::to_string(i);
+      o += "\",\"translation\":";
+      put_numbers(o, {{"x", p.x()}, {"y", p.y()}, {"z", p.z()}});
+      o += ",\"rotation\":";
+      put_numbers(o, {{"x", r.x()}, {"y", r.y()}, {"z", r.z()}, {"w", r.w()}});
+      o += '}';
+    }
+    o += "]}";
+    out.write(tf, ns, ns, o);
+  }
+
+  // The last tree record's fields and the tick's, keys in nlohmann's order.
   void tree_status(std::uint64_t ns) {
-    json j = tree;
-    j["timestamp"] = stamp(ns);
-    j["status"] = status;
-    j["running"] = running;
-    put(tree_ch, ns, j);
+    std::string& o = scratch;
+    o.clear();
+    std::string stamp_text, status_text, running_text;
+    put_sorted_stamp(stamp_text, ns);
+    json_text::append_string(status_text, status);
+    json_text::append_string(running_text, running);
+    const std::pair<const char*, const std::string*> tick_fields[] = {
+        {"running", &running_text}, {"status", &status_text}, {"timestamp", &stamp_text}};
+    auto field = tree_fields.begin();
+    char sep = '{';
+    const auto put_field = [&](const std::string& key, const std::string& value) {
+      o += sep;
+      sep = ',';
+      json_text::append_string(o, key);
+      o += ':';
+      o += value;
+    };
+    for (const auto& [key, value] : tick_fields) {
+      for (; field != tree_fields.end() && field->first < key; ++field) put_field(field->first, field->second);
+      if (field != tree_fields.end() && field->first == key) ++field;
+      put_field(key, *value);
+    }
+    for (; field != tree_fields.end(); ++field) put_field(field->first, field->second);
+    o += '}';
+    out.write(tree_ch, ns, ns, o);
   }
 
   void tick(double t, std::string_view r, std::string_view s, std::string_view text) {
@@ -416,10 +503,14 @@ struct EpisodeMcap::Impl {
       logline(timeline, ns, 2, ev, "things added [" + join(j.value("added", json::array())) + "] removed [" +
                                       join(j.value("removed", json::array())) + "]");
     } else if (ev == "run") {
-      put(automaton, ns,
-          {{"timestamp", stamp(ns)},
-           {"automaton_states", j.value("automaton_states", json::array())},
-           {"state", j.value("state", json::object())}});
+      scratch = "{\"automaton_states\":";
+      scratch += j.value("automaton_states", json::array()).dump(-1, ' ', false, json::error_handler_t::replace);
+      scratch += ",\"state\":";
+      scratch += j.value("state", json::object()).dump(-1, ' ', false, json::error_handler_t::replace);
+      scratch += ",\"timestamp\":";
+      put_sorted_stamp(scratch, ns);
+      scratch += '}';
+      out.write(automaton, ns, ns, scratch);
     } else if (ev == "handled_by_tree") {
       logline(timeline, ns, 2, ev, "handled by the tree: " + text_of(j, "by"));
     } else if (ev == "replan") {
@@ -435,9 +526,9 @@ struct EpisodeMcap::Impl {
               std::string(j.value("first", false) ? "first plan" : "plan") + ", cost " + text_of(j, "cost") + ": " +
                   join(j.value("actions", json::array())));
     } else if (ev == "tree") {
-      tree = j;
-      tree.erase("ev");
-      tree.erase("t");
+      tree_fields.clear();
+      for (const auto& [key, value] : j.items())
+        if (key != "ev" && key != "t") tree_fields[key] = value.dump(-1, ' ', false, json::error_handler_t::replace);
       tree_status(ns);
       logline(timeline, ns, 2, ev,
               std::string(j.value("deferred", false) ? "tree change deferred" : "tree changed") + ": inserted " +
@@ -501,6 +592,11 @@ void EpisodeMcap::add(std::string_view record) {
   if (t == j.end() || !t->is_number()) throw Error("a record without a time \"t\"");
   impl_->add(j, record);
   ++records_;
+}
+
+void EpisodeMcap::arm(double t, const std::array<double, 6>& q) {
+  impl_->live_arm = true;
+  impl_->draw_arm(nanos(t), q);
 }
 
 void EpisodeMcap::close() { impl_->out.close(); }

@@ -6,8 +6,8 @@
 //   /scene          foxglove.SceneUpdate   regions, trays and blocks (from `frame`
 //                                          records, else laid out from `perceived`
 //                                          and `end` placements: exec/thing_layout.hpp)
-//   /joint_states   rtamp.JointState       the UR5's joint angles (`frame` records with q)
-//   /tf             foxglove.FrameTransforms  the arm's link frames in the world (UR5 FK)
+//   /joint_states   foxglove.JointStates   the UR5's joint angles (`frame` records with q, or arm())
+//   /tf             foxglove.FrameTransforms  the arm's link frames, a chain from the world (UR5 FK)
 //   /plan           rtamp.Plan             each plan
 //   /tree           rtamp.TreeStatus       tree changes and the tick status when it changes
 //   /automaton      rtamp.AutomatonStates  the tracked Büchi states after each step of the run
@@ -18,6 +18,7 @@
 // episode log (Episode, `--mcap`), and by `rtamp log to-mcap` on a finished log.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <memory>
 #include <string>
@@ -40,6 +41,10 @@ class EpisodeMcap {
   // One record of the log (one JSON object with "ev" and "t", no newline);
   // rtamp::Error if it is not one.
   void add(std::string_view record);
+  // The arm at world time `t` (s), joint angles `q` (rad): /joint_states and
+  // /tf, as a `frame` record with q gives them (live MuJoCo episodes: McapArm).
+  // Once called, `frame` records' joint angles are not drawn (no arm twice).
+  void arm(double t, const std::array<double, 6>& q);
   // Writes the summary and closes the file (the destructor does it quietly).
   void close();
 

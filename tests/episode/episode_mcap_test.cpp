@@ -1,0 +1,166 @@
+// EpisodeMcap's messages written as text directly (no nlohmann objects): read
+// back from an uncompressed file by a minimal MCAP reader written here from the
+// specification, the /tree, /timeline and /automaton messages are the text
+// nlohmann dumps for the same values (so they read back as before, keys in
+// order, strings escaped); the arm (arm()) gives six joint states and a /tf
+// chain whose composition is the UR5's forward kinematics in the world.
+#include "rtamp/episode/episode_mcap.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <string>
+#include <vector>
+
+#include <Eigen/Geometry>
+#include <nlohmann/json.hpp>
+
+#include "rtamp/robot/ur5_kinematics.hpp"
+#include "rtamp/world/scenario_io.hpp"
+
+namespace rtamp::episode {
+namespace {
+
+using nlohmann::json;
+
+template <typename T>
+T take(const std::string& b, std::size_t& at) {
+  T v = 0;
+  for (std::size_t i = 0; i < sizeof(T); ++i) v |= static_cast<T>(static_cast<T>(static_cast<unsigned char>(b[at + i])) << (8 * i));
+  at += sizeof(T);
+  return v;
+}
+
+std::string take_string(const std::string& b, std::size_t& at) {
+  const auto n = take<std::uint32_t>(b, at);
+  std::string s = b.substr(at, n);
+  at += n;
+  return s;
+}
+
+// topic -> message texts, from a file whose chunks are not compressed.
+std::map<std::string, std::vector<std::string>> messages(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  const std::string b((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  std::map<std::uint16_t, std::string> topics;
+  std::map<std::string, std::vector<std::string>> out;
+  const auto walk = [&](const std::string& records, std::size_t at, std::size_t end, auto& self) -> void {
+    while (at < end) {
+      const auto op = static_cast<unsigned char>(records[at++]);
+      const auto length = take<std::uint64_t>(records, at);
+      std::size_t c = at;
+      if (op == 0x04) {  // Channel
+        const auto id = take<std::uint16_t>(records, c);
+        take<std::uint16_t>(records, c);
+        topics[id] = take_string(records, c);
+      } else if (op == 0x05) {  // Message
+        const auto channel = take<std::uint16_t>(records, c);
+        c += 4 + 8 + 8;
+        out[topics.at(channel)].push_back(records.substr(c, at + length - c));
+      } else if (op == 0x06) {  // Chunk
+        c += 8 + 8 + 8 + 4;
+        EXPECT_EQ(take_string(records, c), "");
+        const auto n = take<std::uint64_t>(records, c);
+        const std::string inner = records.substr(c, n);
+        self(inner, 0, inner.size(), self);
+      } else if (op == 0x0F) {  // DataEnd: the summary repeats the channels
+        return;
+      }
+      at += length;
+    }
+  };
+  EXPECT_EQ(b.substr(0, 8), std::string("\x89MCAP0\r\n", 8));
+  walk(b, 8, b.size() - 8, walk);
+  return out;
+}
+
+std::string dumped(const json& j) { return j.dump(-1, ' ', false, json::error_handler_t::replace); }
+
+json stamp(std::uint64_t ns) { return {{"sec", ns / 1000000000ULL}, {"nsec", ns % 1000000000ULL}}; }
+
+TEST(EpisodeMcap, MessagesWrittenDirectlyAreNlohmannsText) {
+  const std::string path = (std::filesystem::path(::testing::TempDir()) / "episode_mcap_text.mcap").string();
+  const json tree{{"ev", "tree"}, {"applied", true}, {"changes", 2}, {"inserted", 3}, {"removed", 0}, {"updated", 1}, {"t", 1.5}};
+  const json run{{"ev", "run"}, {"automaton_states", {0, 2}}, {"state", {{"o1", "r1"}, {"o2", "tray \"a\""}}}, {"t", 2.25}};
+  const json action{{"ev", "action"}, {"what", "failed"}, {"action", "move(o1, r2)"}, {"reason", "slipped:\t\"é\"\n"}, {"t", 3.0}};
+  {
+    EpisodeMcap m(path, McapCompression::None, nullptr);
+    m.add(R"({"ev":"episode","scenario":"not-built-in","t":0})");
+    m.add(dumped(tree));
+    m.add(R"js({"ev":"tick","running":"move(o1, r2)","status":"running","t":2})js");
+    m.add(dumped(run));
+    m.add(dumped(action));
+    m.close();
+  }
+  const auto topics = messages(path);
+  ASSERT_EQ(topics.at("/rtamp/log").size(), 5u);
+
+  // The tree record's fields with the tick's status (after the tree record, then the tick).
+  json status = tree;
+  status.erase("ev");
+  status.erase("t");
+  status["running"] = "";
+  status["status"] = "";
+  status["timestamp"] = stamp(1500000000);
+  ASSERT_EQ(topics.at("/tree").size(), 2u);
+  EXPECT_EQ(topics.at("/tree")[0], dumped(status));
+  status["running"] = "move(o1, r2)";
+  status["status"] = "running";
+  status["timestamp"] = stamp(2000000000);
+  EXPECT_EQ(topics.at("/tree")[1], dumped(status));
+
+  const json automaton{{"automaton_states", {0, 2}}, {"state", run.at("state")}, {"timestamp", stamp(2250000000)}};
+  EXPECT_EQ(topics.at("/automaton").at(0), dumped(automaton));
+
+  const json line{{"timestamp", stamp(3000000000)},
+                  {"level", 3},
+                  {"message", "failed move(o1, r2): slipped:\t\"é\"\n"},
+                  {"name", "rtamp.action"},
+                  {"file", ""},
+                  {"line", 0}};
+  EXPECT_EQ(topics.at("/timeline").back(), dumped(line));
+}
+
+TEST(EpisodeMcap, TheArmIsAChainOfTheUr5sFrames) {
+  const std::string path = (std::filesystem::path(::testing::TempDir()) / "episode_mcap_arm.mcap").string();
+  const world::Scenario scenario = world::load_scenario("3-block");
+  const std::array<double, 6> q{0.1, -1.2, 1.4, -0.3, 1.57, 0.25};
+  {
+    EpisodeMcap m(path, McapCompression::None, &scenario);
+    m.arm(4.5, q);
+    m.close();
+  }
+  const auto topics = messages(path);
+  ASSERT_EQ(topics.at("/joint_states").size(), 1u);
+  const json joints = json::parse(topics.at("/joint_states")[0]);
+  EXPECT_EQ(joints.at("timestamp"), stamp(4500000000));
+  ASSERT_EQ(joints.at("joints").size(), 6u);
+  EXPECT_EQ(joints.at("joints")[0].at("name"), "shoulder_pan_joint");
+  for (std::size_t i = 0; i < 6; ++i) EXPECT_EQ(joints.at("joints")[i].at("position").get<double>(), q[i]);
+
+  robot::Ur5Kinematics::Config config;
+  config.base = robot::Ur5Kinematics::base_pose(scenario.robot);
+  const auto expected = robot::Ur5Kinematics(config).link_frames({q[0], q[1], q[2], q[3], q[4], q[5]});
+  const json tf = json::parse(topics.at("/tf").at(0)).at("transforms");
+  ASSERT_EQ(tf.size(), expected.size());
+  Eigen::Isometry3d world = Eigen::Isometry3d::Identity();
+  std::string parent = "world";
+  for (std::size_t i = 0; i < tf.size(); ++i) {
+    EXPECT_EQ(tf[i].at("parent_frame_id"), parent);
+    parent = tf[i].at("child_frame_id").get<std::string>();
+    const auto& p = tf[i].at("translation");
+    const auto& r = tf[i].at("rotation");
+    Eigen::Isometry3d local = Eigen::Isometry3d::Identity();
+    local.linear() = Eigen::Quaterniond(r.at("w"), r.at("x"), r.at("y"), r.at("z")).toRotationMatrix();
+    local.translation() = Eigen::Vector3d(p.at("x"), p.at("y"), p.at("z"));
+    world = world * local;
+    EXPECT_TRUE(world.isApprox(expected[i], 1e-9)) << parent;
+  }
+  EXPECT_EQ(parent, "ur5/link6");
+}
+
+}  // namespace
+}  // namespace rtamp::episode
