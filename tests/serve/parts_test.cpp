@@ -149,6 +149,21 @@ TEST(ServeInterventionCheck, RefusesAsTheScenarioFileDoes) {
     if (c.expected == "needs a target") continue;  // each names its own input's fields
     EXPECT_EQ(page.substr(page_owner.size()), kinds_as_page(file.substr(file_owner.size()))) << page << " | " << file;
   }
+  // A page cannot bring a class the scenario does not have (a script can): the
+  // palette's classes pass, others are refused (the file accepts them).
+  for (const auto& [kind, cls] : std::vector<std::pair<K, std::string>>{{K::Add, "unicorn"}, {K::AddContainer, "crate"}}) {
+    world::Intervention v;
+    v.kind = kind;
+    v.subject = "x9";
+    v.location = "r2";
+    v.cls = cls;
+    EXPECT_NE(check.check(v, now).find("unknown class '" + cls + "'"), std::string::npos) << check.check(v, now);
+    world::Scenario scripted = s;
+    scripted.interventions = {v};
+    EXPECT_NO_THROW(world::validate(scripted));
+    v.cls = kind == K::Add ? "block" : "tray";
+    EXPECT_EQ(check.check(v, now), "");
+  }
   // Taking from an empty gripper passes the check in both; the world refuses it
   // with its own reason (exec's apply, the same for a scripted one).
   world::Intervention take;
