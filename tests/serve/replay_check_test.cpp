@@ -182,13 +182,15 @@ TEST_F(ReplayCheck, BrokenLogsAreRefusedWithTheirLine) {
   }
 }
 
-// A served symbolic episode paused after a few steps, a block moved from the
-// page while paused, then resumed: the log's records are in time order (the
-// intervention's record has the time it was applied) and the log replays.
-TEST_F(ReplayCheck, AnInterventionWhilePausedKeepsTheLogInTimeOrder) {
+// A served episode started paused, planning on a worker (as with MuJoCo): its
+// first plan is made before anything is resumed or stepped (docs/serve.md
+// `--paused`); a block moved from the page while paused, a few steps, then
+// resumed: the log's records are in time order (the intervention's record has
+// the time it was applied, not before the plan's) and the log replays.
+TEST_F(ReplayCheck, APausedEpisodePlansAndAnInterventionKeepsTheLogInTimeOrder) {
   LiveOptions o;
   o.episode.world = "symbolic";
-  o.episode.loop.planning = exec::PlanningMode::Inline;
+  o.episode.loop.planning = exec::PlanningMode::Worker;
   o.episode.seed = 7;
   o.episode.loop.max_time = 300;
   o.episode.outputs.log = (dir_ / "paused.jsonl").string();
@@ -200,15 +202,21 @@ TEST_F(ReplayCheck, AnInterventionWhilePausedKeepsTheLogInTimeOrder) {
     server.start();
     live.start();
     WsClient c(server.port());
-    ASSERT_TRUE(c.read());
-    for (int i = 0; i < 6; ++i) {
-      c.send(json{{"type", "control"}, {"id", i + 1}, {"action", "step"}});
-      ASSERT_TRUE(c.reply(i + 1));
+    const auto hello = c.read();
+    ASSERT_TRUE(hello);
+    bool planned = false;
+    for (const auto& rec : (*hello)["history"]) planned = planned || rec["ev"] == "plan";
+    if (!planned) {
+      ASSERT_TRUE(c.read_until([](const json& m) { return m["type"] == "log" && m["record"]["ev"] == "plan"; }));
     }
     c.send(json{{"type", "intervene"}, {"id", 100}, {"kind", "relocate"}, {"subject", "o3"}, {"location", "r2"}});
     const auto r = c.reply(100);
     ASSERT_TRUE(r);
     EXPECT_TRUE((*r)["ok"]) << *r;
+    for (int i = 0; i < 6; ++i) {
+      c.send(json{{"type", "control"}, {"id", i + 1}, {"action", "step"}});
+      ASSERT_TRUE(c.reply(i + 1));
+    }
     c.send(json{{"type", "control"}, {"id", 101}, {"action", "resume"}});
     ASSERT_TRUE(c.reply(101));
     live.wait();
