@@ -1,14 +1,15 @@
 // Joint angles for the frames of a world that streams none (the symbolic world,
 // a world laid out from perception): the UR5's closed-form inverse kinematics
 // (robot::Ur5Kinematics, the robot layer's) for the frame's tool point with the
-// gripper pointing down, the solution nearest the previous frame's angles (the
-// first: home, the MuJoCo model's), so the arm keeps its elbow up above the
-// table and trays as it moves, as the MuJoCo arm does. A tool point the arm
-// cannot reach pointing down (the symbolic world's parked hand) gives home.
+// gripper pointing down: of the solutions whose elbow and wrists are above the
+// tool point (none through the table or a tray), the one nearest the previous
+// frame's angles (the first: home, the MuJoCo model's). A tool point the arm
+// cannot reach so (the symbolic world's parked hand) gives home.
 // The page draws these angles as it draws MuJoCo's (forward kinematics), and a
 // served log's `frame` records carry them, so a replay shows the same arm.
 // Invariants: a filled q puts the tool at the frame's tool point (forward
-// kinematics, < 1e-6 m) or is home; a frame that has angles is left alone.
+// kinematics, < 1e-6 m) with link frames 2-4 above it, or is home; a frame that
+// has angles is left alone.
 #pragma once
 
 #include "rtamp/exec/frame.hpp"
