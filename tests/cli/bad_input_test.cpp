@@ -522,8 +522,18 @@ void serve_cases(std::vector<Case>& t) {
     add({"--replay", p}, "--replay: " + p + ":1:", "the log is of scenario '3-block'");
   }
   {
-    const std::string p = file("{\"ev\":\"run\",\"t\":2}\n{\"ev\":\"run\",\"t\":1}\n", ".jsonl");
-    add({"--replay", p}, "--replay: " + p + ":2:", "out of time order");
+    const std::string p = file("{\"ev\":\"episode\",\"t\":0}\n{\"ev\":\"replan\",\"why\":\"x\",\"t\":2}\n"
+                               "{\"ev\":\"replan\",\"why\":\"x\",\"t\":1}\n", ".jsonl");
+    add({"--replay", p}, "--replay: " + p + ":3:", "out of time order");
+  }
+  {
+    const std::string p = file("{\"ev\":\"episode\",\"t\":0}\n" + std::string(100000, '[') + "\n", ".jsonl");
+    add({"--replay", p}, "--replay: " + p + ":2:", "nested deeper than 16 levels");
+  }
+  {
+    const std::string p = file("{\"ev\":\"episode\",\"t\":0}\n{\"ev\":\"frame\",\"q\":[0,0,0],\"tool\":[0,0,0],"
+                               "\"things\":[],\"t\":0.5}\n", ".jsonl");
+    add({"--replay", p}, "--replay: " + p + ":2:", "\"q\" must be 6 numbers");
   }
   t.push_back({"serve", {"serve", "3-block-tray", "--log", "no-such-dir/sv.jsonl"}, "--log:", "cannot write", {}});
 }

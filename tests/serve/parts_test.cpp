@@ -1,7 +1,7 @@
 // Unit tests of serve's parts that need no network: request parsing
 // (request.hpp), the intervention check (intervention_check.hpp, against the
-// scenario validator's rules), the layout of things (thing_layout.hpp), and
-// the hub's ordering (hub.hpp).
+// scenario validator's rules), the layout of things (thing_layout.hpp), the
+// hub's ordering (hub.hpp) and the joint angles of frames without them (arm_angles.hpp).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -13,6 +13,7 @@
 #include <nlohmann/json.hpp>
 
 #include "rtamp/exec/episode_log.hpp"
+#include "rtamp/serve/arm_angles.hpp"
 #include "rtamp/serve/frame.hpp"
 #include "rtamp/serve/hub.hpp"
 #include "rtamp/util/json_text.hpp"
@@ -148,6 +149,21 @@ TEST(ServeInterventionCheck, RefusesAsTheScenarioFileDoes) {
     EXPECT_NE(page.find(c.expected), std::string::npos) << page;
     if (c.expected == "needs a target") continue;  // each names its own input's fields
     EXPECT_EQ(page.substr(page_owner.size()), kinds_as_page(file.substr(file_owner.size()))) << page << " | " << file;
+  }
+  // A page cannot bring a class the scenario does not have (a script can): the
+  // palette's classes pass, others are refused (the file accepts them).
+  for (const auto& [kind, cls] : std::vector<std::pair<K, std::string>>{{K::Add, "unicorn"}, {K::AddContainer, "crate"}}) {
+    world::Intervention v;
+    v.kind = kind;
+    v.subject = "x9";
+    v.location = "r2";
+    v.cls = cls;
+    EXPECT_NE(check.check(v, now).find("unknown class '" + cls + "'"), std::string::npos) << check.check(v, now);
+    world::Scenario scripted = s;
+    scripted.interventions = {v};
+    EXPECT_NO_THROW(world::validate(scripted));
+    v.cls = kind == K::Add ? "block" : "tray";
+    EXPECT_EQ(check.check(v, now), "");
   }
   // Taking from an empty gripper passes the check in both; the world refuses it
   // with its own reason (exec's apply, the same for a scripted one).
@@ -373,6 +389,40 @@ TEST(ServeHub, RecordsThatAreNotUrgentGoOutTogetherInOrderAndOnce) {
   EXPECT_EQ(b->got[2]["records"].size(), 1u) << "the new client gets only what came after its hello";
   EXPECT_EQ(a->got.size(), 6u);
   EXPECT_EQ(hub.history_size(), 6u);
+}
+
+}  // namespace
+}  // namespace rtamp::serve
+
+namespace rtamp::serve {
+namespace {
+
+// Frames without joint angles get the UR5's: forward kinematics (the robot
+// layer's, and the page's own in the browser tests) of the filled angles puts
+// the tool at the frame's tool point with elbow and wrists above it, over a
+// path across both regions; a point out of reach gives home; a frame with
+// angles keeps them.
+TEST(ServeArmAngles, ReachTheToolPointElbowUp) {
+  const world::Scenario s = world::load_scenario("3-block-tray");
+  ArmAngles arm(s.robot);
+  for (int i = 0; i <= 20; ++i) {
+    exec::Frame f;
+    f.tool = {0.40, 0.32 - 0.64 * i / 20.0, 0.02 + 0.1 * (i % 3)};
+    arm.fill(f);
+    ASSERT_TRUE(f.q);
+    const auto frames = arm.kinematics().link_frames(*f.q);
+    const Eigen::Vector3d tool = arm.kinematics().tool_point(*f.q);
+    EXPECT_LT((tool - Eigen::Vector3d(f.tool[0], f.tool[1], f.tool[2])).norm(), 1e-6) << i;
+    for (int k : {2, 3, 4}) EXPECT_GT(frames[static_cast<std::size_t>(k)].translation().z(), f.tool[2]) << i << " frame " << k;
+  }
+  exec::Frame far;
+  far.tool = {3, 3, 0};
+  arm.fill(far);
+  EXPECT_EQ(*far.q, arm.home());
+  exec::Frame given;
+  given.q = std::array<double, 6>{1, 2, 3, 4, 5, 6};
+  arm.fill(given);
+  EXPECT_EQ((*given.q)[5], 6);
 }
 
 }  // namespace

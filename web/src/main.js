@@ -110,7 +110,9 @@ function refreshLog() {
   app.scene.setMoves(ep.end ? [] : ep.remaining());
   app.automaton.highlight(ep.tracked);
   app.timeline.update(ep.timeline);
-  $('#result').textContent = ep.end ? `${ep.end.success ? 'succeeded' : 'failed'}: ${ep.end.end}` : '';
+  const outcome = ep.end ? (ep.end.success ? 'succeeded' : 'failed') : '';
+  $('#result').textContent = ep.end ? `${outcome}: ${ep.end.end}` : '';
+  $('#result').dataset.outcome = outcome; // its colour (style.css): green / red
 }
 
 function onFrame(f) {

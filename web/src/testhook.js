@@ -4,6 +4,8 @@
 // scale and costs (as the drawing worker reports them), where the scene is drawn, and the
 // drop → intervention latencies. Nothing here changes the page.
 
+import { linkFrames, origin } from './kinematics.js';
+
 export function installTestHook(app) {
   const { scene } = app;
   window.rtamp = {
@@ -71,6 +73,10 @@ export function installTestHook(app) {
     },
     get streamedTool() {
       return app.tool;
+    },
+    // The origins of the arm's link frames as drawn (base, shoulder, elbow, wrists, flange, tool).
+    get armPoints() {
+      return app.arm ? linkFrames(app.arm.robot, app.arm.q).map(origin) : null;
     },
     get latencies() {
       return app.latencies;

@@ -7,7 +7,8 @@
 // controls live here and every camera change is sent to the renderer. Things are kept
 // by name and moved by `frame` messages (pos = the centre of the thing's base, quat =
 // [w, x, y, z]); a thing missing from a frame is gone. Labels are re-placed at most once
-// per animation frame, after something moved.
+// per animation frame, after something moved, and lifted so that none overlaps another.
+// The first view holds the table and the arm at home.
 // Invariants: `things` holds exactly the things of the last frame (or of hello before
 // the first frame); the renderer got every change of things, camera and size made here,
 // in order; a thing the person holds (`dragging`) is moved by the person only.
@@ -16,8 +17,41 @@ import { OrbitControls } from 'three/examples/jsm/controls/OrbitControls.js';
 import { CSS2DRenderer, CSS2DObject } from 'three/examples/jsm/renderers/CSS2DRenderer.js';
 import { RenderLink } from './render/link.js';
 import { thingObject, UNKNOWN_THING } from './shapes.js';
+import { linkFrames, origin } from './kinematics.js';
 
 const PICK = new THREE.MeshBasicMaterial(); // never drawn: picking only
+
+// How far the arm's links reach beyond their frames' origins (m): a link's radius.
+const ARM_PAD = 0.08;
+
+// Moves labels up (margin-top; CSS2DRenderer owns their transform) until none overlaps
+// another: the lowest on the screen keeps its place, each one above is lifted clear of
+// those already placed.
+function separateLabels(root) {
+  const items = [];
+  for (const el of root.children) {
+    if (el.style.display === 'none') continue;
+    el.style.marginTop = '0px';
+    items.push({ el, r: el.getBoundingClientRect() });
+  }
+  items.sort((a, b) => b.r.bottom - a.r.bottom);
+  const placed = [];
+  for (const { el, r } of items) {
+    let dy = 0;
+    for (let moved = true; moved; ) {
+      moved = false;
+      for (const p of placed) {
+        const top = r.top + dy, bottom = r.bottom + dy;
+        if (r.left < p.right && r.right > p.left && top < p.bottom && bottom > p.top) {
+          dy = p.top - r.bottom - 1;
+          moved = true;
+        }
+      }
+    }
+    if (dy) el.style.marginTop = `${dy}px`;
+    placed.push({ left: r.left, right: r.right, top: r.top + dy, bottom: r.bottom + dy });
+  }
+}
 
 function label(text, cls) {
   const div = document.createElement('div');
@@ -137,14 +171,22 @@ export class SceneView {
       this.place(th.name, th.pos || [0, 0, this.tableTop], [1, 0, 0, 0], th.at);
       this.things.get(th.name).mesh.visible = !!th.pos;
     }
-    // Look at the table's centre from the side opposite the robot.
+    // Look from the side opposite the robot, ~37° down, far enough that the table and
+    // the arm at home (its link frames, padded by the links' radius) are all in view.
     const c = t.center, base = scene.robot.base;
     const dir = new THREE.Vector3(c[0] - base[0], c[1] - base[1], 0);
     if (dir.lengthSq() < 1e-6) dir.set(1, 0, 0);
     dir.normalize();
-    const reach = Math.max(t.size[0], t.size[1]);
-    this.camera.position.set(c[0] + dir.x * reach * 1.05, c[1] + dir.y * reach * 1.05, this.tableTop + reach * 0.8);
-    this.controls.target.set(c[0] - dir.x * 0.05, c[1] - dir.y * 0.05, this.tableTop + 0.1);
+    const box = new THREE.Box3();
+    for (const sx of [-0.5, 0.5]) for (const sy of [-0.5, 0.5]) box.expandByPoint(new THREE.Vector3(c[0] + sx * t.size[0], c[1] + sy * t.size[1], this.tableTop));
+    for (const p of linkFrames(scene.robot, scene.robot.home).map(origin)) box.expandByPoint(new THREE.Vector3(...p).addScalar(ARM_PAD)).expandByPoint(new THREE.Vector3(...p).addScalar(-ARM_PAD));
+    const sphere = box.getBoundingSphere(new THREE.Sphere());
+    const vfov = THREE.MathUtils.degToRad(this.camera.fov);
+    const hfov = 2 * Math.atan(Math.tan(vfov / 2) * this.camera.aspect);
+    const dist = sphere.radius / Math.sin(Math.min(vfov, hfov) / 2);
+    const view = new THREE.Vector3(dir.x * 0.8, dir.y * 0.8, 0.6).normalize().multiplyScalar(dist);
+    this.camera.position.copy(sphere.center).add(view);
+    this.controls.target.copy(sphere.center);
     this.controls.update();
     this.cameraChanged();
   }
@@ -220,6 +262,7 @@ export class SceneView {
     if (!this.labelsDirty) return;
     this.labelsDirty = false;
     this.labels.render(this.scene, this.camera);
+    separateLabels(this.labels.domElement);
   }
 
   // The nearest thing hit by the raycaster (set from this camera), skipping `except`.

@@ -4,19 +4,24 @@
 // oracles are the server's own messages as the browser received them (the raw WebSocket
 // frames), the scenario files and the episode log — not the page's code.
 //   loads       the page loads: hello, panels filled from it, no page errors
-//   scene       the scene shows the scenario's things where the server says they are
+//   scene       the scene shows the scenario's things where the server says they are; the
+//               whole arm at home in view; no two labels overlap
 //   drag        a real mouse drag of a block onto another region → `relocate` in the log,
 //               then `handled_by_tree` or `replan` within a bounded number of ticks
 //   paused      the same drag made while paused is applied on resume, before any move
 //   add         the palette adds a block → `add` in the log, the thing appears, a reaction
 //   remove      click a block, delete → `remove` in the log, the thing disappears
 //   take        take the held block out of the gripper → `take-from-gripper`, a reaction
-//   refused     an intervention the validator refuses → its reason shown on the page
+//   refused     an intervention the validator refuses → its reason shown on the page; an
+//               add of a class the page does not offer (unicorn) refused
 //   replay      a logged episode replayed and scrubbed to its end → the end placement
+//   replaycontrols  pause, step and speed shown and working in a replay; scrubbing back
+//               while it plays sticks (the frames go on from the time sought); success
+//               and failure in different colours
 //   screenshot  the scene's layout at t = 0 (paused) against a committed reference PNG,
 //               drawn by the drawing worker (OffscreenCanvas)
 //   fallback    the same picture drawn on the main thread (?render=main), and a drag
-//   mujoco      drag in the MuJoCo world (label slow)
+//   mujoco      --paused makes the first plan; drag in the MuJoCo world (label slow)
 import assert from 'node:assert/strict';
 import { spawnSync } from 'node:child_process';
 import { existsSync, readFileSync, writeFileSync } from 'node:fs';
@@ -191,6 +196,23 @@ const cases = {
       // Every thing is drawn inside the scene's canvas, and the blocks of r1 lie left of
       // those of r2 on the screen as on the table seen from the front (+y to the right).
       const box = await page.locator('#scene canvas').boundingBox();
+      // The whole arm at home is in view (its link frames, padded by a link's radius upwards).
+      const arm = await page.evaluate(() => window.rtamp.armPoints.map((p) => window.rtamp.projectPoint([p[0], p[1], p[2] + 0.06])));
+      for (const [k, p] of arm.entries()) assert.ok(p.x > box.x && p.x < box.x + box.width && p.y > box.y && p.y < box.y + box.height, `arm frame ${k} at ${JSON.stringify(p)} off the canvas ${JSON.stringify(box)}`);
+      // No two labels overlap.
+      await page.evaluate(() => new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r))));
+      const labels = await page.evaluate(() =>
+        [...document.querySelectorAll('#scene .labels > *')].filter((e) => e.style.display !== 'none').map((e) => {
+          const r = e.getBoundingClientRect();
+          return { text: e.textContent, left: r.left, right: r.right, top: r.top, bottom: r.bottom };
+        }),
+      );
+      assert.ok(labels.length >= 6, `labels: ${JSON.stringify(labels)}`);
+      for (let i = 0; i < labels.length; i++)
+        for (let j = i + 1; j < labels.length; j++) {
+          const [a, b] = [labels[i], labels[j]];
+          assert.ok(a.right <= b.left || b.right <= a.left || a.bottom <= b.top || b.bottom <= a.top, `labels ${a.text} and ${b.text} overlap: ${JSON.stringify([a, b])}`);
+        }
       for (const t of shown) {
         const p = await at(page, t.name);
         assert.ok(p.x > box.x && p.x < box.x + box.width && p.y > box.y && p.y < box.y + box.height, `${t.name} is on screen`);
@@ -274,10 +296,14 @@ const cases = {
         if (!held) await page.click('#pause');
       }
       assert.ok(held, 'paused while the robot held a thing');
-      // While it carries something the arm is drawn reaching the streamed tool point (the
-      // symbolic world sends no joint angles: the page's own kinematics solve for them).
-      const [tool, streamed] = await page.evaluate(() => [window.rtamp.tool, window.rtamp.streamedTool]);
-      assert.ok(Math.hypot(...tool.map((v, i) => v - streamed[i])) < 1e-3, `drawn tool ${tool} vs streamed ${streamed}`);
+      // While it carries something the arm is drawn from the streamed joint angles (the
+      // server's IK for the symbolic world's tool point) reaching that point, elbow and
+      // wrist above it (never through the table or a tray).
+      const [tool, streamed, points] = await page.evaluate(() => [window.rtamp.tool, window.rtamp.streamedTool, window.rtamp.armPoints]);
+      const q = lastFrame(ws)?.q;
+      assert.equal(q?.length, 6, 'the frame carries six joint angles');
+      assert.ok(Math.hypot(...tool.map((v, i) => v - streamed[i])) < 0.01, `drawn tool ${tool} vs streamed ${streamed}`);
+      for (const k of [2, 3, 4]) assert.ok(points[k][2] > streamed[2], `link frame ${k} at ${points[k]} below the tool ${streamed}`);
       await page.selectOption('#take-to', 'r1');
       await page.click('#take');
       await page.click('#pause'); // resume
@@ -299,6 +325,23 @@ const cases = {
       assert.equal(await page.getAttribute('#notice', 'data-kind'), 'error');
       // The scene is unchanged: four things, none added.
       assert.equal((await page.evaluate(() => window.rtamp.things())).length, 4);
+      // A class the page does not offer is refused (a second connection, as a hand-made page).
+      const unicorn = await page.evaluate(
+        () =>
+          new Promise((resolve) => {
+            const s = new WebSocket(`ws://${location.host}/ws`);
+            s.onopen = () => s.send(JSON.stringify({ type: 'intervene', id: 1, kind: 'add', class: 'unicorn', location: 'r2' }));
+            s.onmessage = (e) => {
+              const m = JSON.parse(e.data);
+              if (m.type === 'reply') {
+                s.close();
+                resolve(m);
+              }
+            };
+          }),
+      );
+      assert.equal(unicorn.ok, false, JSON.stringify(unicorn));
+      assert.match(unicorn.error, /unknown class 'unicorn'/);
     });
   },
 
@@ -333,6 +376,64 @@ const cases = {
     }
   },
 
+  async replaycontrols() {
+    skipUnlessReady();
+    const dir = scratchDir('replaycontrols');
+    const ok = join(dir, 'ok.jsonl');
+    const failed = join(dir, 'failed.jsonl');
+    for (const [log, extra] of [[ok, []], [failed, ['--max-time', '3']]]) {
+      const run = spawnSync(BIN, ['run', scenario('3-block-tray'), '--world', 'symbolic', '--quiet', '--log', log, ...extra], { encoding: 'utf8' });
+      assert.ok(run.status === 0 || run.status === 1, run.stderr);
+    }
+    const frames = (ws) => ws.received.filter((m) => m.type === 'frame');
+    const colour = (page) => page.evaluate(() => getComputedStyle(document.querySelector('#result')).color);
+    let outcomeColours = [];
+    for (const log of [ok, failed]) {
+      const end = readFileSync(log, 'utf8').trim().split('\n').map((l) => JSON.parse(l)).at(-1);
+      assert.equal(end.success, log === ok, JSON.stringify(end));
+      const server = await startServer([scenario('3-block-tray'), '--replay', log, '--paused']);
+      const { context } = await launch();
+      try {
+        const { page, ws, errors } = await openPage(context, server.url);
+        assert.equal(hello(ws).mode, 'replay');
+        if (log === ok) {
+          // Pause / resume, step and speed are shown in replay mode, and work.
+          for (const id of ['#pause', '#step', '#speed']) assert.ok(await page.isVisible(id), `${id} shown in replay mode`);
+          assert.equal(await page.evaluate(() => window.rtamp.records.length), 0);
+          await page.click('#step');
+          await waitFor(() => page.evaluate(() => window.rtamp.records.length > 0), 'a step to play the first records');
+          const afterStep = await page.evaluate(() => window.rtamp.records.length);
+          await page.selectOption('#speed', '8');
+          await waitFor(() => ws.received.some((m) => m.type === 'state' && m.speed === 8), 'the speed in a state message');
+          assert.equal(await page.evaluate(() => window.rtamp.records.length), afterStep, 'paused: nothing plays');
+          await page.click('#pause'); // resume
+          await waitFor(() => page.evaluate(() => window.rtamp.t > 6), 'the replay playing past 6 s');
+          // Scrub back while it plays (Home: to 0): the frames go on from there, not from before.
+          const before = await page.evaluate(() => window.rtamp.t);
+          const seen = ws.received.length;
+          await page.focus('#scrub');
+          await page.keyboard.press('Home');
+          await waitFor(() => ws.received.slice(seen).some((m) => m.type === 'hello'), 'the hello after the seek');
+          const start = seen + ws.received.slice(seen).findIndex((m) => m.type === 'hello');
+          await waitFor(() => frames({ received: ws.received.slice(start) }).length >= 5, 'frames after the seek');
+          for (const f of frames({ received: ws.received.slice(start) }).slice(0, 5)) assert.ok(f.t < before - 2, `a frame at ${f.t} after seeking to 0 from ${before}`);
+        }
+        await page.focus('#scrub');
+        await page.keyboard.press('End');
+        await waitFor(() => page.evaluate(() => window.rtamp.records.some((r) => r.ev === 'end')), 'the end record');
+        assert.match(await page.textContent('#result'), end.success ? /^succeeded/ : /^failed/);
+        outcomeColours.push(await colour(page));
+        assert.deepEqual(errors, []);
+      } finally {
+        await context.close().catch(() => {});
+        server.proc.kill('SIGTERM');
+      }
+    }
+    // Success and failure are told apart by colour too.
+    assert.notEqual(outcomeColours[0], outcomeColours[1], `success and failure both drawn ${outcomeColours[0]}`);
+    rmSync(dir, { recursive: true, force: true });
+  },
+
   async screenshot() {
     await withPage([scenario('3-block-tray'), '--world', 'symbolic', '--no-operator', '--paused'], async ({ page }) => {
       // In Chromium the scene is drawn by the worker (an OffscreenCanvas), not by the
@@ -360,6 +461,8 @@ const cases = {
 
   async mujoco() {
     await withPage([scenario('3-block-tray'), '--world', 'mujoco', '--no-operator', '--paused'], async ({ page, ws }) => {
+      // --paused: the first plan is made (docs/serve.md), time has not started.
+      await waitFor(() => logRecords(ws).some((r) => r.ev === 'plan'), 'the first plan while paused');
       const frame = lastFrame(ws);
       assert.equal(frame.q.length, 6);
       // The page's forward kinematics of the streamed joint angles puts the tool where

@@ -265,25 +265,30 @@ void ReactiveLoop::begin() {
     return;
   }
 
-  // The first plan: the arm waits; its time is charged to world time.
+  // The first plan: the arm waits; its time is charged to world time — after
+  // the plan is installed (its records carry the time planning began), so a
+  // world paced from outside (a served episode started paused) has its first
+  // plan before time first passes.
   const Starts st = starts();
   Outcome outcome;
   plan::PlanResult first;
-  if (options_.planning == PlanningMode::Worker) {
+  const bool worker = options_.planning == PlanningMode::Worker;
+  if (worker) {
     // On a worker thread like every replan: the C library sets up a thread's
     // memory arena on its first allocation, and later workers reuse it, so
     // that cost lands here and not in the first replan.
     first = std::async(std::launch::async, [&] { return plan_from(st, outcome); }).get();
-    world_.advance(first.stats.seconds);
   } else {
     first = plan_from(st, outcome);
   }
   metrics_.first_plan_seconds = first.stats.seconds;
   if (!first.found) {
+    if (worker) world_.advance(first.stats.seconds);
     finish(EndReason::NoPlan, std::string("no plan: ") + first.message);
     return;
   }
   install(first, true, outcome);
+  if (worker) world_.advance(first.stats.seconds);
 }
 
 // Observes the world: the symbolic state of the run (held things at their

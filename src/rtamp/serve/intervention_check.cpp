@@ -1,8 +1,11 @@
 #include "rtamp/serve/intervention_check.hpp"
 
+#include <vector>
+
 #include "rtamp/util/error.hpp"
 #include "rtamp/world/intervention_rules.hpp"
 #include "rtamp/world/names.hpp"
+#include "rtamp/world/suggest.hpp"
 
 namespace rtamp::serve {
 
@@ -16,6 +19,9 @@ InterventionCheck::InterventionCheck(const world::Scenario& scenario) : scenario
   for (const auto& n : v.containers) ever_[n] = true;
   for (const auto& c : v.object_classes) classes_[c] = false;
   for (const auto& c : v.container_classes) classes_[c] = true;
+  // The defaults of an add that names no class (scene_message.cpp offers them too).
+  classes_.emplace("block", false);
+  classes_.emplace("tray", true);
 }
 
 void InterventionCheck::note(const world::Placement& now) {
@@ -53,6 +59,15 @@ std::string InterventionCheck::check(const world::Intervention& iv, const world:
                               std::string("intervention '") + kind_name(iv.kind) + "': ");
   } catch (const Error& e) {
     return e.message();
+  }
+  // Then what only a page is held to (a script may bring a class of its own).
+  const bool adds = iv.kind == K::Add || iv.kind == K::AddContainer;
+  if (adds && !iv.cls.empty() && !w.classes.count(iv.cls)) {
+    std::vector<std::string> known;
+    for (const auto& [c, container] : w.classes)
+      if (container == (iv.kind == K::AddContainer)) known.push_back(c);
+    return std::string("intervention '") + kind_name(iv.kind) + "': unknown class " + world::quoted(iv.cls) +
+           " (a page adds things of the scenario's classes)" + world::suggestion(iv.cls, known);
   }
   return "";
 }

@@ -4,7 +4,9 @@
 // world as it is now, so that a page and a scenario file refuse the same
 // mistake with the same words. The world then applies the
 // intervention or refuses it with its own reason (no room, nothing held),
-// exactly as for a scripted one.
+// exactly as for a scripted one. Unlike a scenario's script, a page cannot
+// bring a new class: an add names one of the classes the page offers (the
+// scenario's, its script's, block and tray, and any seen since) or none.
 //
 // State kept here: every thing name and class ever seen, with its kind (names
 // keep their kind for the whole episode), and the fresh names for adds that

@@ -77,6 +77,7 @@ LiveEpisode::LiveEpisode(const world::Scenario& scenario, LiveOptions options)
     frames_ = laid_out_.get();
   }
   if (exec::Intervenable* hands = episode_->world().intervenable()) seen_ = hands->true_placement();
+  arm_ = std::make_unique<ArmAngles>(episode_->scenario().robot);
   check_ = std::make_unique<InterventionCheck>(episode_->scenario());
   hub_ = std::make_unique<Hub>(hello_fields(episode_->scenario(), episode_->loop().progress().automaton(), "live",
                                             options_.episode.world));
@@ -251,6 +252,12 @@ void LiveEpisode::after_slice() {
     next_frame_record_ = t + options_.frame_record_period;
   }
   emit_frame(false);
+}
+
+exec::Frame LiveEpisode::frame() {
+  exec::Frame f = frames_->frame(seen_);
+  arm_->fill(f);
+  return f;
 }
 
 void LiveEpisode::emit_frame(bool force) {

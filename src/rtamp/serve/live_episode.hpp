@@ -7,7 +7,8 @@
 //  - the behavior tree after each change and node statuses after ticks that
 //    changed them (`tree`, `status`);
 //  - frames at most 30 per wall second (drawn by the world, exec/frame.hpp, or
-//    laid out from what the loop perceived, exec/laid_out_frames.hpp), and one after each
+//    laid out from what the loop perceived, exec/laid_out_frames.hpp; joint angles
+//    solved for the tool point where the world has none, arm_angles.hpp), and one after each
 //    applied intervention; the log also gets a `frame` record every
 //    `frame_record_period` s of world time (replays move things with them);
 //  - playback state after each control.
@@ -36,6 +37,7 @@
 #include "rtamp/episode/episode.hpp"
 #include "rtamp/exec/intervenable.hpp"
 #include "rtamp/exec/frame.hpp"
+#include "rtamp/serve/arm_angles.hpp"
 #include "rtamp/serve/hub.hpp"
 #include "rtamp/serve/intervention_check.hpp"
 #include "rtamp/serve/playback.hpp"
@@ -82,7 +84,7 @@ class LiveEpisode final : public RequestHandler {
   void service();           // loop thread: apply queued interventions
   void after_slice();       // loop thread: frames
   void emit_frame(bool force);
-  exec::Frame frame() { return frames_->frame(seen_); }
+  exec::Frame frame();
   void publish_state();
 
   // Declared in the order things may refer to each other: the loop (in
@@ -93,6 +95,7 @@ class LiveEpisode final : public RequestHandler {
   std::unique_ptr<InterventionCheck> check_;
   exec::FrameSource* frames_ = nullptr;          // the world's, or laid_out_
   std::unique_ptr<exec::FrameSource> laid_out_;  // for a world that cannot draw itself
+  std::unique_ptr<ArmAngles> arm_;               // joint angles for frames without them
   world::Placement seen_;                         // what the loop perceived last
   std::unique_ptr<exec::EpisodeLog> own_log_;  // when there is no --log file
   std::unique_ptr<Observer> observer_;

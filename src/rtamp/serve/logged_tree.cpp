@@ -117,8 +117,7 @@ std::optional<std::vector<plan::ActionTuple>> plan_tuples(const world::Scenario&
 
 LoggedTree::LoggedTree(world::Scenario scenario) : scenario_(std::move(scenario)) {}
 
-std::optional<std::string> LoggedTree::record(const std::string& text, double t, const world::Placement& known) try {
-  const json j = json::parse(text);
+std::optional<std::string> LoggedTree::record(const json& j, double t, const world::Placement& known) try {
   const std::string ev = j.value("ev", "");
   if (ev == "episode") {
     mode_ = j.value("conditions", "action") == "state" ? exec::ConditionMode::State : exec::ConditionMode::Action;

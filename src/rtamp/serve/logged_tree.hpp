@@ -21,6 +21,8 @@
 #include <string>
 #include <vector>
 
+#include <nlohmann/json_fwd.hpp>
+
 #include "rtamp/exec/subtree_builder.hpp"
 #include "rtamp/plan/action_tuple.hpp"
 #include "rtamp/world/placement.hpp"
@@ -32,12 +34,12 @@ class LoggedTree {
  public:
   explicit LoggedTree(world::Scenario scenario);
 
-  // Feeds one record (its JSON text, in log order); `known`: where things were
+  // Feeds one record (in log order); `known`: where things were
   // as of this record (classes of added things included). Returns the tree
   // message (tree_message.hpp) when the record changed the tree. A `plan`
   // record whose moves cannot be replayed (a name the scenario cannot have, no
   // start) leaves no plan to apply.
-  std::optional<std::string> record(const std::string& record_text, double t, const world::Placement& known);
+  std::optional<std::string> record(const nlohmann::json& record, double t, const world::Placement& known);
 
  private:
   world::Scenario scenario_;

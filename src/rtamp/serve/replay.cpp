@@ -1,5 +1,6 @@
 #include "rtamp/serve/replay.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <fstream>
@@ -11,6 +12,7 @@
 #include "rtamp/automata/translate.hpp"
 #include "rtamp/ltl/parser.hpp"
 #include "rtamp/serve/frame.hpp"
+#include "rtamp/serve/log_check.hpp"
 #include "rtamp/serve/logged_tree.hpp"
 #include "rtamp/serve/scene_message.hpp"
 #include "rtamp/util/error.hpp"
@@ -63,28 +65,23 @@ Replay::Replay(const world::Scenario& scenario, const std::string& path, ReplayO
   std::string world_name = "symbolic";
   Added added;
   LoggedTree tree(scenario);
+  LogCheck check(scenario);
   while (std::getline(in, line)) {
     ++n;
     if (line.empty()) continue;
     const std::string where = "--replay: " + path + ":" + std::to_string(n) + ": ";
     json j;
     try {
-      j = json::parse(line);
-    } catch (const json::exception&) {
-      throw Error(where + "not a JSON object (is this an episode log?)");
+      j = parse_log_line(line);
+      check.record(j);
+    } catch (const Error& e) {
+      throw Error(where + e.message());
     }
-    if (!j.is_object() || !j.contains("ev") || !j["ev"].is_string() || !j.contains("t") || !j["t"].is_number() ||
-        !std::isfinite(j["t"].get<double>()))
-      throw Error(where + "not an episode log record (an object with \"ev\" and a number \"t\")");
     Record r;
     r.t = j["t"].get<double>();
-    if (!records_.empty() && r.t < records_.back().t - 1e-9)
-      throw Error(where + "records out of time order (t=" + std::to_string(r.t) + " after t=" +
-                  std::to_string(records_.back().t) + ")");
     r.text = j.dump();
     const std::string ev = j["ev"].get<std::string>();
     r.frame = ev == "frame";
-    has_frames_ = has_frames_ || r.frame;
     if (ev == "episode") {
       world_name = j.value("world", "symbolic");
       const std::string sc = j.value("scenario", "");
@@ -104,10 +101,20 @@ Replay::Replay(const world::Scenario& scenario, const std::string& path, ReplayO
       r.placement = p;
       last = std::move(p);
     }
-    if (auto m = tree.record(r.text, r.t, last)) r.tree = std::move(*m);
+    if (auto m = tree.record(j, r.t, last)) r.tree = std::move(*m);
+    // The latest frame, placement and tree up to this record (kNone: none yet).
+    const std::size_t i = records_.size();
+    const Record* before = records_.empty() ? nullptr : &records_.back();
+    r.last_frame = r.frame ? i : before ? before->last_frame : kNone;
+    r.last_placement = r.placement ? i : before ? before->last_placement : kNone;
+    r.last_tree = !r.tree.empty() ? i : before ? before->last_tree : kNone;
     records_.push_back(std::move(r));
   }
-  if (records_.empty()) throw Error("--replay: " + path + ": the log is empty");
+  try {
+    check.finish();
+  } catch (const Error& e) {
+    throw Error("--replay: " + path + ": " + e.message());
+  }
   duration_ = records_.back().t;
   home_ = {scenario.robot.base[0], scenario.robot.base[1], scenario.robot.base[2] + 0.5};
   const automata::Automaton ba = automata::translate(ltl::parse(scenario.task, scenario.task_where));
@@ -123,35 +130,25 @@ Replay::~Replay() {
 }
 
 std::size_t Replay::first_after(double t) const {
-  std::size_t i = 0;
-  while (i < records_.size() && records_[i].t <= t + 1e-9) ++i;
-  return i;
+  const auto it = std::upper_bound(records_.begin(), records_.end(), t + 1e-9,
+                                   [](double x, const Record& r) { return x < r.t; });
+  return static_cast<std::size_t>(it - records_.begin());
 }
 
 std::string Replay::frame_at(double t) {
   const std::size_t end = first_after(t);
-  if (has_frames_) {
-    for (std::size_t i = end; i-- > 0;)
-      if (records_[i].frame) {
-        json j = json::parse(frame_message_from_record(records_[i].text));
-        j["t"] = t;
-        // A later placement (e.g. the end record's) gives the things' locations.
-        for (std::size_t k = end; k-- > i + 1;)
-          if (records_[k].placement) {
-            for (auto& th : j["things"])
-              if (const std::string* loc = records_[k].placement->location_of(th.value("name", "")))
-                th["at"] = *loc;
-            break;
-          }
-        return j.dump();
-      }
+  const std::size_t frame = end > 0 ? records_[end - 1].last_frame : kNone;
+  const std::size_t placed = end > 0 ? records_[end - 1].last_placement : kNone;
+  if (frame != kNone) {
+    json j = json::parse(frame_message_from_record(records_[frame].text));
+    j["t"] = t;
+    // A later placement (e.g. the end record's) gives the things' locations.
+    if (placed != kNone && placed > frame)
+      for (auto& th : j["things"])
+        if (const std::string* loc = records_[placed].placement->location_of(th.value("name", ""))) th["at"] = *loc;
+    return j.dump();
   }
-  world::Placement p = world::initial_placement(scenario_);
-  for (std::size_t i = end; i-- > 0;)
-    if (records_[i].placement) {
-      p = *records_[i].placement;
-      break;
-    }
+  const world::Placement p = placed != kNone ? *records_[placed].placement : world::initial_placement(scenario_);
   layout_ = exec::ThingLayout(scenario_);
   return frame_message(layout_.frame(t, p, home_));
 }
@@ -167,14 +164,15 @@ void Replay::publish(double t) {
 
 void Replay::seek_to(double t) {
   t = std::clamp(t, 0.0, duration_);
+  ++seeks_;
   t_ = t;
   next_ = first_after(t);
   std::vector<std::string> history;
-  std::string tree;  // the tree at t: the latest change up to t
-  for (std::size_t i = 0; i < next_; ++i) {
+  history.reserve(next_);
+  for (std::size_t i = 0; i < next_; ++i)
     if (!records_[i].frame) history.push_back(records_[i].text);
-    if (!records_[i].tree.empty()) tree = records_[i].tree;
-  }
+  // The tree at t: the latest change up to t.
+  std::string tree = next_ > 0 && records_[next_ - 1].last_tree != kNone ? records_[records_[next_ - 1].last_tree].tree : "";
   ended_.store(next_ >= records_.size());
   PlaybackState s;
   s.speed = playback_.speed();
@@ -203,8 +201,10 @@ void Replay::run() {
     if (next_ >= records_.size()) continue;
     const double speed = playback_.speed();
     double target = (step || speed <= 0) ? records_[next_].t : std::min(records_[next_].t, t_ + speed / 30);
+    const std::uint64_t seeks = seeks_;
     if (!step) playback_.pace(target, service);
-    if (seek_.load() >= 0) continue;
+    // A seek while pacing moved t_ and next_: `target` is stale (going on would snap forward).
+    if (seek_.load() >= 0 || seeks_ != seeks) continue;
     t_ = std::max(t_, target);
     bool sent = false;
     while (next_ < records_.size() && records_[next_].t <= t_ + 1e-9) {

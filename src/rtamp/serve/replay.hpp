@@ -16,13 +16,17 @@
 // time <= t and whose tree is the tree at t, then the frame at t. The end of the log is the episode's end
 // state: the last frame shows the placement of the `end` record.
 //
-// Invariants: the log is read and checked whole by the constructor
-// (rtamp::Error "--replay: FILE:LINE: WHY" on a line that is not a JSON
-// object with "ev" and a finite "t", or records out of time order); the
-// replay never changes; interventions are refused (a replay cannot be changed).
+// Invariants: the log is read and checked whole by the constructor before
+// anything is served (rtamp::Error "--replay: FILE:LINE: WHY" on a line beyond
+// the limits or breaking the record schema: serve/log_check.hpp); reading it and
+// every lookup by time are linear or better in the log's size (each record
+// keeps the index of the latest frame, placement and tree up to it); a seek
+// sticks (playback never resumes from the time before it); the replay never
+// changes; interventions are refused (a replay cannot be changed).
 #pragma once
 
 #include <atomic>
+#include <cstdint>
 #include <memory>
 #include <optional>
 #include <string>
@@ -58,12 +62,15 @@ class Replay final : public RequestHandler {
   std::string frame_at(double t);
 
  private:
+  static constexpr std::size_t kNone = static_cast<std::size_t>(-1);
   struct Record {
     double t = 0;
     std::string text;
     bool frame = false;
     std::optional<world::Placement> placement;  // perceived / run / end: where things were
     std::string tree;                           // the tree message when this record changed the tree
+    // Indices of the latest frame, placement and tree change up to this record (kNone: none).
+    std::size_t last_frame = kNone, last_placement = kNone, last_tree = kNone;
   };
 
   void run();
@@ -74,7 +81,6 @@ class Replay final : public RequestHandler {
   world::Scenario scenario_;
   std::vector<Record> records_;
   double duration_ = 0;
-  bool has_frames_ = false;
   world::Vec3 home_{0, 0, 0};
   exec::ThingLayout layout_;
   Playback playback_;
@@ -84,6 +90,7 @@ class Replay final : public RequestHandler {
   std::atomic<double> seek_{-1};
   double t_ = 0;
   std::size_t next_ = 0;
+  std::uint64_t seeks_ = 0;  // seeks done (playback thread)
 };
 
 }  // namespace rtamp::serve

@@ -1,4 +1,4 @@
-// The run controls: pause / resume, one step, the speed (live mode), and the clock;
+// The run controls: pause / resume, one step, the speed (live and replay), and the clock;
 // every change goes to the server as a `control` request and the buttons follow the
 // server's `state` messages (never the page's own guess).
 
