@@ -239,3 +239,15 @@ def test_xml_import_errors_are_located(tmp_path):
         rtamp.Tree.from_xml(bad, nodes={"Wave": boom})
     # The empty tree.
     assert rtamp.Tree.from_xml(rtamp.Tree().to_xml()).root is None
+
+
+def test_the_docs_replace_then_remove_example_works_as_written():
+    # docs/python.md "Behavior trees": replace returns the new id, which remove then takes.
+    tree = rtamp.Tree(bt.Sequence("main", bt.Condition("ready", lambda: True),
+                                  bt.Action("work", lambda: "RUNNING")))
+    leaf = tree.find("work")
+    skip = tree.replace(leaf, bt.Condition("skip", lambda: True))
+    assert tree.find("work") is None and tree.find("skip") == skip
+    tree.remove(skip, force=False)
+    assert tree.find("skip") is None
+    assert tree.tick() == rtamp.Status.SUCCESS
