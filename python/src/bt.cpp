@@ -177,12 +177,12 @@ bt::NodeRegistry registry_of(const py::dict& nodes, const py::dict& actions, con
     auto ref = std::make_shared<PyRef>(table);  // dropped with the GIL, whichever thread drops the registry
     r.add(id, [id = std::string(id), ref, spec = std::string(spec)](const bt::NodeSpec& n) {
       py::gil_scoped_acquire gil;
-      const py::dict table = ref->get();
-      if (!table.contains(n.name))
+      const py::dict callables = ref->get();
+      if (!callables.contains(n.name))
         throw Error("no callable for " + id + " '" + n.name + "': pass " +
                         (spec == "Action" ? "actions" : "conditions") + "={'" + n.name + "': ...} (by node name)",
                     n.where);
-      return build(py::module_::import("rtamp.bt").attr(spec.c_str())(n.name, table[py::str(n.name)]));
+      return build(py::module_::import("rtamp.bt").attr(spec.c_str())(n.name, callables[py::str(n.name)]));
     });
   }
   for (auto [k, v] : actions) r.add_action(k.cast<std::string>(), {tick_of(py::reinterpret_borrow<py::object>(v)), {}, {}});
