@@ -167,3 +167,11 @@ def test_a_cost_model_returning_the_wrong_type_is_a_type_error_naming_the_method
     with pytest.raises(TypeError, match=r"CostModel\.cost\(\) must return float, not str"):
         rtamp.Planner(s, cost=Wrong()).plan()
 
+
+
+def test_a_value_pybind11_cannot_convert_is_a_type_error_naming_its_type():
+    # PYBIND11_DETAILED_ERROR_MESSAGES: the Python type is named, not "#define ... for details".
+    p = rtamp.Planner(rtamp.load_scenario("3-block"))
+    with pytest.raises(TypeError, match=r"Unable to cast Python instance of type <class 'int'>") as e:
+        p.set_placement({"o1": (3, "block")})
+    assert "PYBIND11_DETAILED_ERROR_MESSAGES" not in str(e.value)
