@@ -10,7 +10,8 @@ names the stub can resolve (this module's classes unqualified, typing's
 generics imported); a default value Python cannot read becomes `...`.
 Invariant: the output parses with ast and names every public attribute; a
 signature that would not parse is written as (*args, **kwargs) -> Any and
-reported on stderr (the build still succeeds, the stub test then fails).
+reported on stderr (the build still succeeds; for a module-level function
+python/tests/test_stubs.py then fails).
 """
 
 import ast
