@@ -10,6 +10,7 @@
 // 'FAILURE'), conditions a bool. Python exceptions in leaves propagate out of
 // tick(). Node ids are the handles Python holds: stable, never reused.
 #include <chrono>
+#include <tuple>
 
 #include "bindings.hpp"
 #include "rtamp/bt/bt.hpp"
@@ -151,7 +152,8 @@ std::unique_ptr<PyTree> make_tree(const std::string& clock) {
 
 // The importer's registry from Python: `nodes` maps a type ID to factory(name, ports)
 // returning a node spec; `actions` a type ID to the on_start callable of every action of
-// that ID; `conditions` a type ID to the predicate of every condition of that ID.
+// that ID; `conditions` a type ID to the predicate of every condition of that ID (for the
+// IDs UserAction and UserCondition, of the Python leaves without a type_id: by node name).
 bt::NodeRegistry registry_of(const py::dict& nodes, const py::dict& actions, const py::dict& conditions) {
   bt::NodeRegistry r;
   for (auto [k, v] : nodes) {
@@ -165,6 +167,22 @@ bt::NodeRegistry registry_of(const py::dict& nodes, const py::dict& actions, con
         throw Error("the factory of '" + spec.type_id + "' returned a node with children (they come from the file)",
                     spec.where);
       return build(made);
+    });
+  }
+  // A leaf written in Python without a type_id is exported as UserAction / UserCondition:
+  // reading it back, its callable is looked up by the node's name in actions / conditions.
+  for (const auto& [id, table, spec] : {std::tuple{"UserAction", actions, "Action"},
+                                        std::tuple{"UserCondition", conditions, "Condition"}}) {
+    if (nodes.contains(id) || table.contains(id)) continue;
+    auto ref = std::make_shared<PyRef>(table);  // dropped with the GIL, whichever thread drops the registry
+    r.add(id, [id = std::string(id), ref, spec = std::string(spec)](const bt::NodeSpec& n) {
+      py::gil_scoped_acquire gil;
+      const py::dict callables = ref->get();
+      if (!callables.contains(n.name))
+        throw Error("no callable for " + id + " '" + n.name + "': pass " +
+                        (spec == "Action" ? "actions" : "conditions") + "={'" + n.name + "': ...} (by node name)",
+                    n.where);
+      return build(py::module_::import("rtamp.bt").attr(spec.c_str())(n.name, callables[py::str(n.name)]));
     });
   }
   for (auto [k, v] : actions) r.add_action(k.cast<std::string>(), {tick_of(py::reinterpret_borrow<py::object>(v)), {}, {}});
@@ -182,7 +200,9 @@ constexpr const char* kImportDoc =
     "Builds a tree from BehaviorTree.CPP v4 XML (a file drawn in Groot2, or one written by\n"
     "to_xml()): the engine's own node kinds are built directly; every other node ID must be\n"
     "given: nodes={ID: factory(name, ports) -> node spec without children}, actions={ID:\n"
-    "on_start callable}, conditions={ID: predicate}. tree_id picks a <BehaviorTree ID>\n"
+    "on_start callable}, conditions={ID: predicate}; a UserAction / UserCondition (what to_xml()\n"
+    "writes for a leaf built without type_id) is looked up by its node name in actions /\n"
+    "conditions, so a tree reads back from its own XML. tree_id picks a <BehaviorTree ID>\n"
     "(default: main_tree_to_execute, or the only tree); file labels error locations. Errors\n"
     "(malformed XML, unknown IDs, bad parameters) raise rtamp.Error with file, line and column.";
 

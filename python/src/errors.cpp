@@ -2,6 +2,8 @@
 // `message` (the problem alone), `file`, `line`, `column` (None when unknown)
 // and `detail` (e.g. the input line with a caret). str(e) is the C++ what():
 // "file:line:col: message", the same line the CLI prints after "rtamp: error: ".
+// A value of the wrong type that pybind11 could not convert (py::cast_error, e.g.
+// what a Python override returned) is a TypeError, not pybind11's RuntimeError.
 #include "bindings.hpp"
 
 namespace rtamp::python {
@@ -25,6 +27,8 @@ void bind_errors(py::module_& m) {
       inst.attr("column") = w.column > 0 ? py::object(py::int_(w.column)) : py::object(py::none());
       inst.attr("detail") = py::str(e.detail());
       PyErr_SetObject(error.ptr(), inst.ptr());
+    } catch (const py::cast_error& e) {
+      PyErr_SetString(PyExc_TypeError, e.what());
     }
   });
 }

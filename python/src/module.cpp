@@ -12,6 +12,7 @@ PYBIND11_MODULE(_rtamp, m) {
       "LTL -> Buchi automaton -> product with the workspace transition system -> minimum-motion-cost\n"
       "lasso plan -> behavior tree -> executed by the reactive loop on a world (symbolic, MuJoCo, or\n"
       "your own written in Python). See docs/python.md.";
+  m.attr("__version__") = RTAMP_VERSION;  // the CMake project version (python/CMakeLists.txt)
   using namespace rtamp::python;
   bind_errors(m);
   bind_ltl(m);

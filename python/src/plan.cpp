@@ -27,6 +27,19 @@ py::function override_of(const MotionCostModel* self, const char* name) {
   return py::get_override(self, name);
 }
 
+// What a CostModel method returned, as T; anything else is a TypeError naming the
+// method, the type expected and the type returned (not pybind11's "Unable to cast").
+template <class T>
+T returned(const py::object& r, const char* method) {
+  try {
+    return r.cast<T>();
+  } catch (const py::cast_error&) {
+    throw py::type_error(std::string("CostModel.") + method + "() must return " +
+                         py::detail::make_caster<T>::name.text + ", not " +
+                         py::str(py::type::handle_of(r).attr("__name__")).cast<std::string>());
+  }
+}
+
 // The trampoline: a MotionCostModel whose methods are a Python subclass's.
 // Only cost() is required; the others have safe defaults (lower bound 0,
 // depends on every query field, expensive: the planner caches its costs, no
@@ -36,34 +49,34 @@ class PyCostModel : public MotionCostModel {
   using MotionCostModel::cost;
   std::string name() const override {
     py::gil_scoped_acquire gil;
-    if (py::function f = override_of(this, "name")) return f().cast<std::string>();
+    if (py::function f = override_of(this, "name")) return returned<std::string>(f(), "name");
     const MotionCostModel* base = this;
     py::handle self = py::detail::get_object_handle(base, py::detail::get_type_info(typeid(MotionCostModel)));
     return self ? py::str(self.get_type().attr("__name__")).cast<std::string>() : std::string("python");
   }
   double cost(const MotionQuery& q) const override {
     py::gil_scoped_acquire gil;
-    if (py::function f = override_of(this, "cost")) return f(q).cast<double>();
+    if (py::function f = override_of(this, "cost")) return returned<double>(f(q), "cost");
     throw Error("a CostModel subclass must define cost(query)");
   }
   double lower_bound(const MotionQuery& q, bool to_anywhere) const override {
     py::gil_scoped_acquire gil;
-    if (py::function f = override_of(this, "lower_bound")) return f(q, to_anywhere).cast<double>();
+    if (py::function f = override_of(this, "lower_bound")) return returned<double>(f(q, to_anywhere), "lower_bound");
     return 0.0;
   }
   unsigned depends() const override {
     py::gil_scoped_acquire gil;
-    if (py::function f = override_of(this, "depends")) return f().cast<unsigned>();
+    if (py::function f = override_of(this, "depends")) return returned<unsigned>(f(), "depends");
     return plan::kDependsAll;
   }
   bool expensive() const override {
     py::gil_scoped_acquire gil;
-    if (py::function f = override_of(this, "expensive")) return f().cast<bool>();
+    if (py::function f = override_of(this, "expensive")) return returned<bool>(f(), "expensive");
     return true;
   }
   double carry_bound(const world::Vec3& from, const world::Vec3& to) const override {
     py::gil_scoped_acquire gil;
-    if (py::function f = override_of(this, "carry_bound")) return f(from, to).cast<double>();
+    if (py::function f = override_of(this, "carry_bound")) return returned<double>(f(from, to), "carry_bound");
     return 0.0;
   }
 };
@@ -100,6 +113,9 @@ PlannerConfig planner_config(const world::Scenario& scenario, const std::string&
     o.cost = name;
     return PlannerConfig{std::move(o), PyRef()};
   }
+  if (!py::isinstance<MotionCostModel>(cost))
+    throw py::type_error("Planner(): argument 'cost' must be a cost-model name (str) or a CostModel, not " +
+                         py::str(py::type::handle_of(cost).attr("__name__")).cast<std::string>());
   o.model = cost.cast<std::shared_ptr<MotionCostModel>>();
   o.cost = o.model->name();
   return PlannerConfig{std::move(o), PyRef(cost)};

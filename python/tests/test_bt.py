@@ -239,3 +239,30 @@ def test_xml_import_errors_are_located(tmp_path):
         rtamp.Tree.from_xml(bad, nodes={"Wave": boom})
     # The empty tree.
     assert rtamp.Tree.from_xml(rtamp.Tree().to_xml()).root is None
+
+
+def test_the_docs_replace_then_remove_example_works_as_written():
+    # docs/python.md "Behavior trees": replace returns the new id, which remove then takes.
+    tree = rtamp.Tree(bt.Sequence("main", bt.Condition("ready", lambda: True),
+                                  bt.Action("work", lambda: "RUNNING")))
+    leaf = tree.find("work")
+    skip = tree.replace(leaf, bt.Condition("skip", lambda: True))
+    assert tree.find("work") is None and tree.find("skip") == skip
+    tree.remove(skip, force=False)
+    assert tree.find("skip") is None
+    assert tree.tick() == rtamp.Status.SUCCESS
+
+
+def test_a_tree_built_in_python_reads_back_from_its_own_xml():
+    # Leaves without a type_id are exported as UserAction / UserCondition and found again by name.
+    ticks = []
+    tree = rtamp.Tree(bt.Sequence("main", bt.Condition("ready", lambda: True),
+                                  bt.Action("work", lambda: ticks.append("old") or "SUCCESS")))
+    xml = tree.to_xml()
+    again = rtamp.Tree.from_xml(xml, conditions={"ready": lambda: True},
+                                actions={"work": lambda: ticks.append("new") or "SUCCESS"})
+    assert again.to_xml() == xml  # the same tree, node for node
+    assert again.tick() == Status.SUCCESS and ticks == ["new"]
+    with pytest.raises(rtamp.Error, match=r"no callable for UserAction 'work': pass actions=\{'work': \.\.\.\}") as e:
+        rtamp.Tree.from_xml(xml, conditions={"ready": lambda: True})
+    assert e.value.line is not None

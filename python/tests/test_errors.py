@@ -143,3 +143,35 @@ def test_run_episode_refuses_bad_outputs_before_it_starts(tmp_path):
     with pytest.raises(rtamp.Error, match="MuJoCo world"):
         rtamp.run_episode(s, world="symbolic", video=str(tmp_path / "v.mp4"))
     assert not (tmp_path / "v.mp4").exists()
+
+
+# Wrong types are TypeErrors that say what was expected, not pybind11's
+# "Unable to cast Python instance" RuntimeError.
+def test_a_wrong_argument_type_names_the_argument_and_its_type():
+    with pytest.raises(TypeError, match=r"path_or_builtin: str"):
+        rtamp.load_scenario(3)
+
+
+def test_a_cost_that_is_neither_a_name_nor_a_cost_model_is_a_type_error():
+    s = rtamp.load_scenario("3-block")
+    with pytest.raises(TypeError, match=r"argument 'cost' must be a cost-model name \(str\) or a CostModel, not int"):
+        rtamp.Planner(s, cost=3)
+
+
+def test_a_cost_model_returning_the_wrong_type_is_a_type_error_naming_the_method():
+    class Wrong(rtamp.CostModel):
+        def cost(self, q):
+            return "far"
+
+    s = rtamp.load_scenario("3-block")
+    with pytest.raises(TypeError, match=r"CostModel\.cost\(\) must return float, not str"):
+        rtamp.Planner(s, cost=Wrong()).plan()
+
+
+
+def test_a_value_pybind11_cannot_convert_is_a_type_error_naming_its_type():
+    # PYBIND11_DETAILED_ERROR_MESSAGES: the Python type is named, not "#define ... for details".
+    p = rtamp.Planner(rtamp.load_scenario("3-block"))
+    with pytest.raises(TypeError, match=r"Unable to cast Python instance of type <class 'int'>") as e:
+        p.set_placement({"o1": (3, "block")})
+    assert "PYBIND11_DETAILED_ERROR_MESSAGES" not in str(e.value)

@@ -165,3 +165,20 @@ def test_loop_options_are_checked(tray):
         rtamp.ReactiveLoop(ToyWorld(tray), tray, planning="sometimes")
     with pytest.raises(rtamp.Error):
         rtamp.ReactiveLoop(ToyWorld(tray), tray, conditions="vibes")
+
+
+def test_observer_payloads_are_as_docs_python_md_says(tray):
+    # docs/python.md's observer table: the keys of on_plan's dict and the values of on_action's `what`.
+    w = ToyWorld(tray, move_time=2.0)
+    loop = rtamp.ReactiveLoop(w, tray, planning="inline")
+    rec = Recorder()
+    loop.add_observer(rec)
+    assert loop.run().success
+    plan = rec.plans[0]
+    assert set(plan) == {"first", "found", "cost", "reason", "moves", "seconds", "automaton_states"}
+    assert plan["first"] is True and plan["found"] is True and plan["reason"] == "none"
+    assert isinstance(plan["cost"], float) and isinstance(plan["seconds"], float)
+    assert all(isinstance(x, str) and x.startswith("move(") for x in plan["moves"])
+    assert all(isinstance(x, int) for x in plan["automaton_states"])
+    whats = {e[0] for e in rec.events if e[0] not in ("begin", "intervention", "replan")}
+    assert whats and whats <= {"start", "finished", "failed", "halted"}

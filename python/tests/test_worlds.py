@@ -53,6 +53,20 @@ def test_mujoco_world_observes_the_scene(tray):
     assert w.time() == pytest.approx(0.1, abs=0.01)
 
 
+def test_mujoco_world_takes_interventions_from_python(tray):
+    # The intervention capability (exec/intervenable.hpp), as `rtamp sim --do` uses it.
+    w = rtamp.MujocoWorld(tray, seed=1)
+    start = rtamp.initial_placement(tray).locations()
+    ev = w.apply(rtamp.Intervention("relocate", "o1", "r2"))
+    assert ev.applied
+    truth = w.true_placement()
+    assert truth.location_of("o1") == "r2" != start["o1"]
+    w.advance(0.5)  # the block settles where it was put; perception sees it there
+    assert w.observe().location_of("o1") == "r2"
+    refused = w.apply(rtamp.Intervention("relocate", "nothing", "r2"))
+    assert not refused.applied and w.true_placement().location_of("o1") == "r2"
+
+
 @pytest.mark.skipif(os.environ.get("RTAMP_SKIP_MUJOCO_EPISODE") == "1", reason="asked to skip")
 def test_mujoco_episode_short(tmp_path):
     s = rtamp.load_scenario("3-block")
