@@ -40,8 +40,10 @@ install(FILES ${PROJECT_BINARY_DIR}/rtampConfig.cmake ${PROJECT_BINARY_DIR}/rtam
               ${PROJECT_SOURCE_DIR}/cmake/rtampDependencies.cmake
         DESTINATION ${RTAMP_CMAKE_DIR})
 
+# Headers under a layer's detail/ are its internals (they may use the build-only
+# dependencies, e.g. nlohmann_json) and are not installed.
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/src/rtamp DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}
-        FILES_MATCHING PATTERN "*.hpp")
+        FILES_MATCHING PATTERN "*.hpp" PATTERN "detail" EXCLUDE)
 if(TARGET rtamp)
   install(TARGETS rtamp RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
 endif()

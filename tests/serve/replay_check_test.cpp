@@ -19,7 +19,7 @@
 
 #include "rtamp/episode/episode.hpp"
 #include "rtamp/serve/live_episode.hpp"
-#include "rtamp/serve/log_check.hpp"
+#include "rtamp/serve/detail/log_check.hpp"
 #include "rtamp/serve/replay.hpp"
 #include "rtamp/serve/server.hpp"
 #include "rtamp/util/error.hpp"

@@ -1,4 +1,4 @@
-#include "rtamp/serve/log_check.hpp"
+#include "rtamp/serve/detail/log_check.hpp"
 
 #include <cmath>
 

@@ -1,4 +1,4 @@
-#include "rtamp/serve/logged_tree.hpp"
+#include "rtamp/serve/detail/logged_tree.hpp"
 
 #include <algorithm>
 #include <memory>
