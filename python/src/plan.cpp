@@ -7,6 +7,8 @@
 // reactive loop's worker thread, too).
 #include "plan.hpp"
 
+#include <map>
+
 #include "choices.hpp"
 
 #include "loop.hpp"
@@ -14,6 +16,7 @@
 #include "rtamp/ltl/printer.hpp"
 #include "rtamp/plan/registry.hpp"
 #include "rtamp/robot/ik_motion_cost.hpp"
+#include "rtamp/task/transition_system.hpp"
 
 namespace rtamp::python {
 
@@ -56,13 +59,21 @@ class PyCostModel : public MotionCostModel {
   }
   double cost(const MotionQuery& q) const override {
     py::gil_scoped_acquire gil;
-    if (py::function f = override_of(this, "cost")) return returned<double>(f(q), "cost");
+    if (py::function f = override_of(this, "cost")) return returned<double>(f(named(q)), "cost");
     throw Error("a CostModel subclass must define cost(query)");
   }
   double lower_bound(const MotionQuery& q, bool to_anywhere) const override {
     py::gil_scoped_acquire gil;
-    if (py::function f = override_of(this, "lower_bound")) return returned<double>(f(q, to_anywhere), "lower_bound");
+    if (py::function f = override_of(this, "lower_bound"))
+      return returned<double>(f(named(q), to_anywhere), "lower_bound");
     return 0.0;
+  }
+  // The things of a scenario a Planner was built from with this model, so a
+  // query names its thing (the planner's queries carry only its stable id).
+  void learn_things(const world::Scenario& scenario) {
+    const task::System ts(scenario);
+    for (unsigned t = 0; t < ts.num_things(); ++t)
+      things_[ts.thing_uid(t)] = {ts.thing_name(t), ts.thing_class(t)};
   }
   unsigned depends() const override {
     py::gil_scoped_acquire gil;
@@ -79,6 +90,20 @@ class PyCostModel : public MotionCostModel {
     if (py::function f = override_of(this, "carry_bound")) return returned<double>(f(from, to), "carry_bound");
     return 0.0;
   }
+
+ private:
+  // The query as Python sees it: a copy with thing_name and thing_class (None
+  // for a thing no scenario of this model's planners had, e.g. one a person added).
+  py::object named(const MotionQuery& q) const {
+    py::object o = py::cast(q);
+    if (auto it = things_.find(q.thing); it != things_.end()) {
+      o.attr("thing_name") = it->second.first;
+      o.attr("thing_class") = it->second.second;
+    }
+    return o;
+  }
+
+  std::map<std::uint64_t, std::pair<std::string, std::string>> things_;  // uid -> (name, class); written with the GIL
 };
 
 std::string join(const std::vector<std::string>& v) {
@@ -117,6 +142,7 @@ PlannerConfig planner_config(const world::Scenario& scenario, const std::string&
     throw py::type_error("Planner(): argument 'cost' must be a cost-model name (str) or a CostModel, not " +
                          py::str(py::type::handle_of(cost).attr("__name__")).cast<std::string>());
   o.model = cost.cast<std::shared_ptr<MotionCostModel>>();
+  if (auto* py_model = dynamic_cast<PyCostModel*>(o.model.get())) py_model->learn_things(scenario);
   o.cost = o.model->name();
   return PlannerConfig{std::move(o), PyRef(cost)};
 }
@@ -173,11 +199,15 @@ PlanView PyPlanner::plan() {
 }
 
 void bind_plan(py::module_& m) {
-  py::class_<MotionQuery>(m, "MotionQuery",
-                          "What a motion cost may depend on: the moved thing (stable id, container or not),\n"
-                          "the hand's point before the move, the thing's point and the destination's point\n"
-                          "([x, y, z] metres; points are location centres).")
-      .def(py::init<>())
+  py::class_<MotionQuery> query(m, "MotionQuery",
+                                "What a motion cost may depend on: the moved thing (stable id, container or not;\n"
+                                "thing_name and thing_class name it when the Planner's scenario has it), the hand's\n"
+                                "point before the move, the thing's point and the destination's point\n"
+                                "([x, y, z] metres; points are location centres).",
+                                py::dynamic_attr());
+  query.attr("thing_name") = py::none();   // set on the queries a planner passes to a CostModel
+  query.attr("thing_class") = py::none();
+  query.def(py::init<>())
       .def_readwrite("thing", &MotionQuery::thing, "Stable id of the moved thing.")
       .def_readwrite("container", &MotionQuery::container, "The moved thing is a container.")
       .def_readwrite("hand", &MotionQuery::hand, "The hand's point before the move.")

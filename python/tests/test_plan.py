@@ -87,6 +87,28 @@ def test_cost_model_survives_its_python_name(tray):
     assert p.plan().found
 
 
+def test_a_query_names_its_thing_and_class(tray):
+    """The planner's queries carry a stable id; the Python model sees the thing's name and class."""
+    seen = set()
+
+    class Naming(PyEuclid):
+        def cost(self, q):
+            seen.add((q.thing_name, q.thing_class, q.container))
+            return super().cost(q)
+
+        def depends(self):  # the thing too: every thing's moves are asked for
+            return rtamp.DEPENDS_THING | super().depends()
+
+    result = rtamp.Planner(tray, cost=Naming()).plan()
+    assert result.found
+    things = {(o.name, o.cls, False) for o in tray.objects} | {(c.name, c.cls, True) for c in tray.containers}
+    assert seen and seen <= things
+    assert {name for name, _, _ in seen} >= {a.thing for a in result.actions}
+    # A query made in Python names nothing until a planner fills it.
+    q = rtamp.MotionQuery()
+    assert q.thing_name is None and q.thing_class is None
+
+
 def test_replan_after_changes(tray):
     p = rtamp.Planner(tray, algorithm="astar-exp")
     first = p.plan()
