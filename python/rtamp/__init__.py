@@ -17,5 +17,9 @@ ValueError) with message, file, line and column. See docs/python.md.
 from rtamp._rtamp import *  # noqa: F401,F403
 from rtamp._rtamp import Error, __doc__ as _core_doc, __version__  # noqa: F401
 from rtamp import batch, bt, toy  # noqa: F401,E402
+from rtamp import _arguments, _rtamp
+
+_arguments.name_arguments(globals(), _rtamp)  # TypeErrors that name the argument
+del _arguments
 
 __all__ = [n for n in dir() if not n.startswith("_")]

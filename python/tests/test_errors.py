@@ -152,6 +152,30 @@ def test_a_wrong_argument_type_names_the_argument_and_its_type():
         rtamp.load_scenario(3)
 
 
+@pytest.mark.parametrize("call, text", [
+    (lambda s: rtamp.load_scenario(3), "load_scenario(): argument 'path_or_builtin' must be str, not int"),
+    (lambda s: rtamp.Planner(3), "Planner(): argument 'scenario' must be Scenario, not int"),
+    (lambda s: rtamp.Planner(s, algorithm=5), "Planner(): argument 'algorithm' must be str, not int"),
+    (lambda s: rtamp.Planner(s, time_limit="soon"), "Planner(): argument 'time_limit' must be float, not str"),
+    (lambda s: rtamp.Planner(s, bogus=1), "Planner(): unexpected keyword argument 'bogus'"),
+    (lambda s: rtamp.Planner(s, s), "Planner(): takes 1 positional argument but 2 were given"),
+])
+def test_a_wrong_argument_to_a_function_or_constructor_is_named(call, text):
+    s = rtamp.load_scenario("3-block")
+    with pytest.raises(TypeError) as e:
+        call(s)
+    first, _, rest = str(e.value).partition("\n")
+    assert first == text
+    assert "incompatible" in rest  # pybind11's signatures kept below
+
+
+def test_named_arguments_keep_the_functions_usable():
+    import pickle
+    assert pickle.loads(pickle.dumps(rtamp.load_scenario)) is rtamp.load_scenario
+    assert rtamp.load_scenario.__doc__.startswith("load_scenario(path_or_builtin: str)")
+    assert rtamp.Planner(rtamp.load_scenario("3-block"), time_limit=5).plan().found  # an int for a float
+
+
 def test_a_cost_that_is_neither_a_name_nor_a_cost_model_is_a_type_error():
     s = rtamp.load_scenario("3-block")
     with pytest.raises(TypeError, match=r"argument 'cost' must be a cost-model name \(str\) or a CostModel, not int"):

@@ -1,0 +1,133 @@
+"""Pythonic TypeErrors for calls into the compiled core.
+
+pybind11 answers a call whose argument types match no signature with
+"incompatible function arguments. The following argument types are
+supported: ..." and the whole signature. For the module's functions and its
+classes' constructors this names the argument instead:
+"load_scenario(): argument 'path_or_builtin' must be str, not int", with
+pybind11's text kept below it. Only a definite mismatch against a single
+signature is renamed (builtin types and the module's own classes); anything
+else (overloads, container types) keeps pybind11's message unchanged.
+"""
+
+import functools
+
+_INCOMPATIBLE = ("incompatible function arguments", "incompatible constructor arguments")
+
+
+def _split_top_level(text):
+    """Split a parameter list at the commas outside brackets and quotes."""
+    parts, depth, quote, start = [], 0, None, 0
+    for i, c in enumerate(text):
+        if quote:
+            if c == quote:
+                quote = None
+        elif c in "'\"":
+            quote = c
+        elif c in "([{":
+            depth += 1
+        elif c in ")]}":
+            depth -= 1
+        elif c == "," and depth == 0:
+            parts.append(text[start:i].strip())
+            start = i + 1
+    if text[start:].strip():
+        parts.append(text[start:].strip())
+    return parts
+
+
+def _parameters(doc):
+    """(positional names, keyword-only names, name -> type) of a one-signature docstring, or None."""
+    if not doc:
+        return None
+    first = doc.splitlines()[0]
+    if "(*args, **kwargs)" in first or "(" not in first:
+        return None
+    inner = first[first.index("(") + 1:first.rindex(")")] if ")" in first else ""
+    positional, keyword_only, types, star = [], [], {}, False
+    for p in _split_top_level(inner):
+        if p == "*":
+            star = True
+            continue
+        name, _, rest = p.partition(":")
+        name = name.strip()
+        types[name] = rest.split("=")[0].strip() if "=" in rest else rest.strip()
+        (keyword_only if star else positional).append(name)
+    if positional and positional[0] == "self":
+        positional = positional[1:]
+    return positional, keyword_only, types
+
+
+def _accepts(type_name, value, core):
+    """True / False when pybind11 would (not) convert `value` to the type, None when this cannot tell."""
+    if type_name == "object":
+        return True
+    if type_name == "str":
+        return isinstance(value, (str, bytes))
+    if type_name == "float":
+        return hasattr(value, "__float__") or hasattr(value, "__index__")
+    if type_name == "int":
+        return not isinstance(value, float) and (hasattr(value, "__index__") or hasattr(value, "__int__"))
+    if type_name == "bool":  # pybind11 converts any number and None to bool
+        return False if isinstance(value, (str, bytes, list, tuple, dict)) else None
+    if type_name.startswith(core.__name__ + "."):
+        cls = getattr(core, type_name[len(core.__name__) + 1:], None)
+        return isinstance(value, cls) if isinstance(cls, type) else None
+    return None
+
+
+def _renamed(what, doc, args, kwargs, core, error):
+    """The TypeError naming the argument, or None when it cannot be told."""
+    params = _parameters(doc)
+    if params is None:
+        return None
+    positional, keyword_only, types = params
+    if len(args) > len(positional):
+        return TypeError(f"{what}(): takes {len(positional)} positional argument"
+                         f"{'' if len(positional) == 1 else 's'} but {len(args)} were given\n{error}")
+    given = dict(zip(positional, args))
+    for name, value in kwargs.items():
+        if name not in types or name == "self":
+            return TypeError(f"{what}(): unexpected keyword argument '{name}'\n{error}")
+        given[name] = value
+    for name, value in given.items():
+        expected = types[name]
+        if _accepts(expected, value, core) is False:
+            shown = expected[len(core.__name__) + 1:] if expected.startswith(core.__name__ + ".") else expected
+            return TypeError(f"{what}(): argument '{name}' must be {shown}, not {type(value).__name__}\n{error}")
+    return None
+
+
+def _wrap(function, shown, skip, core):
+    """`function` raising the renamed TypeError; `shown`: its name in messages; `skip`: leading args not in
+    the signature's list (the instance of a constructor)."""
+    doc = function.__doc__
+
+    @functools.wraps(function)
+    def call(*args, **kwargs):
+        try:
+            return function(*args, **kwargs)
+        except TypeError as e:
+            text = str(e)
+            if not any(s in text for s in _INCOMPATIBLE):
+                raise
+            better = _renamed(shown, doc, args[skip:], kwargs, core, text)
+            if better is None:
+                raise
+            raise better from None
+    if skip == 0:  # pickled by reference as rtamp.NAME (Dask ships functions so)
+        call.__module__, call.__qualname__ = "rtamp", shown
+    return call
+
+
+def name_arguments(namespace, core):
+    """Wrap the core's functions in `namespace` and its classes' constructors."""
+    for name, value in list(namespace.items()):
+        if name.startswith("_") or getattr(value, "__module__", None) != core.__name__:
+            continue
+        if type(value).__name__ == "builtin_function_or_method":
+            namespace[name] = _wrap(value, name, 0, core)
+        elif isinstance(value, type) and "__init__" in vars(value):
+            init = vars(value)["__init__"]
+            if type(init).__name__ == "instancemethod":
+                value.__init__ = _wrap(init, name, 1, core)
