@@ -2,12 +2,16 @@
 
 pybind11 answers a call whose argument types match no signature with
 "incompatible function arguments. The following argument types are
-supported: ..." and the whole signature. For the module's functions and its
-classes' constructors this names the argument instead:
+supported: ..." and the whole signature. For the module's functions, its
+classes' constructors, static methods and methods this names the argument instead:
 "load_scenario(): argument 'path_or_builtin' must be str, not int", with
 pybind11's text kept below it. Only a definite mismatch against a single
 signature is renamed (builtin types and the module's own classes); anything
 else (overloads, container types) keeps pybind11's message unchanged.
+The methods of classes Python code overrides (World, EpisodeObserver,
+CostModel and their subclasses) are left alone: pybind11 finds an override
+by looking for a method that is not its own, so a wrapper there would be
+taken for one.
 """
 
 import functools
@@ -115,19 +119,27 @@ def _wrap(function, shown, skip, core):
             if better is None:
                 raise
             raise better from None
-    if skip == 0:  # pickled by reference as rtamp.NAME (Dask ships functions so)
+    if skip == 0 and "." not in shown:  # pickled by reference as rtamp.NAME (Dask ships functions so)
         call.__module__, call.__qualname__ = "rtamp", shown
     return call
 
 
 def name_arguments(namespace, core):
-    """Wrap the core's functions in `namespace` and its classes' constructors."""
+    """Wrap the core's functions in `namespace` and its classes' constructors and methods."""
+    overridden = tuple(getattr(core, n) for n in ("World", "EpisodeObserver", "CostModel") if hasattr(core, n))
     for name, value in list(namespace.items()):
         if name.startswith("_") or getattr(value, "__module__", None) != core.__name__:
             continue
         if type(value).__name__ == "builtin_function_or_method":
             namespace[name] = _wrap(value, name, 0, core)
-        elif isinstance(value, type) and "__init__" in vars(value):
-            init = vars(value)["__init__"]
-            if type(init).__name__ == "instancemethod":
-                value.__init__ = _wrap(init, name, 1, core)
+        elif isinstance(value, type):
+            for attr, member in list(vars(value).items()):
+                kind = type(member).__name__
+                if attr == "__init__" and kind == "instancemethod":
+                    value.__init__ = _wrap(member, name, 1, core)
+                elif attr.startswith("_") or issubclass(value, overridden):
+                    continue
+                elif kind == "instancemethod":
+                    setattr(value, attr, _wrap(member, f"{name}.{attr}", 1, core))
+                elif kind == "staticmethod":
+                    setattr(value, attr, staticmethod(_wrap(member.__func__, f"{name}.{attr}", 0, core)))

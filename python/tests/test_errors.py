@@ -159,6 +159,8 @@ def test_a_wrong_argument_type_names_the_argument_and_its_type():
     (lambda s: rtamp.Planner(s, time_limit="soon"), "Planner(): argument 'time_limit' must be float, not str"),
     (lambda s: rtamp.Planner(s, bogus=1), "Planner(): unexpected keyword argument 'bogus'"),
     (lambda s: rtamp.Planner(s, s), "Planner(): takes 1 positional argument but 2 were given"),
+    (lambda s: rtamp.Planner(s).forbid_move(1, "r2"), "Planner.forbid_move(): argument 'thing' must be str, not int"),
+    (lambda s: rtamp.Change.add_object(3, "block", "r1"), "Change.add_object(): argument 'object' must be str, not int"),
 ])
 def test_a_wrong_argument_to_a_function_or_constructor_is_named(call, text):
     s = rtamp.load_scenario("3-block")
