@@ -73,6 +73,17 @@ def test_hoa_error_location():
     assert e.value.file == "x.hoa" and e.value.line == 3
 
 
+def test_hoa_names_must_be_utf8(tmp_path):
+    """A name that is not UTF-8 is refused where it is, not a UnicodeDecodeError in every accessor later."""
+    p = tmp_path / "latin1.hoa"
+    p.write_bytes(b'HOA: v1\nStates: 1\nStart: 0\nAP: 1 "caf\xe9"\nAcceptance: 0 t\n--BODY--\nState: 0\n[0] 0\n--END--\n')
+    with pytest.raises(rtamp.Error, match="not UTF-8") as e:
+        rtamp.read_hoa_file(str(p))
+    assert (e.value.line, e.value.column) == (4, 7)
+    with pytest.raises(rtamp.Error, match="it is a directory"):
+        rtamp.read_hoa_file(str(tmp_path))
+
+
 def test_dot_and_never_claim():
     a = rtamp.translate("G F a")
     dot = a.to_dot()

@@ -620,8 +620,27 @@ void option_cases(std::vector<Case>& t) {
   t.push_back({"options", {"plan", "3-block", "extra", "more"}, "unexpected argument 'extra' (and 1 more)", ""});
 }
 
+// Behavior-tree files that BehaviorTree.CPP itself would refuse.
+void bt_cases(std::vector<Case>& t) {
+  auto add = [&](const std::string& xml, int line, const std::string& word, const std::string& what) {
+    const std::string p = file(xml, ".xml");
+    t.push_back({"bt", {"bt", "check", p}, at(p, xml, line, word), what});
+  };
+  const std::string head = "<root BTCPP_format=\"4\">\n<BehaviorTree ID=\"T\"><Go/></BehaviorTree>\n<TreeNodesModel>\n";
+  add("<root BTCPP_format=\"4\">\n<BehaviorTree ID=\"T\">\n  <Parallel success_count=\"5\"><Go/><Go/></Parallel>\n"
+      "</BehaviorTree>\n<TreeNodesModel><Action ID=\"Go\"/></TreeNodesModel>\n</root>\n",
+      3, "<Parallel", "more than its 2 children");
+  add(head + "<Action ID=\"Go\"/>\n<Condition ID=\"Go\"/>\n</TreeNodesModel>\n</root>\n", 5, "<Condition",
+      "'Go' is declared twice in <TreeNodesModel>");
+  add(head + "<Action ID=\"Go\"><input_port name=\"bad name\"/></Action>\n</TreeNodesModel>\n</root>\n", 4, "<input_port",
+      "port name 'bad name' in the model of 'Go' is not allowed");
+  add("<?xml version=\"1.0\" encoding=\"UTF-16\"?>\n" + head + "<Action ID=\"Go\"/>\n</TreeNodesModel>\n</root>\n", 1,
+      "<?xml", "names encoding \"UTF-16\"");
+}
+
 std::vector<Case> table() {
   std::vector<Case> t;
+  bt_cases(t);
   yaml_cases(t);
   task_cases(t);
   change_cases(t);
