@@ -245,7 +245,9 @@ class Importer {
       const long failure = integer(e, ports, "failure_count", 1, INT_MIN);
       // BehaviorTree.CPP refuses a threshold written above the number of children (it could never be met).
       const long n = static_cast<long>(e.children.size());
-      for (const auto& [port, value] : {std::pair{"success_count", success}, std::pair{"failure_count", failure}}) {
+      for (const auto& threshold : {std::pair{"success_count", success}, std::pair{"failure_count", failure}}) {
+        const char* port = threshold.first;
+        const long value = threshold.second;
         const bool written = std::any_of(ports.begin(), ports.end(), [&](const Port& p) { return p.name == port; });
         if (written && value > n) {
           fail(e, std::string("port ") + port + "=\"" + std::to_string(value) + "\" of <Parallel> is more than its " +
