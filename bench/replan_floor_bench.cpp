@@ -31,7 +31,7 @@
 #include <vector>
 
 #include "rtamp/plan/planner.hpp"
-#include "rtamp/plan/search.hpp"
+#include "rtamp/plan/lasso_search.hpp"
 #include "rtamp/world/scenario_io.hpp"
 
 namespace {

@@ -10,7 +10,7 @@
 #include "rtamp/exec/plan_tree.hpp"
 #include "rtamp/exec/reactive_loop.hpp"
 #include "rtamp/exec/symbolic_world.hpp"
-#include "rtamp/plan/search.hpp"
+#include "rtamp/plan/algorithm.hpp"
 #include "rtamp/util/names_table.hpp"
 #include "rtamp/world/scenario.hpp"
 

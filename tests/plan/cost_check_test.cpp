@@ -2,7 +2,7 @@
 // a NaN or negative cost, and a NaN, infinite or negative bound, is an
 // rtamp::Error out of Planner::plan naming the model, the edge and the value,
 // for every algorithm and graph construction; +infinity is a move the model
-// cannot do. And the limits of a query (plan/search.hpp SearchLimits): the
+// cannot do. And the limits of a query (plan/termination.hpp SearchLimits): the
 // memory limit and the node limit stop it with their own reason and a message
 // that says a plan may still exist.
 #include <gtest/gtest.h>

@@ -9,7 +9,7 @@
 
 #include "rtamp/plan/plan.hpp"
 #include "rtamp/plan/product_graph.hpp"
-#include "rtamp/plan/search.hpp"
+#include "rtamp/plan/lasso_search.hpp"
 
 namespace rtamp::plan {
 

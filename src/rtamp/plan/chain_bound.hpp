@@ -18,7 +18,7 @@
 // overlap); the first forcing guard c1 costs LB(s, c1) from the start state s.
 // A lasso through an accepting node with automaton state qa also pays, in its
 // cycle, the D-sum around some automaton cycle through qa: kappa(qa) = the
-// least such sum. The prefix may join the cycle anywhere (plan/search.hpp),
+// least such sum. The prefix may join the cycle anywhere (plan/lasso_search.hpp),
 // so the path to qa and the cycle may share their stretch from the join to
 // qa: the lasso costs at least max(path to qa, kappa(qa)), not their sum.
 // So, with the graph G over (automaton state q, last forcing guard l or none)

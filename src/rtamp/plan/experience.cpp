@@ -63,6 +63,32 @@ void Experience::set_solved(Node n, double value, std::uint32_t moves, std::uint
   solved_moves_[n] = moves;
 }
 
+void Experience::record_search(const std::vector<std::pair<Node, double>>& closed, bool found,
+                               const std::vector<PrefixStep>& prefix, Node join, double cycle_cost,
+                               std::uint32_t cycle_moves) {
+  double total = std::numeric_limits<double>::infinity();
+  std::uint32_t total_m = cycle_moves;
+  if (found) {
+    double prefix_cost = 0;  // summed as the lasso's prefix cost is
+    for (const PrefixStep& s : prefix) {
+      prefix_cost += s.cost;
+      total_m += s.move ? 1 : 0;
+    }
+    total = prefix_cost + cycle_cost;
+  }
+  for (const auto& [n, g] : closed)
+    if (!solved(n)) learn(n, total - g);
+  if (!found) return;
+  double gx = 0;
+  std::uint32_t mx = 0;
+  for (const PrefixStep& s : prefix) {
+    if (!solved(s.node)) set_solved(s.node, total - gx, total_m - mx, s.edge);
+    gx += s.cost;
+    mx += s.move ? 1 : 0;
+  }
+  if (!solved(join)) set_solved(join, cycle_cost, cycle_moves, kViaCycle);
+}
+
 void Experience::cache_h(Node n, double v) {
   reach(hcache_, n, kUnknownH);
   hcache_[n] = v;

@@ -18,7 +18,8 @@
 //        lasso and its first edge;
 //      the guard heuristic's value per node (it does not depend on the start).
 // Why each value stays correct across queries with other start nodes, and how
-// the lasso search uses them: plan/search.hpp. A cold query (dijkstra, astar)
+// the lasso search uses them: docs/planning.md; record_search() is how a
+// finished search writes them back. A cold query (dijkstra, astar)
 // gives its throw-away graph a fresh Experience, so its cycle table lives for
 // that query only.
 // Costs are compared lexicographically as (motion cost, number of moves).
@@ -28,6 +29,7 @@
 
 #include <cstdint>
 #include <limits>
+#include <utility>
 #include <vector>
 
 #include "rtamp/plan/motion_cost_cache.hpp"
@@ -77,6 +79,24 @@ class Experience {
   // moves (the lexicographic minimum) and starts with edge `via`.
   void set_solved(Node n, double value, std::uint32_t moves, std::uint32_t via);
   std::uint32_t solved_moves(Node n) const { return n < solved_moves_.size() ? solved_moves_[n] : 0; }
+
+  // What one finished lasso search learned (total: its lasso's cost, kInf if
+  // it found none — then none exists). Every closed node n not solved gets
+  // learned(n) >= total - g(n), g(n) its cost from the start: a cheaper lasso
+  // through n would have been found. With a lasso, every node of its prefix
+  // (from the start, each with its edge) and the join node become solved: the
+  // lasso is optimal in (cost, moves), so the rest of it achieves the best
+  // value from each exactly. Nodes solved earlier keep their via edge, so via
+  // chains only lead to nodes solved no later and, among nodes solved
+  // together, along one simple path: following via() ends.
+  struct PrefixStep {
+    Node node;           // where the edge leaves from
+    std::uint32_t edge;  // its index in the graph
+    double cost;
+    bool move;           // not a stay
+  };
+  void record_search(const std::vector<std::pair<Node, double>>& closed, bool found,
+                     const std::vector<PrefixStep>& prefix, Node join, double cycle_cost, std::uint32_t cycle_moves);
 
   // The guard heuristic's value at n (kUnknownH if not computed yet).
   static constexpr double kUnknownH = -1.0;

@@ -4,7 +4,7 @@
 
 #include <algorithm>
 
-#include "rtamp/plan/search.hpp"
+#include "rtamp/plan/termination.hpp"
 
 namespace rtamp::plan {
 

@@ -33,7 +33,7 @@ struct LassoExistence {
 };
 
 // From (ts.initial(), q) for each q in `starts`. `max_nodes` 0: no limit;
-// `deadline_ns` 0: none (plan/search.hpp's steady_now_ns()).
+// `deadline_ns` 0: none (plan/termination.hpp's steady_now_ns()).
 LassoExistence find_accepting_lasso(const task::System& ts, const task::Labeling& lab, const automata::Automaton& ba,
                                     const std::vector<std::uint32_t>& starts, std::size_t max_nodes,
                                     std::int64_t deadline_ns);

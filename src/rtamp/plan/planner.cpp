@@ -227,6 +227,33 @@ NoPlanReason limit_reason(const Stopped& stop) {
   return NoPlanReason::TimeLimit;
 }
 
+// The limits a query's search runs under: the options', with progress
+// reported from the query's start (the search counts from its own).
+SearchLimits search_limits(const PlannerOptions& opt, const QueryClock& clock) {
+  SearchLimits limits = opt.limits;
+  if (limits.on_progress) {
+    const double offset = clock.since_start(steady_now_ns());
+    limits.on_progress = [report = opt.limits.on_progress, offset](SearchProgress p) {
+      p.seconds += offset;
+      report(p);
+    };
+  }
+  return limits;
+}
+
+// The graph's share of a query's statistics, after it.
+void record_graph(SearchStats& stats, const ProductGraph& g, std::size_t before, std::uint64_t expansions_before,
+                  const Stopped& stop) {
+  stats.successor_generations = g.expansions() - expansions_before;
+  stats.generated = g.size() - before;
+  stats.graph_nodes = g.size();
+  stats.graph_edges = g.num_edges();
+  stats.impossible_moves = g.impossible_moves();
+  stats.hit_node_limit = stop.node;
+  stats.hit_time_limit = stop.time;
+  stats.hit_memory_limit = stop.memory;
+}
+
 }  // namespace
 
 ProductGraph& Planner::kept_graph(task::System& ts, task::Labeling& lab, const PlannerOptions& opt) {
@@ -247,6 +274,45 @@ ProductGraph& Planner::kept_graph(task::System& ts, task::Labeling& lab, const P
   return *graph_;
 }
 
+// The graph, experience, search and heuristic of one query: the kept ones, or cold ones.
+struct Planner::QueryParts {
+  std::unique_ptr<ProductGraph> cold_graph;
+  std::unique_ptr<Experience> cold_experience;
+  std::unique_ptr<LassoSearch> cold_search;
+  std::unique_ptr<Heuristic> cold_heuristic;
+  ProductGraph* g = nullptr;
+  Experience* x = nullptr;
+  LassoSearch* search = nullptr;
+  Heuristic* h = nullptr;  // made when the search starts (after the full construction)
+};
+
+Planner::QueryParts Planner::query_parts(task::System& ts, task::Labeling& lab, const PlannerOptions& opt,
+                                         Experienced experienced) {
+  QueryParts q;
+  if (experienced == Experienced::Kept) {
+    q.g = &kept_graph(ts, lab, opt);
+    q.x = &experience_;
+    q.search = &search_;
+    q.h = exp_heuristic_.get();
+    experience_.costs().reset_counters();
+  } else {
+    q.cold_graph = std::make_unique<ProductGraph>(ts, lab, ba_, *model_, nullptr);
+    q.cold_experience = std::make_unique<Experience>();
+    q.cold_search = std::make_unique<LassoSearch>();
+    q.g = q.cold_graph.get();
+    q.x = q.cold_experience.get();
+    q.search = q.cold_search.get();
+  }
+  return q;
+}
+
+std::vector<NodeId> Planner::start_nodes(ProductGraph& g, const task::System& ts) const {
+  std::vector<NodeId> starts;
+  for (const std::uint32_t q : ba_starts_)
+    if (g.useful(q)) starts.push_back(g.find_or_add(ts.canonical(ts.initial()), q));
+  return starts;
+}
+
 PlanResult Planner::search(task::System& ts, task::Labeling& lab, const PlannerOptions& opt, Experienced experienced) {
   PlanResult res;
   const QueryClock clock(opt.limits.time_limit);
@@ -254,37 +320,16 @@ PlanResult Planner::search(task::System& ts, task::Labeling& lab, const PlannerO
     return clock.finish(std::move(res), NoPlanReason::UnknownName,
                         "the task uses '" + lab.unknown_atoms().front() +
                             "', which is neither a proposition of the scenario nor a proposition expression");
-  // The graph, experience and search of this query: the kept ones, or cold ones.
-  const bool exp = experienced == Experienced::Kept;
-  std::unique_ptr<ProductGraph> cold_graph;
-  std::unique_ptr<Experience> cold_experience;
-  std::unique_ptr<LassoSearch> cold_search;
-  std::unique_ptr<Heuristic> cold_heuristic;
-  MotionCostCache& cache = experience_.costs();
-  ProductGraph* g = nullptr;
-  Experience* x = &experience_;
-  LassoSearch* ls = &search_;
-  if (exp) {
-    g = &kept_graph(ts, lab, opt);
-    cache.reset_counters();
-  } else {
-    cold_graph = std::make_unique<ProductGraph>(ts, lab, ba_, *model_, nullptr);
-    cold_experience = std::make_unique<Experience>();
-    cold_search = std::make_unique<LassoSearch>();
-    g = cold_graph.get();
-    x = cold_experience.get();
-    ls = cold_search.get();
-  }
-  if (ba_.num_states() == 0 || !g->useful(ba_.initial))
+  QueryParts q = query_parts(ts, lab, opt, experienced);
+  ProductGraph& g = *q.g;
+  if (ba_.num_states() == 0 || !g.useful(ba_.initial))
     return clock.finish(std::move(res), NoPlanReason::Unsatisfiable,
                         "the task is unsatisfiable: its Büchi automaton accepts no word");
-  const std::size_t before = g->size();
-  std::vector<NodeId> starts;
-  for (const std::uint32_t q : ba_starts_)
-    if (g->useful(q)) starts.push_back(g->find_or_add(ts.canonical(ts.initial()), q));
+  const std::size_t before = g.size();
+  const std::vector<NodeId> starts = start_nodes(g, ts);
   if (starts.empty()) {
     std::string list;
-    for (const std::uint32_t q : ba_starts_) list += (list.empty() ? "" : ", ") + std::to_string(q);
+    for (const std::uint32_t b : ba_starts_) list += (list.empty() ? "" : ", ") + std::to_string(b);
     return clock.finish(std::move(res), NoPlanReason::NoAcceptingCycle,
                         "no accepting lasso is possible: from none of the automaton states the run is in {" + list +
                             "} can the automaton still reach an accepting cycle");
@@ -292,45 +337,31 @@ PlanResult Planner::search(task::System& ts, task::Labeling& lab, const PlannerO
   res.stats.reused_nodes = before;
   std::uint64_t built = 0;  // nodes the full construction expanded
   Stopped stop;
-  if (opt.graph == GraphConstruction::Full) stop = construct_full(*g, starts, opt, clock, built, res.stats);
+  if (opt.graph == GraphConstruction::Full) stop = construct_full(g, starts, opt, clock, built, res.stats);
   LassoResult r;
-  const std::uint64_t exp0 = g->expansions();
+  const std::uint64_t expansions_before = g.expansions();
   if (!stop.any()) {
-    Heuristic* h = exp_heuristic_.get();
-    if (!exp) {
-      cold_heuristic = algorithm_info(opt.algorithm).make_heuristic(*g, *x);
-      h = cold_heuristic.get();
+    if (!q.h) {
+      q.cold_heuristic = algorithm_info(opt.algorithm).make_heuristic(g, *q.x);
+      q.h = q.cold_heuristic.get();
     }
-    const bool astar = opt.algorithm != Algorithm::Dijkstra;
-    SearchLimits limits = opt.limits;
-    if (limits.on_progress) {  // the search counts from its own start; report from the query's
-      const double offset = clock.since_start(steady_now_ns());
-      limits.on_progress = [report = opt.limits.on_progress, offset](SearchProgress p) {
-        p.seconds += offset;
-        report(p);
-      };
-    }
-    r = ls->run(*g, *x, starts, *h, LassoConfig{astar, exp}, Termination{limits, clock.deadline}, res.stats);
+    const LassoConfig config{opt.algorithm != Algorithm::Dijkstra, experienced == Experienced::Kept};
+    const Termination termination{search_limits(opt, clock), clock.deadline};
+    r = q.search->run(g, *q.x, starts, *q.h, config, termination, res.stats);
     stop = {r.hit_node_limit, r.hit_time_limit, r.hit_memory_limit};
   }
-  res.stats.successor_generations = g->expansions() - exp0;
-  res.stats.generated = g->size() - before;
-  res.stats.graph_nodes = g->size();
-  res.stats.graph_edges = g->num_edges();
-  res.stats.impossible_moves = g->impossible_moves();
-  res.stats.hit_node_limit = stop.node;
-  res.stats.hit_time_limit = stop.time;
-  res.stats.hit_memory_limit = stop.memory;
-  if (exp && model_->expensive()) {
+  record_graph(res.stats, g, before, expansions_before, stop);
+  MotionCostCache& cache = experience_.costs();
+  if (experienced == Experienced::Kept && model_->expensive()) {
     res.stats.cache_used = true;
     res.stats.cache_hits = cache.hits();
     res.stats.cache_misses = cache.misses();
   }
-  res.stats.memory_bytes =
-      g->memory_bytes() + x->memory_bytes() + ls->memory_bytes() + (res.stats.cache_used ? cache.bytes() : 0);
+  res.stats.memory_bytes = g.memory_bytes() + q.x->memory_bytes() + q.search->memory_bytes() +
+                           (res.stats.cache_used ? cache.bytes() : 0);
   if (r.found) {
     res.found = true;
-    res.plan = replay_lasso(*g, r);
+    res.plan = replay_lasso(g, r);
     res.stats.seconds = clock.since_start(steady_now_ns());
     return res;
   }

@@ -41,7 +41,8 @@
 #include "rtamp/plan/plan.hpp"
 #include "rtamp/plan/product_graph.hpp"
 #include "rtamp/plan/registry.hpp"
-#include "rtamp/plan/search.hpp"
+#include "rtamp/plan/algorithm.hpp"
+#include "rtamp/plan/lasso_search.hpp"
 #include "rtamp/task/labeling.hpp"
 #include "rtamp/task/transition_system.hpp"
 #include "rtamp/world/placement.hpp"
@@ -136,6 +137,10 @@ class Planner {
   // `opt`: the graph, the start nodes, the full construction if asked, the
   // lasso search, the statistics, the plan replayed on concrete states.
   PlanResult search(task::System& ts, task::Labeling& lab, const PlannerOptions& opt, Experienced experienced);
+  struct QueryParts;
+  QueryParts query_parts(task::System& ts, task::Labeling& lab, const PlannerOptions& opt, Experienced experienced);
+  // The product nodes (initial state, q) for the automaton states the run may be in, where useful.
+  std::vector<NodeId> start_nodes(ProductGraph& g, const task::System& ts) const;
   // The kept product graph for `ts` (made, or dropped and remade when it holds
   // half the memory limit).
   ProductGraph& kept_graph(task::System& ts, task::Labeling& lab, const PlannerOptions& opt);

@@ -26,7 +26,7 @@
 #include "rtamp/plan/experience.hpp"
 #include "rtamp/plan/heuristic.hpp"
 #include "rtamp/plan/motion_cost.hpp"
-#include "rtamp/plan/search.hpp"
+#include "rtamp/plan/algorithm.hpp"
 #include "rtamp/world/scenario.hpp"
 
 namespace rtamp::plan {
