@@ -2,11 +2,14 @@
 
 
 #include "rtamp/automata/degeneralize.hpp"
+#include "rtamp/automata/emptiness.hpp"
 #include "rtamp/automata/gba.hpp"
+#include "rtamp/automata/product.hpp"
 #include "rtamp/automata/reduce.hpp"
 #include "rtamp/automata/shortcuts.hpp"
 #include "rtamp/automata/simulation_reduction.hpp"
 #include "rtamp/automata/vwaa.hpp"
+#include "rtamp/automata/wdba.hpp"
 #include "rtamp/ltl/printer.hpp"
 #include "rtamp/ltl/simplify.hpp"
 
@@ -63,6 +66,27 @@ Automaton pipeline(Automaton a, const TranslateOptions& opt) {
   return a;
 }
 
+// Replaces `a` (the automaton of `input`, over its atoms) by its minimal WDBA
+// when that is no larger and both inclusions are checked: L(a) ⊆ L(W) by
+// emptiness of a × complement(W), L(W) ⊆ L(input) by emptiness of W × A_!input.
+void try_wdba(Automaton& a, const Formula& input, const TranslateOptions& opt) {
+  const std::optional<Automaton> w = minimize_wdba(a, 8 * std::size_t{a.num_states()} + 32);
+  if (!w) return;
+  Automaton small = *w;
+  remove_useless(small);
+  if (small.num_states() > a.num_states()) return;
+  if (!is_empty(product(a, complement_dba(*w)))) return;
+  TranslateOptions neg = opt;
+  neg.wdba = false;
+  neg.state_based = false;
+  if (!is_empty(product(small, translate(Formula::Not(input), neg)))) return;
+  if (!opt.state_based) {
+    small.state_based = false;
+    canonicalize_acceptance(small);
+  }
+  a = std::move(small);
+}
+
 }  // namespace
 
 Automaton translate(const ltl::Formula& input, const TranslateOptions& opt) {
@@ -115,6 +139,7 @@ Automaton translate(const ltl::Formula& input, const TranslateOptions& opt) {
     a.atoms = atoms;
   }
   if (a.state_based) a.num_sets = 1;
+  if (opt.wdba && !done) try_wdba(a, input, opt);
   a.name = ltl::to_string(input);
   return a;
 }
