@@ -59,6 +59,11 @@ TEST(LtlSimplify, Rules) {
   expect("F(a | b)", "F a | F b");
   expect("G(a & b)", "G a & G b");
   expect("G F a & G F b", "G F a & G F b");
+  expect("G F(a | b)", "G F(a | b)");
+  expect("G(F a | F b | X c)", "G(F(a | b) | X c)");
+  expect("F G(a & b)", "F G(a & b)");
+  expect("F(G a & G b & X c)", "F(G(a & b) & X c)");
+  expect("G(F a | F X b)", "G(F a | X F b)");
   expect("F X a", "X F a");
   expect("G X a", "X G a");
   expect("F(a U b)", "F b");
