@@ -15,6 +15,7 @@
 #include "rtamp/ltl/lasso.hpp"
 #include "rtamp/ltl/parser.hpp"
 #include "rtamp/ltl/random.hpp"
+#include "rtamp/util/error.hpp"
 #include "rtamp_source_dir.hpp"
 
 namespace rtamp::automata {
@@ -54,7 +55,15 @@ void check_file(const std::string& file, std::size_t expected_count) {
       opt.state_based = variant & 1;
       opt.reduce = variant & 2;
       opt.construction = static_cast<Construction>(variant / 4);
-      const Automaton a = translate(f, opt);
+      Automaton a;
+      try {
+        a = translate(f, opt);
+      } catch (const Error&) {
+        // Past the resource bounds only without the reductions or with the
+        // merged-destination construction alone (hkrss's X-chain of 13).
+        ASSERT_TRUE(!opt.reduce || opt.construction == Construction::MergedDestinations) << text;
+        continue;
+      }
       for (const auto& w : ws)
         ASSERT_EQ(lasso_accept(a, test::to_word(a, w)), ltl::holds(f, w))
             << text << " word " << ltl::to_string(w) << " state_based=" << opt.state_based << " reduce=" << opt.reduce;
@@ -78,11 +87,11 @@ TEST(TranslatePatterns, FamilySizeTable) {
     std::size_t spot;
     std::size_t bound;
   };
-  const Family families[] = {{"dac-patterns.ltl", 214, 243},
-                             {"eh-patterns.ltl", 43, 1000},
-                             {"p-patterns.ltl", 50, 1000},
-                             {"sb-patterns.ltl", 81, 1000},
-                             {"hkrss-patterns.ltl", 224, 1000}};
+  const Family families[] = {{"dac-patterns.ltl", 214, 223},
+                             {"eh-patterns.ltl", 43, 48},
+                             {"p-patterns.ltl", 50, 59},
+                             {"sb-patterns.ltl", 81, 88},
+                             {"hkrss-patterns.ltl", 224, 230}};
   std::printf("%-20s %9s %9s %9s %9s\n", "family", "formulas", "states", "det", "Spot -B");
   for (const Family& fam : families) {
     const auto formulas = read_formulas(fam.file);
@@ -117,7 +126,7 @@ TEST(TranslatePatterns, DwyerSizeTable) {
                 tg.num_edges(), std::chrono::duration<double, std::micro>(t1 - t0).count(), formulas[i].c_str());
   }
   std::printf("total BA %zu states %zu edges; TGBA %zu states %zu edges\n", states, edges, tstates, tedges);
-  EXPECT_LE(states, 300u);
+  EXPECT_LE(states, 223u);
 }
 
 }  // namespace
