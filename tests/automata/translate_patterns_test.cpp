@@ -21,14 +21,6 @@
 namespace rtamp::automata {
 namespace {
 
-bool is_deterministic(const Automaton& a) {
-  for (const auto& out : a.edges)
-    for (std::size_t i = 0; i < out.size(); ++i)
-      for (std::size_t j = i + 1; j < out.size(); ++j)
-        if (!(out[i].guard & out[j].guard).is_false()) return false;
-  return true;
-}
-
 std::vector<std::string> read_formulas(const std::string& file) {
   std::ifstream in(std::string(RTAMP_SOURCE_DIR) + "/tests/data/" + file);
   std::vector<std::string> out;

@@ -13,6 +13,7 @@ namespace rtamp::automata {
 namespace {
 
 constexpr unsigned kMaxLetterBits = 12;
+constexpr std::size_t kMaxTableWords = std::size_t{1} << 22;  // successor table: 32 MiB
 
 // A complete deterministic automaton over the 2^k letters of the used atoms.
 struct Table {
@@ -36,6 +37,8 @@ struct Table {
   }
 };
 
+// Subsets are bitsets of `words` 64-bit words; succ[q][l] is the set of
+// successors of q on letter l.
 std::optional<Table> subset_construction(const Automaton& a, std::size_t max_states) {
   Table t;
   Letter mentioned = 0;
@@ -45,29 +48,37 @@ std::optional<Table> subset_construction(const Automaton& a, std::size_t max_sta
     if ((mentioned >> i) & 1u) t.used.push_back(i);
   if (t.used.size() > kMaxLetterBits) return std::nullopt;
   t.letters = std::uint32_t{1} << t.used.size();
-  std::map<std::vector<std::uint32_t>, std::uint32_t> id;
-  std::vector<std::vector<std::uint32_t>> sets;
-  auto intern = [&](std::vector<std::uint32_t> s) {
+  const std::size_t n = a.num_states(), words = (n + 63) / 64;
+  if (n * t.letters * words > kMaxTableWords) return std::nullopt;
+  using Set = std::vector<std::uint64_t>;
+  std::vector<std::uint64_t> succ(n * t.letters * words, 0);  // [q][l][word]
+  for (std::uint32_t l = 0; l < t.letters; ++l) {
+    const Letter letter = t.expand(l);
+    for (std::size_t q = 0; q < n; ++q)
+      for (const Edge& e : a.edges[q])
+        if (e.guard.matches(letter)) succ[(q * t.letters + l) * words + e.dst / 64] |= std::uint64_t{1} << (e.dst % 64);
+  }
+  std::map<Set, std::uint32_t> id;
+  std::vector<Set> sets;
+  auto intern = [&](Set s) {
     auto [it, fresh] = id.emplace(s, static_cast<std::uint32_t>(sets.size()));
     if (fresh) sets.push_back(std::move(s));
     return it->second;
   };
-  t.initial = intern({a.initial});
-  std::vector<char> in(a.num_states(), 0);
+  Set init(words, 0);
+  init[a.initial / 64] |= std::uint64_t{1} << (a.initial % 64);
+  t.initial = intern(std::move(init));
   for (std::size_t i = 0; i < sets.size(); ++i) {
     if (sets.size() > max_states) return std::nullopt;
     std::vector<std::uint32_t> row(t.letters);
     for (std::uint32_t l = 0; l < t.letters; ++l) {
-      const Letter letter = t.expand(l);
-      std::vector<std::uint32_t> dst;
-      for (std::uint32_t q : sets[i])
-        for (const Edge& e : a.edges[q])
-          if (!in[e.dst] && e.guard.matches(letter)) {
-            in[e.dst] = 1;
-            dst.push_back(e.dst);
-          }
-      for (std::uint32_t d : dst) in[d] = 0;
-      std::sort(dst.begin(), dst.end());
+      Set dst(words, 0);
+      for (std::size_t w = 0; w < words; ++w)
+        for (std::uint64_t bits = sets[i][w]; bits; bits &= bits - 1) {
+          const std::size_t q = w * 64 + static_cast<std::size_t>(__builtin_ctzll(bits));
+          const std::uint64_t* from = &succ[(q * t.letters + l) * words];
+          for (std::size_t x = 0; x < words; ++x) dst[x] |= from[x];
+        }
       row[l] = intern(std::move(dst));
     }
     t.next.push_back(std::move(row));
