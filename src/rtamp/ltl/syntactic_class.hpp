@@ -14,8 +14,8 @@
 
 namespace rtamp::ltl {
 
-bool is_syntactic_safety(const Formula& f);
-bool is_syntactic_guarantee(const Formula& f);
-bool is_syntactic_obligation(const Formula& f);
+bool is_syntactic_safety(const Formula& f);     // a bad prefix refutes every non-model
+bool is_syntactic_guarantee(const Formula& f);  // a good prefix proves every model
+bool is_syntactic_obligation(const Formula& f); // & | X of the two above
 
 }  // namespace rtamp::ltl
