@@ -1,6 +1,7 @@
 #include "rtamp/automata/wdba.hpp"
 
 #include <algorithm>
+#include <array>
 #include <deque>
 #include <map>
 #include <vector>
@@ -139,7 +140,9 @@ std::vector<Letter> path(const Automaton& s, std::uint32_t from, std::uint32_t t
   return letters;
 }
 
-void mark_accepting(const Automaton& a, Table& t) {
+// Accepting states of t, for each status (rejecting, accepting) given to a
+// state on no cycle whose successors disagree.
+std::array<std::vector<bool>, 2> mark_accepting(const Automaton& a, const Table& t) {
   const Automaton s = skeleton(t);
   const SccInfo info = scc_decompose(s);
   std::vector<std::uint32_t> rep(info.count, UINT32_MAX);
@@ -155,17 +158,22 @@ void mark_accepting(const Automaton& a, Table& t) {
     status[c] = lasso_accept(a, w) ? 1 : 0;
   }
   // SCCs are numbered so that edges go to lower numbers: successors first.
-  for (std::uint32_t c = 0; c < info.count; ++c) {
-    if (status[c] != -1) continue;
-    int shared = -2;
-    for (const Edge& e : s.edges[rep[c]]) {
-      const int d = status[info.scc_of[e.dst]];
-      shared = (shared == -2 || shared == d) ? d : 0;
+  std::array<std::vector<bool>, 2> result;
+  for (int mixed = 0; mixed < 2; ++mixed) {
+    std::vector<int> st = status;
+    for (std::uint32_t c = 0; c < info.count; ++c) {
+      if (st[c] != -1) continue;
+      int shared = -2;
+      for (const Edge& e : s.edges[rep[c]]) {
+        const int d = st[info.scc_of[e.dst]];
+        shared = (shared == -2 || shared == d) ? d : -1;
+      }
+      st[c] = shared < 0 ? mixed : shared;
     }
-    status[c] = shared == 1 ? 1 : 0;
+    result[mixed].assign(t.next.size(), false);
+    for (std::uint32_t q = 0; q < t.next.size(); ++q) result[mixed][q] = st[info.scc_of[q]] == 1;
   }
-  t.accepting.assign(t.next.size(), false);
-  for (std::uint32_t q = 0; q < t.next.size(); ++q) t.accepting[q] = status[info.scc_of[q]] == 1;
+  return result;
 }
 
 // Moore's partition refinement; returns the class of every state, classes
@@ -225,9 +233,22 @@ void cover(const Table& t, In&& in, std::uint32_t bit, std::uint32_t mask, std::
 std::optional<Automaton> minimize_wdba(const Automaton& a, std::size_t max_states) {
   std::optional<Table> t = subset_construction(a, max_states);
   if (!t) return std::nullopt;
-  mark_accepting(a, *t);
+  // Either status for the mixed transient states keeps the language; keep
+  // the one that merges more.
+  std::array<std::vector<bool>, 2> accepting = mark_accepting(a, *t);
   std::uint32_t classes = 0;
-  const std::vector<std::uint32_t> cls = moore(*t, classes);
+  t->accepting = std::move(accepting[0]);
+  std::vector<std::uint32_t> cls = moore(*t, classes);
+  std::vector<bool> first = std::move(t->accepting);
+  t->accepting = std::move(accepting[1]);
+  std::uint32_t alt_classes = 0;
+  std::vector<std::uint32_t> alt_cls = moore(*t, alt_classes);
+  if (alt_classes < classes) {
+    cls = std::move(alt_cls);
+    classes = alt_classes;
+  } else {
+    t->accepting = std::move(first);
+  }
   // Renumber classes in BFS order from the initial state's class.
   std::vector<std::uint32_t> rep(classes, UINT32_MAX);
   for (std::uint32_t q = 0; q < t->next.size(); ++q)

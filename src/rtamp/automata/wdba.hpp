@@ -6,7 +6,8 @@
 // its guards use; an SCC of the subset automaton is accepting iff `a` accepts
 // one lasso u·v^ω whose run stays in that SCC (a cycle v through one of its
 // states); states of accepting SCCs are accepting, a state on no cycle takes
-// the status its successors share (else rejecting); then Moore's partition
+// the status its successors share (else either status, the one that merges
+// more); then Moore's partition
 // refinement minimises the result as a DFA (states with equal finite-word
 // residuals have equal Büchi languages, since the runs meet accepting states
 // at the same positions). The result is state-based, deterministic and
