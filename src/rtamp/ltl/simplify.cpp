@@ -192,7 +192,15 @@ class Simplifier {
         for (const Formula& c : a.children()) cs.push_back(mkG(c));
         return mkAnd(std::move(cs));
       }
-      case Op::Next: return mkX(mkG(a[0]));
+      case Op::Next:  // G X e = G e for an eventuality e
+        return a.is_eventual() ? mkG(a[0]) : mkX(mkG(a[0]));
+      case Op::Finally: {  // G F(r & e) = G F r & G e for eventualities e
+        if (!a[0].is(Op::And)) break;
+        std::vector<Formula> ev, rest;
+        for (const Formula& c : a[0].children()) (c.is_eventual() ? ev : rest).push_back(c);
+        if (ev.empty() || rest.empty()) break;
+        return mkAnd({mkG(mkF(mkAnd(std::move(rest)))), mkG(mkAnd(std::move(ev)))});
+      }
       case Op::Release: return mkG(a[1]);
       case Op::WeakUntil: return mkG(mkOr({a[0], a[1]}));
       case Op::Or: {
