@@ -15,6 +15,7 @@ namespace {
 
 constexpr unsigned kMaxLetterBits = 12;
 constexpr std::size_t kMaxTableWords = std::size_t{1} << 22;  // successor table: 32 MiB
+constexpr std::size_t kMaxSubsetCells = std::size_t{1} << 22;  // subsets × letters
 
 // A complete deterministic automaton over the 2^k letters of the used atoms.
 struct Table {
@@ -70,7 +71,7 @@ std::optional<Table> subset_construction(const Automaton& a, std::size_t max_sta
   init[a.initial / 64] |= std::uint64_t{1} << (a.initial % 64);
   t.initial = intern(std::move(init));
   for (std::size_t i = 0; i < sets.size(); ++i) {
-    if (sets.size() > max_states) return std::nullopt;
+    if (sets.size() > max_states || sets.size() * t.letters > kMaxSubsetCells) return std::nullopt;
     std::vector<std::uint32_t> row(t.letters);
     for (std::uint32_t l = 0; l < t.letters; ++l) {
       Set dst(words, 0);

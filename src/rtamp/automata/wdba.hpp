@@ -15,7 +15,8 @@
 // Its language equals L(a) when L(a) is an obligation language; otherwise it
 // may differ, so callers must check (translate.cpp does, with the products
 // of product.hpp). Returns nullopt past the budget: more than `max_states`
-// subsets, or more than 2^12 letters, or a successor table of more than 2^22 words.
+// subsets, more than 2^12 letters, more than 2^22 successor-table words, or
+// more than 2^22 (subset, letter) cells.
 #pragma once
 
 #include <cstddef>
