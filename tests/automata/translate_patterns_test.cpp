@@ -1,7 +1,8 @@
-// The 55 Dwyer et al. specification patterns (tests/data/dac-patterns.ltl) and
-// the robot formulas (tests/data/robot-patterns.ltl): translation checked
-// against ltl::holds on random lassos, and the size table of the state-based
-// BA printed (sizes are asserted as a total bound, never times).
+// The 55 Dwyer et al. specification patterns (tests/data/dac-patterns.ltl),
+// the robot formulas (tests/data/robot-patterns.ltl) and the EH, p, SB and
+// hkrss families (tests/data/*-patterns.ltl): translation checked against
+// ltl::holds on random lassos, and the size tables of the state-based BA
+// printed (sizes are asserted as per-family total bounds, never times).
 #include <gtest/gtest.h>
 
 #include <chrono>
@@ -14,6 +15,7 @@
 #include "rtamp/ltl/lasso.hpp"
 #include "rtamp/ltl/parser.hpp"
 #include "rtamp/ltl/random.hpp"
+#include "rtamp/util/error.hpp"
 #include "rtamp_source_dir.hpp"
 
 namespace rtamp::automata {
@@ -45,7 +47,15 @@ void check_file(const std::string& file, std::size_t expected_count) {
       opt.state_based = variant & 1;
       opt.reduce = variant & 2;
       opt.construction = static_cast<Construction>(variant / 4);
-      const Automaton a = translate(f, opt);
+      Automaton a;
+      try {
+        a = translate(f, opt);
+      } catch (const Error&) {
+        // Past the resource bounds only without the reductions or with the
+        // merged-destination construction alone (hkrss's X-chain of 13).
+        ASSERT_TRUE(!opt.reduce || opt.construction == Construction::MergedDestinations) << text;
+        continue;
+      }
       for (const auto& w : ws)
         ASSERT_EQ(lasso_accept(a, test::to_word(a, w)), ltl::holds(f, w))
             << text << " word " << ltl::to_string(w) << " state_based=" << opt.state_based << " reduce=" << opt.reduce;
@@ -55,6 +65,38 @@ void check_file(const std::string& file, std::size_t expected_count) {
 
 TEST(TranslatePatterns, DwyerCorrect) { check_file("dac-patterns.ltl", 55); }
 TEST(TranslatePatterns, RobotCorrect) { check_file("robot-patterns.ltl", 20); }
+TEST(TranslatePatterns, EtessamiHolzmannCorrect) { check_file("eh-patterns.ltl", 12); }
+TEST(TranslatePatterns, PelanekCorrect) { check_file("p-patterns.ltl", 20); }
+TEST(TranslatePatterns, SomenziBloemCorrect) { check_file("sb-patterns.ltl", 27); }
+TEST(TranslatePatterns, HkrssCorrect) { check_file("hkrss-patterns.ltl", 55); }
+
+// State-based totals per family against Spot's `ltl2tgba -B` (Spot's
+// tests/core/ltl2tgba2.test); the bound is the total reached here, a
+// regression guard.
+TEST(TranslatePatterns, FamilySizeTable) {
+  struct Family {
+    const char* file;
+    std::size_t spot;
+    std::size_t bound;
+  };
+  const Family families[] = {{"dac-patterns.ltl", 214, 223},
+                             {"eh-patterns.ltl", 43, 44},
+                             {"p-patterns.ltl", 50, 58},
+                             {"sb-patterns.ltl", 81, 88},
+                             {"hkrss-patterns.ltl", 224, 230}};
+  std::printf("%-20s %9s %9s %9s %9s\n", "family", "formulas", "states", "det", "Spot -B");
+  for (const Family& fam : families) {
+    const auto formulas = read_formulas(fam.file);
+    std::size_t states = 0, deterministic = 0;
+    for (const std::string& text : formulas) {
+      const Automaton ba = translate(ltl::parse(text));
+      states += ba.num_states();
+      deterministic += is_deterministic(ba);
+    }
+    std::printf("%-20s %9zu %9zu %9zu %9zu\n", fam.file, formulas.size(), states, deterministic, fam.spot);
+    EXPECT_LE(states, fam.bound) << fam.file;
+  }
+}
 
 TEST(TranslatePatterns, DwyerSizeTable) {
   const auto formulas = read_formulas("dac-patterns.ltl");
@@ -76,7 +118,7 @@ TEST(TranslatePatterns, DwyerSizeTable) {
                 tg.num_edges(), std::chrono::duration<double, std::micro>(t1 - t0).count(), formulas[i].c_str());
   }
   std::printf("total BA %zu states %zu edges; TGBA %zu states %zu edges\n", states, edges, tstates, tedges);
-  EXPECT_LE(states, 300u);
+  EXPECT_LE(states, 223u);
 }
 
 }  // namespace

@@ -59,6 +59,15 @@ TEST(LtlSimplify, Rules) {
   expect("F(a | b)", "F a | F b");
   expect("G(a & b)", "G a & G b");
   expect("G F a & G F b", "G F a & G F b");
+  expect("G F(a | b)", "G F(a | b)");
+  expect("G(F a | F b | X c)", "G(F(a | b) | X c)");
+  expect("F G(a & b)", "F G(a & b)");
+  expect("F(G a & G b & X c)", "F(G(a & b) & X c)");
+  expect("G(F a | F X b)", "G(F a | X F b)");
+  expect("G X F a", "G F a");
+  expect("G F(a & F b)", "G F a & G F b");
+  expect("G(a & X F(b & X F(c & X F d)))", "G a & G F b & G F c & G F d");
+  expect("G F(a & X b)", "G F(a & X b)");
   expect("F X a", "X F a");
   expect("G X a", "X G a");
   expect("F(a U b)", "F b");

@@ -35,4 +35,12 @@ int Automaton::find_atom(const std::string& atom) const {
   return -1;
 }
 
+bool is_deterministic(const Automaton& a) {
+  for (const auto& out : a.edges)
+    for (std::size_t i = 0; i < out.size(); ++i)
+      for (std::size_t j = i + 1; j < out.size(); ++j)
+        if (!(out[i].guard & out[j].guard).is_false()) return false;
+  return true;
+}
+
 }  // namespace rtamp::automata

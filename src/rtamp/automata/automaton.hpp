@@ -69,4 +69,7 @@ class Automaton {
   bool is_accepting_state(std::uint32_t q) const { return state_based && state_accepting[q]; }
 };
 
+// No state has two edges whose guards share a letter.
+bool is_deterministic(const Automaton& a);
+
 }  // namespace rtamp::automata

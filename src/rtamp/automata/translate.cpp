@@ -2,13 +2,18 @@
 
 
 #include "rtamp/automata/degeneralize.hpp"
+#include "rtamp/automata/emptiness.hpp"
 #include "rtamp/automata/gba.hpp"
+#include "rtamp/automata/product.hpp"
 #include "rtamp/automata/reduce.hpp"
 #include "rtamp/automata/shortcuts.hpp"
 #include "rtamp/automata/simulation_reduction.hpp"
 #include "rtamp/automata/vwaa.hpp"
+#include "rtamp/automata/wdba.hpp"
 #include "rtamp/ltl/printer.hpp"
 #include "rtamp/ltl/simplify.hpp"
+#include "rtamp/ltl/syntactic_class.hpp"
+#include "rtamp/util/error.hpp"
 
 namespace rtamp::automata {
 
@@ -63,6 +68,37 @@ Automaton pipeline(Automaton a, const TranslateOptions& opt) {
   return a;
 }
 
+// Replaces `a` (the automaton of `input`, over its atoms) by its minimal WDBA
+// when that is no larger and its language is L(a): L(a) ⊆ L(W) is checked by
+// emptiness of a × complement(W); L(W) ⊆ L(input) holds when `obligation`
+// (the formula is a syntactic obligation: Dax et al.'s theorem) and is
+// checked otherwise by emptiness of W × A_!input.
+void try_wdba(Automaton& a, const Formula& input, bool obligation, const TranslateOptions& opt) {
+  const std::optional<Automaton> w = minimize_wdba(a, 8 * std::size_t{a.num_states()} + 32);
+  if (!w) return;
+  Automaton small = *w;
+  remove_useless(small);
+  // No larger; at equal size it must bring determinism.
+  if (small.num_states() > a.num_states() || (small.num_states() == a.num_states() && is_deterministic(a))) return;
+  if (!is_empty(product(a, complement_dba(*w)))) return;
+  if (!obligation) {
+    TranslateOptions neg = opt;
+    neg.wdba = false;
+    neg.state_based = false;
+    neg.construction = Construction::GastinOddoux;
+    try {
+      if (!is_empty(product(small, translate(Formula::Not(input), neg)))) return;
+    } catch (const Error&) {
+      return;  // !input past the resource bounds: keep `a`
+    }
+  }
+  if (!opt.state_based) {
+    small.state_based = false;
+    canonicalize_acceptance(small);
+  }
+  a = std::move(small);
+}
+
 }  // namespace
 
 Automaton translate(const ltl::Formula& input, const TranslateOptions& opt) {
@@ -115,6 +151,7 @@ Automaton translate(const ltl::Formula& input, const TranslateOptions& opt) {
     a.atoms = atoms;
   }
   if (a.state_based) a.num_sets = 1;
+  if (opt.wdba && !done) try_wdba(a, input, ltl::is_syntactic_obligation(nnf), opt);
   a.name = ltl::to_string(input);
   return a;
 }

@@ -9,7 +9,9 @@
 // (useless states, SCC-based acceptance canonicalisation, direct-simulation
 // quotient with little-brother pruning, cosimulation, parallel-edge merging)
 // -> optionally SCC-aware degeneralisation to a state-based Büchi automaton,
-// reduced again.
+// reduced again -> the minimal weak deterministic automaton (wdba.hpp) instead
+// when it is no larger and its language is checked equal (products with the
+// complement of the WDBA and with the automaton of !f are empty).
 // Shortcuts build common shapes (Boolean, G p, F p, G F p, F G p) directly.
 //
 // Invariants of the result: language = models of f; atoms are the atoms of f
@@ -37,6 +39,7 @@ struct TranslateOptions {
   bool simplify = true;     // ltl::simplify before translating
   bool reduce = true;       // post-translation reductions (useless states, simulation, merging)
   bool shortcuts = true;    // direct constructions for Boolean / G p / F p / G F p / F G p
+  bool wdba = true;         // minimal WDBA when no larger and checked equivalent
   Construction construction = Construction::Smallest;
 };
 

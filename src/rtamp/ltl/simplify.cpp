@@ -1,6 +1,7 @@
 #include "rtamp/ltl/simplify.hpp"
 
 #include <algorithm>
+#include <optional>
 #include <unordered_map>
 
 #include "rtamp/ltl/nnf.hpp"
@@ -127,6 +128,28 @@ class Simplifier {
     }
   }
 
+  // Under G, F x | F y | r = F(x | y) | r; under F, G x & G y & r =
+  // G(x & y) & r (F distributes over |, G over &), for Boolean x, y: one
+  // eventuality (one invariant) over a Boolean formula, which the G F p and
+  // F G p shortcuts translate directly. nullopt unless `a` (an Or for F, an
+  // And for G) has two such children.
+  std::optional<Formula> merge_children(const Formula& a, Op op) {
+    std::vector<Formula> inner, rest;
+    for (const Formula& c : a.children()) {
+      if (c.is(op) && c[0].is_boolean())
+        inner.push_back(c[0]);
+      else
+        rest.push_back(c);
+    }
+    if (inner.size() < 2) return std::nullopt;
+    if (op == Op::Finally) {
+      rest.push_back(Formula::F(mkOr(std::move(inner))));
+      return mkOr(std::move(rest));
+    }
+    rest.push_back(Formula::G(mkAnd(std::move(inner))));
+    return mkAnd(std::move(rest));
+  }
+
   static Formula mkX(const Formula& a) {
     if (suspendable(a)) return a;  // includes constants
     return Formula::X(a);
@@ -145,6 +168,7 @@ class Simplifier {
       case Op::Until: return mkF(a[1]);
       case Op::StrongRelease: return mkF(mkAnd({a[0], a[1]}));
       case Op::And: {
+        if (auto merged = merge_children(a, Op::Globally)) return mkF(*merged);
         std::vector<Formula> rest, susp;
         for (const Formula& c : a.children()) (suspendable(c) ? susp : rest).push_back(c);
         if (!susp.empty() && !rest.empty()) {
@@ -168,10 +192,19 @@ class Simplifier {
         for (const Formula& c : a.children()) cs.push_back(mkG(c));
         return mkAnd(std::move(cs));
       }
-      case Op::Next: return mkX(mkG(a[0]));
+      case Op::Next:  // G X e = G e for an eventuality e
+        return a.is_eventual() ? mkG(a[0]) : mkX(mkG(a[0]));
+      case Op::Finally: {  // G F(r & e) = G F r & G e for eventualities e
+        if (!a[0].is(Op::And)) break;
+        std::vector<Formula> ev, rest;
+        for (const Formula& c : a[0].children()) (c.is_eventual() ? ev : rest).push_back(c);
+        if (ev.empty() || rest.empty()) break;
+        return mkAnd({mkG(mkF(mkAnd(std::move(rest)))), mkG(mkAnd(std::move(ev)))});
+      }
       case Op::Release: return mkG(a[1]);
       case Op::WeakUntil: return mkG(mkOr({a[0], a[1]}));
       case Op::Or: {
+        if (auto merged = merge_children(a, Op::Finally)) return mkG(*merged);
         std::vector<Formula> rest, susp;
         for (const Formula& c : a.children()) (suspendable(c) ? susp : rest).push_back(c);
         if (!susp.empty() && !rest.empty()) {

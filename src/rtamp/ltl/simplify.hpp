@@ -11,7 +11,11 @@
 //
 //   X s = s                       F e = e                  G u = u
 //   F(a | b) = F a | F b          G(a & b) = G a & G b
+//   G(F p | F q | r) = G(F(p | q) | r)   F(G p & G q & r) = F(G(p & q) & r)
+//        (p, q Boolean: undoes the line above under G / F, so that
+//        G F(p | q) and F G(p & q) keep one eventuality / one invariant)
 //   F X a = X F a                 G X a = X G a
+//   G X e = G e                   G F(a & e) = G F a & G e
 //   F(a U b) = F b                G(a R b) = G b
 //   F(a M b) = F(a & b)           G(a W b) = G(a | b)
 //   F(a & s) = F a & s            G(a | s) = G a | s

@@ -1,0 +1,62 @@
+#include "rtamp/automata/product.hpp"
+
+#include <map>
+#include <utility>
+
+namespace rtamp::automata {
+
+namespace {
+
+std::uint32_t sets_of(const Automaton& a) { return a.state_based ? 1u : a.num_sets; }
+
+}  // namespace
+
+Automaton product(const Automaton& a, const Automaton& b) {
+  Automaton p;
+  p.atoms = a.atoms;
+  p.state_based = false;
+  const std::uint32_t na = sets_of(a);
+  p.num_sets = na + sets_of(b);
+  std::map<std::pair<std::uint32_t, std::uint32_t>, std::uint32_t> id;
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> todo;
+  auto intern = [&](std::uint32_t x, std::uint32_t y) {
+    auto [it, fresh] = id.emplace(std::make_pair(x, y), p.num_states());
+    if (fresh) {
+      p.add_state();
+      todo.emplace_back(x, y);
+    }
+    return it->second;
+  };
+  p.initial = intern(a.initial, b.initial);
+  for (std::size_t i = 0; i < todo.size(); ++i) {
+    const auto [x, y] = todo[i];
+    for (const Edge& ea : a.edges[x])
+      for (const Edge& eb : b.edges[y]) {
+        const Cube g = ea.guard & eb.guard;
+        if (g.is_false()) continue;
+        const std::uint32_t d = intern(ea.dst, eb.dst);
+        p.add_edge(static_cast<std::uint32_t>(i), d, g, ea.marks | (eb.marks << na));
+      }
+  }
+  return p;
+}
+
+Automaton complement_dba(const Automaton& w) {
+  Automaton c;
+  c.atoms = w.atoms;
+  c.state_based = false;
+  c.num_sets = 1;
+  const std::uint32_t n = w.num_states();
+  for (std::uint32_t i = 0; i < 2 * n; ++i) c.add_state();
+  c.initial = w.initial;
+  for (std::uint32_t q = 0; q < n; ++q)
+    for (const Edge& e : w.edges[q]) {
+      c.add_edge(q, e.dst, e.guard);
+      if (w.state_accepting[e.dst]) continue;
+      c.add_edge(q, n + e.dst, e.guard);
+      if (!w.state_accepting[q]) c.add_edge(n + q, n + e.dst, e.guard, 1);
+    }
+  return c;
+}
+
+}  // namespace rtamp::automata
