@@ -65,7 +65,13 @@ CameraRig::CameraRig(const Simulation& sim, std::vector<world::Camera> cameras, 
   mjr_defaultContext(&r.con);
   mjv_makeScene(m, &r.scene, 2000);
   r.scene_made = true;
+  // No multisampling: a pixel shows one surface, so its depth, colour and segment
+  // belong to the same point (as a depth sensor's do).
+  mjModel* mm = const_cast<mjModel*>(m);
+  const int samples = mm->vis.quality.offsamples;
+  mm->vis.quality.offsamples = 0;
   mjr_makeContext(m, &r.con, mjFONTSCALE_100);
+  mm->vis.quality.offsamples = samples;
   r.con_made = true;
   mjr_setBuffer(mjFB_OFFSCREEN, &r.con);
   if (r.con.currentBuffer != mjFB_OFFSCREEN) throw Error("offscreen rendering unavailable: no offscreen buffer");

@@ -6,7 +6,8 @@
 // a pixel shows: tests score perception against it; perception itself must not use it.
 //
 // Invariants: one rig owns one EGL context (egl_context.hpp) and MuJoCo render context,
-// sized for the largest camera; images are top row first; a wrist camera's extrinsics
+// sized for the largest camera, without multisampling (a pixel's colour, depth and
+// segment belong to one surface point); images are top row first; a wrist camera's extrinsics
 // follow the arm (computed from the simulation's current state); the depth noise is
 // drawn from the rig's own generator, so a seed gives the same images.
 #pragma once

@@ -1,0 +1,101 @@
+// Cameras in scenario files: the defaults of each mount, every field read as written,
+// to_yaml() and back giving the same cameras, and the default cameras of a scenario
+// without any: the overhead one sees every region's centre (an independent check:
+// projecting through its axes) and is valid.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "rtamp/world/scenario_io.hpp"
+#include "rtamp/world/validate.hpp"
+
+namespace rtamp::world {
+namespace {
+
+const char* kScene =
+    "name: t\n"
+    "regions:\n"
+    "  - {name: r1, center: [0.40, 0.32, 0], size: [0.36, 0.36]}\n"
+    "  - {name: r2, center: [0.40, -0.32, 0], size: [0.36, 0.36]}\n"
+    "objects:\n"
+    "  - {name: o1, position: [0.40, 0.32, 0]}\n"
+    "task: F p1\n"
+    "propositions: {p1: \"o1 in r2\"}\n";
+
+TEST(CameraIo, FieldsDefaultsAndRoundTrip) {
+  const std::string text = std::string(kScene) +
+                           "cameras:\n"
+                           "  - {name: top, position: [0.4, 0, 1.2], look_at: [0.4, 0], resolution: [320, 200],\n"
+                           "     fov: 50, range: [0.2, 2.5], rate: 30, noise: {a: 0.002, b: 0, quantum_mm: 0.5,\n"
+                           "     edge_dropout: 1}}\n"
+                           "  - {name: hand, mount: wrist}\n";
+  const Scenario s = parse_scenario(text, "t.yaml");
+  ASSERT_EQ(s.cameras.size(), 2u);
+  const Camera& top = s.cameras[0];
+  EXPECT_EQ(top.mount, Camera::Mount::Fixed);
+  EXPECT_EQ(top.width, 320);
+  EXPECT_EQ(top.height, 200);
+  EXPECT_EQ(top.fovy, 50);
+  EXPECT_EQ(top.near, 0.2);
+  EXPECT_EQ(top.far, 2.5);
+  EXPECT_EQ(top.rate, 30);
+  EXPECT_EQ(top.noise.a, 0.002);
+  EXPECT_EQ(top.noise.quantum_mm, 0.5);
+  EXPECT_EQ(top.noise.edge_dropout, 1);
+  EXPECT_EQ(top.look_at, (Vec3{0.4, 0, 0}));
+  const Camera& hand = s.cameras[1];
+  EXPECT_EQ(hand.mount, Camera::Mount::Wrist);
+  EXPECT_EQ(hand.width, 424);
+  EXPECT_EQ(hand.height, 240);
+  EXPECT_EQ(hand.fovy, 58);
+  EXPECT_EQ(hand.near, 0.3);
+  EXPECT_NEAR(horizontal_fov(hand), 87, 2);  // the D435's depth field of view across
+  const Scenario back = parse_scenario(to_yaml(s), "back.yaml");
+  ASSERT_EQ(back.cameras.size(), 2u);
+  for (std::size_t i = 0; i < 2; ++i) {
+    const Camera &a = s.cameras[i], &b = back.cameras[i];
+    EXPECT_EQ(a.name, b.name);
+    EXPECT_EQ(a.mount, b.mount);
+    EXPECT_EQ(a.position, b.position);
+    EXPECT_EQ(a.look_at, b.look_at);
+    EXPECT_EQ(a.width, b.width);
+    EXPECT_EQ(a.height, b.height);
+    EXPECT_EQ(a.fovy, b.fovy);
+    EXPECT_EQ(a.near, b.near);
+    EXPECT_EQ(a.far, b.far);
+    EXPECT_EQ(a.rate, b.rate);
+    EXPECT_EQ(a.noise.a, b.noise.a);
+    EXPECT_EQ(a.noise.b, b.noise.b);
+    EXPECT_EQ(a.noise.quantum_mm, b.noise.quantum_mm);
+    EXPECT_EQ(a.noise.edge_dropout, b.noise.edge_dropout);
+  }
+}
+
+TEST(CameraIo, DefaultOverheadSeesEveryRegionCorner) {
+  Scenario s = parse_scenario(kScene, "t.yaml");
+  const std::vector<Camera> cams = cameras_of(s);
+  ASSERT_EQ(cams.size(), 2u);
+  const Camera& c = primary_camera(cams);
+  EXPECT_EQ(c.name, "overhead");
+  const auto ax = fixed_camera_axes(c);
+  const double kPi = 3.14159265358979323846;
+  const double ty = std::tan(c.fovy / 2 * kPi / 180), tx = ty * c.width / c.height;
+  for (const Region& r : s.regions)
+    for (int sx : {-1, 1})
+      for (int sy : {-1, 1}) {
+        const Vec3 v{r.center[0] + sx * r.size[0] / 2 - c.position[0], r.center[1] + sy * r.size[1] / 2 - c.position[1],
+                     -c.position[2]};
+        double p[3];
+        for (int i = 0; i < 3; ++i) p[i] = ax[static_cast<std::size_t>(i)][0] * v[0] +
+                                            ax[static_cast<std::size_t>(i)][1] * v[1] +
+                                            ax[static_cast<std::size_t>(i)][2] * v[2];
+        EXPECT_GT(p[2], c.near);
+        EXPECT_LT(std::abs(p[0] / p[2]), tx) << r.name;
+        EXPECT_LT(std::abs(p[1] / p[2]), ty) << r.name;
+      }
+  s.cameras = cams;  // the defaults pass the validator
+  EXPECT_NO_THROW(validate(s));
+}
+
+}  // namespace
+}  // namespace rtamp::world
