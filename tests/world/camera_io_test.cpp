@@ -28,7 +28,7 @@ TEST(CameraIo, FieldsDefaultsAndRoundTrip) {
                            "  - {name: top, position: [0.4, 0, 1.2], look_at: [0.4, 0], resolution: [320, 200],\n"
                            "     fov: 50, range: [0.2, 2.5], rate: 30, noise: {a: 0.002, b: 0, quantum_mm: 0.5,\n"
                            "     edge_dropout: 1}}\n"
-                           "  - {name: hand, mount: wrist}\n";
+                           "  - {name: grip, mount: wrist}\n";
   const Scenario s = parse_scenario(text, "t.yaml");
   ASSERT_EQ(s.cameras.size(), 2u);
   const Camera& top = s.cameras[0];
@@ -43,13 +43,13 @@ TEST(CameraIo, FieldsDefaultsAndRoundTrip) {
   EXPECT_EQ(top.noise.quantum_mm, 0.5);
   EXPECT_EQ(top.noise.edge_dropout, 1);
   EXPECT_EQ(top.look_at, (Vec3{0.4, 0, 0}));
-  const Camera& hand = s.cameras[1];
-  EXPECT_EQ(hand.mount, Camera::Mount::Wrist);
-  EXPECT_EQ(hand.width, 424);
-  EXPECT_EQ(hand.height, 240);
-  EXPECT_EQ(hand.fovy, 58);
-  EXPECT_EQ(hand.near, 0.3);
-  EXPECT_NEAR(horizontal_fov(hand), 87, 2);  // the D435's depth field of view across
+  const Camera& grip = s.cameras[1];
+  EXPECT_EQ(grip.mount, Camera::Mount::Wrist);
+  EXPECT_EQ(grip.width, 424);
+  EXPECT_EQ(grip.height, 240);
+  EXPECT_EQ(grip.fovy, 58);
+  EXPECT_EQ(grip.near, 0.3);
+  EXPECT_NEAR(horizontal_fov(grip), 87, 2);  // the D435's depth field of view across
   const Scenario back = parse_scenario(to_yaml(s), "back.yaml");
   ASSERT_EQ(back.cameras.size(), 2u);
   for (std::size_t i = 0; i < 2; ++i) {
