@@ -1,6 +1,5 @@
 #include "rtamp/sim/depth_noise.hpp"
 
-#include <algorithm>
 #include <cmath>
 #include <cstdint>
 

@@ -2,6 +2,9 @@
 // clean metric depth image: dropouts at depth edges, then Gaussian noise of standard
 // deviation a + b z², then rounding to whole quanta. Pixels reading 0 (no depth) stay 0;
 // a noisy depth never goes below 0 (it reads 0 then). Edges are found on the clean image.
+// The Gaussian deviates are entries of a fixed table of 2^16 unit normals picked by a
+// fast generator seeded from `rng` (per-pixel std::normal_distribution cost most of a
+// frame's budget; docs/benchmarks.md "Camera frames").
 #pragma once
 
 #include <random>

@@ -4,7 +4,6 @@
 #include <cmath>
 
 #include "rtamp/world/scenario.hpp"
-#include "rtamp/world/table.hpp"
 
 namespace rtamp::world {
 
