@@ -497,6 +497,35 @@ void sim_cases(std::vector<Case>& t) {
   }
 }
 
+// Cameras of the scenario (line 14 after the task) and `sim --camera`.
+void camera_cases(std::vector<Case>& t) {
+  auto add = [&](const std::string& camera, const std::string& word, const std::string& what, int line = kTaskLine + 2) {
+    const std::string text = scenario("F G all_in_r2", "cameras:\n" + camera + "\n");
+    const std::string p = file(text);
+    t.push_back({"camera", {"sim", p, "--camera", "c", "--snapshot", "c.png"}, at(p, text, line, word), what,
+                 {"c.png"}});
+  };
+  const std::string c = "  - {name: c, position: [0.4, 0, 1.5], look_at: [0.4, 0, 0]";
+  add(c + ", resolution: [8, 480]}", "[8, 480]", "resolution 8x480 is out of range");
+  add(c + ", resolution: [640, 5000]}", "[640, 5000]", "is out of range (16 to 4096");
+  add(c + ", rate: 0}", "0}", "rate 0 Hz is out of range");
+  add(c + ", rate: 5000}", "5000}", "rate 5000 Hz is out of range");
+  add(c + ", fov: 180}", "180}", "field of view 180 is outside (0, 180)");
+  add(c + ", fov: 0}", "0}", "field of view 0 is outside (0, 180)");
+  add(c + ", range: [2, 1]}", "[2, 1]", "range [2, 1] must be");
+  add("  - {name: c, position: [0.4, 0, -0.1], look_at: [0.4, 0, 0]}", "[0.4, 0, -0.1]",
+      "is inside or below the table");
+  add("  - {name: c, position: [0.4, 0, 1.5], look_at: [0.4, 0, 3]}", "[0.4, 0, 3]", "sees no region");
+  add("  - {name: c, position: [5, 5, 0.2], look_at: [9, 9, 0.2]}", "[9, 9, 0.2]", "sees no region");
+  add(c + ", mount: head}", "head", "unknown mount 'head'");
+  add(c + ", noise: {a: 0.001, c: 1}}", "c: 1", "unknown key 'c'");
+  add("  - {name: c, mount: wrist, look_at: [0, 0, 0]}", "[0, 0, 0]", "no look_at");
+  add("  - {name: c, look_at: [0.4, 0, 0]}", "{name", "missing the required key 'position'");
+  add(c + "}\n" + c + "}", "c,", "duplicate camera name 'c'", kTaskLine + 3);
+  t.push_back({"camera", {"sim", "3-block-tray", "--camera", "ceiling", "--snapshot", "c.png"}, "--camera:1:1:",
+               "unknown camera 'ceiling' (cameras: overhead, wrist)", {"c.png"}});
+}
+
 void serve_cases(std::vector<Case>& t) {
   auto add = [&](std::vector<std::string> args, const std::string& where, const std::string& what) {
     args.insert(args.begin(), {"serve", "3-block-tray", "--world", "symbolic", "--log", "sv.jsonl"});
@@ -645,6 +674,7 @@ std::vector<Case> table() {
   task_cases(t);
   change_cases(t);
   sim_cases(t);
+  camera_cases(t);
   serve_cases(t);
   gen_cases(t);
   ltl_cases(t);

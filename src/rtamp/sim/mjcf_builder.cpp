@@ -136,6 +136,8 @@ std::array<double, 3> region_colour(std::size_t i) {
   return palette[i % palette.size()];
 }
 
+std::string mujoco_camera_name(const std::string& camera) { return "camera:" + camera; }
+
 world::Vec3 parking_position(int index) { return {3.0 + 0.5 * index, 3.0, -3.0}; }
 
 double object_base_z(const world::Scenario& s, const world::Object& o) {
@@ -170,7 +172,12 @@ std::string build_mjcf(const world::Scenario& s, const MjcfOptions& opt) {
   x << "  <option timestep=\"" << Num{opt.timestep} << "\" integrator=\"Euler\" cone=\"pyramidal\"/>\n";
   x << "  <custom>" << model_section(ur5, "custom") << "</custom>\n";
   x << "  <size njmax=\"" << njmax << "\" nconmax=\"" << nconmax << "\" nstack=\"" << nstack << "\"/>\n";
-  x << "  <visual><quality shadowsize=\"2048\"/><headlight ambient=\"0.3 0.3 0.3\" diffuse=\"0.4 0.4 0.4\"/>"
+  // The offscreen buffer holds the largest camera image (and the default 640x480 pictures).
+  const std::vector<world::Camera> cameras = world::cameras_of(s);
+  int offwidth = 640, offheight = 480;
+  for (const world::Camera& c : cameras) offwidth = std::max(offwidth, c.width), offheight = std::max(offheight, c.height);
+  x << "  <visual><global offwidth=\"" << offwidth << "\" offheight=\"" << offheight << "\"/>"
+       "<quality shadowsize=\"2048\"/><headlight ambient=\"0.3 0.3 0.3\" diffuse=\"0.4 0.4 0.4\"/>"
        "<map znear=\"0.01\"/></visual>\n";
   x << "  <default>\n"
        "    <geom contype=\"1\" conaffinity=\"3\" friction=\""
@@ -226,13 +233,30 @@ std::string build_mjcf(const world::Scenario& s, const MjcfOptions& opt) {
       << v3(bx, by, bz) << "\" fovy=\"45\"/>\n";
   }
 
+  // The scenario's cameras (world/camera.hpp): MuJoCo's camera frame is OpenCV's with y
+  // and z negated (x right, y up, looking along -z).
+  std::string wrist_cameras;
+  for (const world::Camera& c : cameras) {
+    const std::string head = "<camera name=\"" + mujoco_camera_name(c.name) + "\" pos=\"" +
+                             v3(c.position[0], c.position[1], c.position[2]) + "\" xyaxes=\"";
+    std::ostringstream fov;
+    fov << "\" fovy=\"" << Num{c.fovy} << "\"/>\n";
+    if (c.mount == world::Camera::Mount::Wrist) {
+      wrist_cameras += "                    " + head + "1 0 0 0 -1 0" + fov.str();
+      continue;
+    }
+    const auto axes = world::fixed_camera_axes(c);
+    x << "    " << head << v3(axes[0][0], axes[0][1], axes[0][2]) << ' ' << v3(-axes[1][0], -axes[1][1], -axes[1][2])
+      << fov.str();
+  }
+
   // The arm: the UR5's model file, on a mount at the scenario's base pose, with the
   // gripper inside its flange body.
   const std::string gripper = gripper_mjcf(opt);
   std::string arm(model_section(ur5, "worldbody"));
   const auto flange = arm.find("<body name=\"ur5:flange\"");
   if (flange == std::string::npos) throw Error("the UR5 model has no body 'ur5:flange'");
-  arm.insert(arm.find('>', flange) + 1, "\n" + gripper);
+  arm.insert(arm.find('>', flange) + 1, "\n" + gripper + wrist_cameras);
   const double ry = s.robot.yaw;
   x << "    <body name=\"ur5:mount\" pos=\"" << v3(s.robot.base[0], s.robot.base[1], s.robot.base[2]) << "\" quat=\""
     << v4(std::cos(ry / 2), 0, 0, std::sin(ry / 2)) << "\">\n"

@@ -17,7 +17,10 @@
 //    plus four rims), then reserved spare blocks and trays parked out of view with
 //    contacts disabled (the operator's "add" uses them);
 //  - one inactive weld equality (gripper, body) per movable body, named "grasp:<body>";
-//  - a fixed camera "overview" that frames table, regions, arm and objects.
+//  - a fixed camera "overview" that frames table, regions, arm and objects;
+//  - one MuJoCo camera "camera:<name>" per camera of world::cameras_of(scenario): a
+//    fixed one in the world body, a wrist one inside the flange body; the offscreen
+//    buffer holds the largest of their images.
 // Invariants: body names are "obj:<name>", "ctr:<name>", "spare_block:<k>",
 // "spare_tray:<k>"; every movable body has exactly one free joint and one weld.
 #pragma once
@@ -56,6 +59,9 @@ inline constexpr double kTrayPlate = 0.01;  // thickness of a tray's base plate 
 inline constexpr double kTrayRim = world::kContainerRim;  // thickness of its rims (the rule book's)
 inline constexpr double kFingerPad = 0.01;   // finger thickness along tool y
 inline constexpr double kFingerTipBelowTcp = 0.004;  // fingers reach this far past the tool point
+
+// The MuJoCo camera of a scenario camera: "camera:<name>".
+std::string mujoco_camera_name(const std::string& camera);
 
 // Where a parked (hidden) spare body sits: far below the table, out of view.
 world::Vec3 parking_position(int index);

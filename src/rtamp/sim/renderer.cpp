@@ -1,20 +1,18 @@
 #include "rtamp/sim/renderer.hpp"
 
-#include <EGL/egl.h>
-#include <EGL/eglext.h>
 #include <png.h>
 #include <sys/wait.h>
 
 #include <cstring>
 
+#include "rtamp/sim/egl_context.hpp"
 #include "rtamp/util/error.hpp"
 
 namespace rtamp::sim {
 
 struct Renderer::Impl {
-  EGLDisplay display = EGL_NO_DISPLAY;
-  EGLContext context = EGL_NO_CONTEXT;
-  EGLSurface surface = EGL_NO_SURFACE;
+  explicit Impl(int width, int height) : egl(width, height) {}
+  EglContext egl;
   mjvScene scene;
   mjvOption option;
   mjvCamera camera;
@@ -22,44 +20,13 @@ struct Renderer::Impl {
   bool scene_made = false, con_made = false;
 };
 
-namespace {
-
-EGLDisplay surfaceless_display() {
-  auto get_platform_display =
-      reinterpret_cast<PFNEGLGETPLATFORMDISPLAYEXTPROC>(eglGetProcAddress("eglGetPlatformDisplayEXT"));
-  if (get_platform_display) {
-    EGLDisplay d = get_platform_display(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr);
-    if (d != EGL_NO_DISPLAY) return d;
-  }
-  return eglGetDisplay(EGL_DEFAULT_DISPLAY);
-}
-
-}  // namespace
-
-Renderer::Renderer(const Simulation& sim, RenderOptions options) : impl_(new Impl), sim_(sim), options_(options) {
+Renderer::Renderer(const Simulation& sim, RenderOptions options)
+    : impl_(new Impl(options.width, options.height)), sim_(sim), options_(options) {
   Impl& r = *impl_;
   auto fail = [&](const std::string& what) {
     this->~Renderer();
     throw Error("offscreen rendering unavailable: " + what);
   };
-  r.display = surfaceless_display();
-  if (r.display == EGL_NO_DISPLAY) fail("no EGL display (need Mesa's EGL: libegl-mesa0)");
-  EGLint major = 0, minor = 0;
-  if (!eglInitialize(r.display, &major, &minor)) fail("eglInitialize failed");
-  const EGLint config_attribs[] = {EGL_SURFACE_TYPE, EGL_PBUFFER_BIT, EGL_RED_SIZE, 8, EGL_GREEN_SIZE, 8,
-                                   EGL_BLUE_SIZE, 8, EGL_ALPHA_SIZE, 8, EGL_DEPTH_SIZE, 24,
-                                   EGL_RENDERABLE_TYPE, EGL_OPENGL_BIT, EGL_NONE};
-  EGLConfig config;
-  EGLint nconfig = 0;
-  if (!eglChooseConfig(r.display, config_attribs, &config, 1, &nconfig) || nconfig < 1) fail("no EGL config");
-  const EGLint pbuffer_attribs[] = {EGL_WIDTH, options_.width, EGL_HEIGHT, options_.height, EGL_NONE};
-  r.surface = eglCreatePbufferSurface(r.display, config, pbuffer_attribs);
-  if (r.surface == EGL_NO_SURFACE) fail("no pbuffer surface");
-  if (!eglBindAPI(EGL_OPENGL_API)) fail("eglBindAPI(OpenGL) failed");
-  r.context = eglCreateContext(r.display, config, EGL_NO_CONTEXT, nullptr);
-  if (r.context == EGL_NO_CONTEXT) fail("no OpenGL context");
-  if (!eglMakeCurrent(r.display, r.surface, r.surface, r.context)) fail("eglMakeCurrent failed");
-
   const mjModel* m = sim_.model();
   mjv_defaultScene(&r.scene);
   mjv_defaultOption(&r.option);
@@ -81,20 +48,14 @@ Renderer::Renderer(const Simulation& sim, RenderOptions options) : impl_(new Imp
   r.camera.type = mjCAMERA_FIXED;
   r.camera.fixedcamid = mj_name2id(m, mjOBJ_CAMERA, "overview");
   if (options_.labels) r.option.label = mjLABEL_BODY;
-  (void)major, (void)minor;
 }
 
 Renderer::~Renderer() {
   if (!impl_) return;
   Impl& r = *impl_;
+  r.egl.make_current();  // free this context's GL objects, not another's
   if (r.con_made) mjr_freeContext(&r.con);
   if (r.scene_made) mjv_freeScene(&r.scene);
-  if (r.display != EGL_NO_DISPLAY) {
-    eglMakeCurrent(r.display, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
-    if (r.context != EGL_NO_CONTEXT) eglDestroyContext(r.display, r.context);
-    if (r.surface != EGL_NO_SURFACE) eglDestroySurface(r.display, r.surface);
-    eglTerminate(r.display);
-  }
   delete impl_;
   impl_ = nullptr;
 }
@@ -102,6 +63,7 @@ Renderer::~Renderer() {
 void Renderer::render(std::vector<std::uint8_t>& rgb) {
   Impl& r = *impl_;
   const int w = options_.width, h = options_.height;
+  if (!r.egl.make_current()) throw Error("offscreen rendering: eglMakeCurrent failed");
   mjv_updateScene(sim_.model(), const_cast<mjData*>(sim_.data()), &r.option, nullptr, &r.camera, mjCAT_ALL,
                   &r.scene);
   mjrRect viewport{0, 0, w, h};
@@ -133,7 +95,11 @@ bool Renderer::project(const Eigen::Vector3d& p, double& x, double& y) const {
   return true;
 }
 
-void write_png(const std::string& path, const std::vector<std::uint8_t>& rgb, int width, int height) {
+namespace {
+
+// A PNG of `height` rows of `row_bytes` bytes (16-bit samples big-endian, as PNG stores them).
+void write_png_rows(const std::string& path, const std::uint8_t* data, std::size_t row_bytes, int width, int height,
+                    int bit_depth, int colour_type) {
   std::FILE* f = std::fopen(path.c_str(), "wb");
   if (!f) throw Error("cannot write '" + path + "': " + std::strerror(errno));
   png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, nullptr, nullptr, nullptr);
@@ -144,14 +110,28 @@ void write_png(const std::string& path, const std::vector<std::uint8_t>& rgb, in
     throw Error("cannot write PNG '" + path + "'");
   }
   png_init_io(png, f);
-  png_set_IHDR(png, info, static_cast<png_uint_32>(width), static_cast<png_uint_32>(height), 8, PNG_COLOR_TYPE_RGB,
+  png_set_IHDR(png, info, static_cast<png_uint_32>(width), static_cast<png_uint_32>(height), bit_depth, colour_type,
                PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
   png_write_info(png, info);
-  for (int y = 0; y < height; ++y)
-    png_write_row(png, const_cast<png_bytep>(rgb.data() + static_cast<std::size_t>(y) * width * 3));
+  for (int y = 0; y < height; ++y) png_write_row(png, const_cast<png_bytep>(data + static_cast<std::size_t>(y) * row_bytes));
   png_write_end(png, nullptr);
   png_destroy_write_struct(&png, &info);
   if (std::fclose(f) != 0) throw Error("cannot write '" + path + "'");
+}
+
+}  // namespace
+
+void write_png(const std::string& path, const std::vector<std::uint8_t>& rgb, int width, int height) {
+  write_png_rows(path, rgb.data(), static_cast<std::size_t>(width) * 3, width, height, 8, PNG_COLOR_TYPE_RGB);
+}
+
+void write_png16(const std::string& path, const std::vector<std::uint16_t>& gray, int width, int height) {
+  std::vector<std::uint8_t> bytes(gray.size() * 2);
+  for (std::size_t i = 0; i < gray.size(); ++i) {
+    bytes[2 * i] = static_cast<std::uint8_t>(gray[i] >> 8);
+    bytes[2 * i + 1] = static_cast<std::uint8_t>(gray[i] & 0xff);
+  }
+  write_png_rows(path, bytes.data(), static_cast<std::size_t>(width) * 2, width, height, 16, PNG_COLOR_TYPE_GRAY);
 }
 
 namespace {

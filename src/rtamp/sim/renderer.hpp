@@ -1,6 +1,6 @@
 // Offscreen pictures of the simulation (docs/design.md "Headless by default; pictures and
-// videos through offscreen rendering"): EGL on Mesa's surfaceless platform (no display,
-// no X server), MuJoCo's renderer into its offscreen buffer, PNG through libpng, MP4
+// videos through offscreen rendering"): a headless EGL context (egl_context.hpp),
+// MuJoCo's renderer into its offscreen buffer, PNG through libpng, MP4
 // through a pipe to Debian's ffmpeg. Nothing here runs unless a Renderer is created, so
 // runs without pictures pay nothing.
 //
@@ -49,6 +49,8 @@ class Renderer {
 
 // Writes an RGB image as PNG. Throws rtamp::Error when the file cannot be written.
 void write_png(const std::string& path, const std::vector<std::uint8_t>& rgb, int width, int height);
+// Writes a 16-bit grey image (a depth map in mm) as PNG.
+void write_png16(const std::string& path, const std::vector<std::uint16_t>& gray, int width, int height);
 
 // Frames piped to `ffmpeg ... -c:v libx264 -pix_fmt yuv420p path`.
 class VideoWriter {

@@ -31,6 +31,7 @@ std::string show(int v) { return std::to_string(v); }
 std::string show(const std::optional<Vec3>& v) { return v ? show(*v) : "none"; }
 std::string show(const PropExpr& e) { return to_string(e); }
 std::string show(Intervention::Kind k) { return std::to_string(static_cast<int>(k)); }
+std::string show(Camera::Mount m) { return to_string(m); }
 
 class Diff {
  public:
@@ -103,6 +104,25 @@ std::string first_difference(const Scenario& a, const Scenario& b) {
       d.field(idx("operator", i) + ".class", x.cls, y.cls);
       d.field(idx("operator", i) + ".to", x.location, y.location);
       d.field(idx("operator", i) + ".position", x.position, y.position);
+    }
+  if (d.count("cameras", a.cameras.size(), b.cameras.size()))
+    for (std::size_t i = 0; i < a.cameras.size(); ++i) {
+      const Camera &x = a.cameras[i], &y = b.cameras[i];
+      const std::string c = idx("cameras", i);
+      d.field(c + ".name", x.name, y.name);
+      d.field(c + ".mount", x.mount, y.mount);
+      d.field(c + ".position", x.position, y.position);
+      d.field(c + ".look_at", x.look_at, y.look_at);
+      d.field(c + ".resolution.width", x.width, y.width);
+      d.field(c + ".resolution.height", x.height, y.height);
+      d.field(c + ".fov", x.fovy, y.fovy);
+      d.field(c + ".range.near", x.near, y.near);
+      d.field(c + ".range.far", x.far, y.far);
+      d.field(c + ".rate", x.rate, y.rate);
+      d.field(c + ".noise.a", x.noise.a, y.noise.a);
+      d.field(c + ".noise.b", x.noise.b, y.noise.b);
+      d.field(c + ".noise.quantum_mm", x.noise.quantum_mm, y.noise.quantum_mm);
+      d.field(c + ".noise.edge_dropout", x.noise.edge_dropout, y.noise.edge_dropout);
     }
   return d.out;
 }

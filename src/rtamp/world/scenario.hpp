@@ -20,6 +20,7 @@
 #include "rtamp/util/error.hpp"
 #include "rtamp/util/names_table.hpp"
 #include "rtamp/util/text_layout.hpp"
+#include "rtamp/world/camera.hpp"
 
 namespace rtamp::world {
 
@@ -164,6 +165,7 @@ struct Scenario {
   SourceLocation task_where;  // of the task's first byte
   TextLayout task_layout;     // of a block scalar task (| or >) in its file; empty otherwise
   std::vector<Intervention> interventions;  // sorted by time
+  std::vector<Camera> cameras;              // as listed (world/camera.hpp: cameras_of() adds defaults)
   std::string source;                       // file it was loaded from ("" if generated)
 
   const Region* find_region(const std::string& n) const;

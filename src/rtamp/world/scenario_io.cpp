@@ -60,10 +60,14 @@ bool valid_utf8(std::string_view s) {
 }
 
 const std::vector<std::string> kRootKeys = {"name",    "description", "robot",        "regions", "containers",
-                                            "objects", "propositions", "task",        "operator"};
+                                            "objects", "propositions", "task",        "operator",
+                                            "cameras"};
 const std::vector<std::string> kRegionKeys = {"name", "center", "size", "capacity"};
 const std::vector<std::string> kContainerKeys = {"name", "class", "position", "size", "capacity"};
 const std::vector<std::string> kObjectKeys = {"name", "class", "position", "size"};
+const std::vector<std::string> kCameraKeys = {"name", "mount", "position", "look_at", "resolution",
+                                              "fov",  "range", "rate",     "noise"};
+const std::vector<std::string> kNoiseKeys = {"a", "b", "quantum_mm", "edge_dropout"};
 const std::vector<std::string> kRobotKeys = {"model", "base", "yaw"};
 
 struct ActionSpec {
@@ -129,6 +133,8 @@ class Reader {
     }
     if (auto o = optional(root, "operator"))
       for_each_item(*o, "operator", [&](const YAML::Node& n) { s.interventions.push_back(read_intervention(n)); });
+    if (auto c = optional(root, "cameras"))
+      for_each_item(*c, "cameras", [&](const YAML::Node& n) { s.cameras.push_back(read_camera(n)); });
     std::stable_sort(s.interventions.begin(), s.interventions.end(),
                      [](const Intervention& a, const Intervention& b) { return a.time < b.time; });
 
@@ -439,6 +445,77 @@ class Reader {
     return o;
   }
 
+  Camera read_camera(const YAML::Node& n) {
+    if (!n.IsMap())
+      fail(n, "a camera must be a mapping {name, mount, position, look_at, resolution, fov, range, rate, noise}, found " +
+                  describe(n));
+    check_keys(n, kCameraKeys, "camera");
+    const SourceLocation where = loc(n);
+    const std::string name = element_name(n, "camera", where);
+    const std::string owner = "camera " + quoted(name);
+    Camera::Mount mount = Camera::Mount::Fixed;
+    if (auto m = optional(n, "mount")) {
+      remember(where, "mount", *m);
+      const std::string text = word(*m, owner + ": mount");
+      if (text == "wrist") mount = Camera::Mount::Wrist;
+      else if (text != "fixed") fail(*m, owner + ": unknown mount " + quoted(text) + " (fixed or wrist)");
+    }
+    Camera c = default_camera(mount);
+    c.name = name;
+    c.where = where;
+    if (auto p = optional(n, "position")) {
+      remember(c.where, "position", *p);
+      c.position = vec(*p, owner + ": position", 3);
+    } else if (c.mount == Camera::Mount::Fixed) {
+      fail(n, owner + " is missing the required key 'position' (a fixed camera)");
+    }
+    if (auto l = optional(n, "look_at")) {
+      remember(c.where, "look_at", *l);
+      if (c.mount == Camera::Mount::Wrist) fail(*l, owner + ": a wrist camera looks along the tool axis (no look_at)");
+      c.look_at = vec(*l, owner + ": look_at", 2);
+    } else if (c.mount == Camera::Mount::Fixed) {
+      fail(n, owner + " is missing the required key 'look_at' (a fixed camera)");
+    }
+    if (auto r = optional(n, "resolution")) {
+      remember(c.where, "resolution", *r);
+      if (!r->IsSequence() || r->size() != 2) fail(*r, owner + ": resolution must be a list [width, height]");
+      c.width = integer((*r)[0], owner + ": resolution");
+      c.height = integer((*r)[1], owner + ": resolution");
+    }
+    if (auto f = optional(n, "fov")) {
+      remember(c.where, "fov", *f);
+      c.fovy = number(*f, owner + ": fov");
+    }
+    if (auto r = optional(n, "range")) {
+      remember(c.where, "range", *r);
+      if (!r->IsSequence() || r->size() != 2) fail(*r, owner + ": range must be a list [near, far] (m)");
+      c.near = number((*r)[0], owner + ": range");
+      c.far = number((*r)[1], owner + ": range");
+    }
+    if (auto r = optional(n, "rate")) {
+      remember(c.where, "rate", *r);
+      c.rate = number(*r, owner + ": rate");
+    }
+    if (auto z = optional(n, "noise")) {
+      remember(c.where, "noise", *z);
+      if (!z->IsMap()) fail(*z, owner + ": noise must be a mapping {a, b, quantum_mm, edge_dropout}, found " + describe(*z));
+      check_keys(*z, kNoiseKeys, owner + " noise");
+      auto field = [&](const char* key, double& out) {
+        if (auto v = optional(*z, key)) {
+          out = number(*v, owner + ": noise " + key);
+          if (!(out >= 0)) fail(*v, owner + ": noise " + key + " must not be negative");
+        }
+      };
+      field("a", c.noise.a);
+      field("b", c.noise.b);
+      field("quantum_mm", c.noise.quantum_mm);
+      field("edge_dropout", c.noise.edge_dropout);
+      if (auto v = optional(*z, "edge_dropout"); v && c.noise.edge_dropout > 1)
+        fail(*v, owner + ": noise edge_dropout is a probability (at most 1)");
+    }
+    return c;
+  }
+
   void read_propositions(const YAML::Node& n, std::vector<Proposition>& out) {
     if (!n.IsMap())
       fail(n, "propositions must be a mapping of name: \"expression\" (e.g. all_in_r2: \"all block in r2\"), found " +
@@ -660,6 +737,17 @@ std::string to_yaml(const Scenario& s) {
       if (!iv.location.empty()) out << ", to: " << str(iv.location);
       if (iv.position) out << ", position: " << vec(*iv.position);
       out << "}\n";
+    }
+  }
+  if (!s.cameras.empty()) {
+    out << "cameras:\n";
+    for (const Camera& c : s.cameras) {
+      out << "  - {name: " << str(c.name) << ", mount: " << to_string(c.mount) << ", position: " << vec(c.position);
+      if (c.mount == Camera::Mount::Fixed) out << ", look_at: " << vec(c.look_at);
+      out << ", resolution: [" << c.width << ", " << c.height << "], fov: " << num(c.fovy) << ", range: ["
+          << num(c.near) << ", " << num(c.far) << "], rate: " << num(c.rate) << ", noise: {a: " << num(c.noise.a)
+          << ", b: " << num(c.noise.b) << ", quantum_mm: " << num(c.noise.quantum_mm)
+          << ", edge_dropout: " << num(c.noise.edge_dropout) << "}}\n";
     }
   }
   return out.str();

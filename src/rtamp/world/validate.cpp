@@ -53,6 +53,7 @@ class Validator {
     if (std::all_of(s_.task.begin(), s_.task.end(), [](char c) { return std::isspace(static_cast<unsigned char>(c)); }))
       fail(s_.task_where, "the task is empty (write an LTL formula over the propositions, e.g. \"F G all_in_r2\")");
     check_interventions();
+    check_cameras();
   }
 
  private:
@@ -134,6 +135,46 @@ class Validator {
       check_class(o.cls, owner, o.where);
       check_vec(o.position, owner, "position", o.where);
       check_size(o.size, 3, owner, o.where);
+    }
+  }
+
+  void check_cameras() const {
+    std::map<std::string, SourceLocation> seen;
+    for (const Camera& c : s_.cameras) {
+      check_name(c.name, "camera", c.where);
+      const std::string owner = "camera " + quote(c.name);
+      if (!seen.emplace(c.name, c.where).second) fail(at(c.where, "name"), "duplicate camera name " + quote(c.name));
+      check_vec(c.position, owner, "position", c.where);
+      for (int v : {c.width, c.height})
+        if (v < kMinCameraPixels || v > kMaxCameraPixels)
+          fail(at(c.where, "resolution"), owner + ": resolution " + std::to_string(c.width) + "x" +
+                                              std::to_string(c.height) + " is out of range (16 to 4096 pixels a side)");
+      if (!(c.fovy > 0 && c.fovy < 180))
+        fail(at(c.where, "fov"), owner + ": field of view " + fmt(c.fovy) + " is outside (0, 180) degrees");
+      if (!(c.near > 0 && c.near < c.far && c.far <= kMaxCameraRange))
+        fail(at(c.where, "range"), owner + ": range [" + fmt(c.near) + ", " + fmt(c.far) +
+                                       "] must be near > 0, far > near, far at most 100 m");
+      if (!(c.rate > 0 && c.rate <= kMaxCameraRate))
+        fail(at(c.where, "rate"), owner + ": rate " + fmt(c.rate) + " Hz is out of range (above 0, at most 1000)");
+      const DepthNoise& z = c.noise;
+      if (!(z.a <= 1 && z.b <= 1 && z.quantum_mm <= 100 && z.edge_dropout <= 1))
+        fail(at(c.where, "noise"), owner + ": noise out of range (a, b at most 1, quantum_mm at most 100, "
+                                           "edge_dropout at most 1)");
+      if (c.mount == Camera::Mount::Wrist) {
+        if (!(std::abs(c.position[0]) <= 0.5 && std::abs(c.position[1]) <= 0.5 && std::abs(c.position[2]) <= 0.5))
+          fail(at(c.where, "position"), owner + ": a wrist camera's position " + fmt(c.position) +
+                                            " (in the flange frame) must be within 0.5 m of the flange");
+        continue;
+      }
+      check_vec(c.look_at, owner, "look_at", c.where);
+      if (!(c.position[2] > 0))
+        fail(at(c.where, "position"), owner + ": position " + fmt(c.position) +
+                                          " is inside or below the table (a fixed camera must be above z = 0)");
+      if (c.position == c.look_at) fail(at(c.where, "look_at"), owner + ": look_at is the camera's own position");
+      const bool sees = std::any_of(s_.regions.begin(), s_.regions.end(),
+                                    [&](const Region& r) { return fixed_camera_sees(c, r.center); });
+      if (!sees)
+        fail(at(c.where, "look_at"), owner + " sees no region (no region's centre is inside its view within its range)");
     }
   }
 

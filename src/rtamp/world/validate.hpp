@@ -24,7 +24,12 @@
 // intervention; classes of such things, or "object"); the task is not blank;
 // interventions are sorted by time, times are finite and >= 0, and each names
 // things that exist at its time, a target location that exists then (a
-// container only for objects), and a position inside its target region.
+// container only for objects), and a position inside its target region;
+// cameras (camera.hpp) have unique identifier names, a resolution of 16 to 4096
+// pixels a side, a field of view in (0°, 180°), a range 0 < near < far <= 100 m,
+// a rate in (0, 1000] Hz, noise within bounds; a fixed camera stands above the
+// table top (z > 0), does not look at itself and sees some region's centre; a
+// wrist camera sits within 0.5 m of the flange.
 #pragma once
 
 #include <functional>

@@ -1,0 +1,170 @@
+#include "rtamp/sim/camera_rig.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+
+#include "rtamp/sim/depth_noise.hpp"
+#include "rtamp/sim/egl_context.hpp"
+#include "rtamp/sim/mjcf_builder.hpp"
+#include "rtamp/util/error.hpp"
+
+namespace rtamp::sim {
+
+namespace {
+
+int max_width(const std::vector<world::Camera>& cs) {
+  int w = world::kMinCameraPixels;
+  for (const auto& c : cs) w = std::max(w, c.width);
+  return w;
+}
+int max_height(const std::vector<world::Camera>& cs) {
+  int h = world::kMinCameraPixels;
+  for (const auto& c : cs) h = std::max(h, c.height);
+  return h;
+}
+
+// Rows of a bottom-up image of `row` bytes each, top row first.
+template <class T>
+void flip_rows(const std::vector<T>& in, std::vector<T>& out, std::size_t row, int height) {
+  out.resize(in.size());
+  for (int y = 0; y < height; ++y)
+    std::memcpy(out.data() + row * y, in.data() + row * (height - 1 - y), row * sizeof(T));
+}
+
+}  // namespace
+
+struct CameraRig::Impl {
+  Impl(int width, int height) : egl(width, height) {}
+  EglContext egl;
+  mjvScene scene;
+  mjvOption option;
+  mjvCamera camera;
+  mjrContext con;
+  bool scene_made = false, con_made = false;
+  std::vector<std::uint8_t> rgb, seg;
+  std::vector<float> depth;
+};
+
+CameraRig::CameraRig(const Simulation& sim, std::vector<world::Camera> cameras, std::uint64_t seed)
+    : sim_(sim), cameras_(std::move(cameras)), rng_(seed) {
+  const mjModel* m = sim_.model();
+  for (const auto& c : cameras_) {
+    const int id = mj_name2id(m, mjOBJ_CAMERA, mujoco_camera_name(c.name).c_str());
+    if (id < 0) throw Error("camera '" + c.name + "' is not in the simulation's model");
+    mj_camera_.push_back(id);
+  }
+  const int w = max_width(cameras_), h = max_height(cameras_);
+  if (m->vis.global.offwidth < w || m->vis.global.offheight < h)
+    throw Error("the model's offscreen buffer is smaller than the cameras' images");
+  impl_ = std::make_unique<Impl>(w, h);
+  Impl& r = *impl_;
+  mjv_defaultScene(&r.scene);
+  mjv_defaultOption(&r.option);
+  mjv_defaultCamera(&r.camera);
+  mjr_defaultContext(&r.con);
+  mjv_makeScene(m, &r.scene, 2000);
+  r.scene_made = true;
+  // No multisampling: a pixel shows one surface, so its depth, colour and segment
+  // belong to the same point (as a depth sensor's do).
+  mjModel* mm = const_cast<mjModel*>(m);
+  const int samples = mm->vis.quality.offsamples;
+  mm->vis.quality.offsamples = 0;
+  mjr_makeContext(m, &r.con, mjFONTSCALE_100);
+  mm->vis.quality.offsamples = samples;
+  r.con_made = true;
+  mjr_setBuffer(mjFB_OFFSCREEN, &r.con);
+  if (r.con.currentBuffer != mjFB_OFFSCREEN) throw Error("offscreen rendering unavailable: no offscreen buffer");
+  r.scene.flags[mjRND_SHADOW] = 0;
+  r.scene.flags[mjRND_REFLECTION] = 0;
+  r.scene.flags[mjRND_SKYBOX] = 0;
+  r.camera.type = mjCAMERA_FIXED;
+  for (int g = 0; g < mjNGROUP; ++g) r.option.sitegroup[g] = 0;  // sites are markers, not matter
+}
+
+CameraRig::~CameraRig() {
+  if (!impl_) return;
+  Impl& r = *impl_;
+  r.egl.make_current();  // free this context's GL objects, not another's
+  if (r.con_made) mjr_freeContext(&r.con);
+  if (r.scene_made) mjv_freeScene(&r.scene);
+}
+
+std::size_t CameraRig::index(const std::string& name, const SourceLocation& where) const {
+  const world::Camera& c = world::find_camera(cameras_, name, where);
+  return static_cast<std::size_t>(&c - cameras_.data());
+}
+
+Intrinsics CameraRig::intrinsics(std::size_t camera) const {
+  const world::Camera& c = cameras_.at(camera);
+  Intrinsics k;
+  k.width = c.width;
+  k.height = c.height;
+  k.fy = 0.5 * c.height / std::tan(c.fovy / 2 * 3.14159265358979323846 / 180);
+  k.fx = k.fy;  // square pixels
+  k.cx = 0.5 * c.width - 0.5;  // OpenGL's pixel centres are at +0.5
+  k.cy = 0.5 * c.height - 0.5;
+  return k;
+}
+
+Extrinsics CameraRig::extrinsics(std::size_t camera) const {
+  const int id = mj_camera_.at(camera);
+  const mjData* d = sim_.data();
+  const mjtNum* p = d->cam_xpos + 3 * id;
+  const mjtNum* x = d->cam_xmat + 9 * id;  // row-major; columns: MuJoCo's camera x, y, z in the world
+  Extrinsics e;
+  for (int j = 0; j < 3; ++j) {
+    e.R(0, j) = x[3 * j + 0];   // OpenCV x = MuJoCo x
+    e.R(1, j) = -x[3 * j + 1];  // OpenCV y = -MuJoCo y
+    e.R(2, j) = -x[3 * j + 2];  // OpenCV z = -MuJoCo z
+  }
+  e.t = -e.R * Eigen::Vector3d(p[0], p[1], p[2]);
+  return e;
+}
+
+void CameraRig::render(std::size_t camera, CameraImage& out, CameraPasses passes) {
+  const world::Camera& c = cameras_.at(camera);
+  Impl& r = *impl_;
+  if (!r.egl.make_current()) throw Error("offscreen rendering: eglMakeCurrent failed");
+  const mjModel* m = sim_.model();
+  const int w = c.width, h = c.height;
+  const std::size_t n = static_cast<std::size_t>(w) * h;
+  r.camera.fixedcamid = mj_camera_[camera];
+  mjv_updateScene(m, const_cast<mjData*>(sim_.data()), &r.option, nullptr, &r.camera, mjCAT_ALL, &r.scene);
+  const mjrRect viewport{0, 0, w, h};
+  mjr_render(viewport, &r.scene, &r.con);
+  r.rgb.resize(n * 3);
+  r.depth.resize(n);
+  mjr_readPixels(r.rgb.data(), r.depth.data(), viewport, &r.con);
+  out.width = w;
+  out.height = h;
+  out.intrinsics = intrinsics(camera);
+  out.extrinsics = extrinsics(camera);
+  flip_rows(r.rgb, out.rgb, static_cast<std::size_t>(w) * 3, h);
+  flip_rows(r.depth, out.depth, static_cast<std::size_t>(w), h);
+  // z = n / (1 - d (1 - n/f)): the z-buffer linearised (MuJoCo's clip planes).
+  const double zn = m->vis.map.znear * m->stat.extent, zf = m->vis.map.zfar * m->stat.extent;
+  for (float& d : out.depth) {
+    const double z = zn / (1 - d * (1 - zn / zf));
+    d = z >= c.near && z <= c.far ? static_cast<float>(z) : 0.0f;
+  }
+  if (passes.noise) apply_depth_noise(out.depth, w, h, c.noise, rng_);
+  out.body.clear();
+  if (!passes.segmentation) return;
+  r.scene.flags[mjRND_SEGMENT] = 1;
+  r.scene.flags[mjRND_IDCOLOR] = 1;
+  mjr_render(viewport, &r.scene, &r.con);
+  r.scene.flags[mjRND_SEGMENT] = 0;
+  r.scene.flags[mjRND_IDCOLOR] = 0;
+  mjr_readPixels(r.rgb.data(), nullptr, viewport, &r.con);
+  flip_rows(r.rgb, r.seg, static_cast<std::size_t>(w) * 3, h);
+  out.body.assign(n, -1);
+  for (std::size_t i = 0; i < n; ++i) {
+    const int id = r.seg[3 * i] + 256 * r.seg[3 * i + 1] + 65536 * r.seg[3 * i + 2];  // segid + 1
+    if (id == 0 || id > r.scene.ngeom) continue;
+    const mjvGeom& g = r.scene.geoms[id - 1];
+    if (g.objtype == mjOBJ_GEOM && g.objid >= 0) out.body[i] = m->geom_bodyid[g.objid];
+  }
+}
+
+}  // namespace rtamp::sim

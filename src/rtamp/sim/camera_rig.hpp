@@ -1,0 +1,66 @@
+// The scenario's cameras rendered headless from the running simulation
+// (docs/perception.md): for a named camera, its RGB image, its metric depth (the
+// z-buffer linearised, outside the camera's range 0, then its noise model applied),
+// and MuJoCo's segmentation pass mapped to body ids, with intrinsics and extrinsics in
+// OpenCV's convention (pinhole.hpp). The segmentation pass is the truth of which body
+// a pixel shows: tests score perception against it; perception itself must not use it.
+//
+// Invariants: one rig owns one EGL context (egl_context.hpp) and MuJoCo render context,
+// sized for the largest camera, without multisampling (a pixel's colour, depth and
+// segment belong to one surface point); images are top row first; a wrist camera's extrinsics
+// follow the arm (computed from the simulation's current state); the depth noise is
+// drawn from the rig's own generator, so a seed gives the same images.
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "rtamp/sim/pinhole.hpp"
+#include "rtamp/sim/simulation.hpp"
+#include "rtamp/world/camera.hpp"
+
+namespace rtamp::sim {
+
+struct CameraImage {
+  int width = 0, height = 0;
+  std::vector<std::uint8_t> rgb;  // 3 bytes a pixel
+  std::vector<float> depth;       // m along the optical axis; 0 = no reading
+  std::vector<int> body;          // segmentation pass: MuJoCo body id; -1 = background (or no body)
+  Intrinsics intrinsics;
+  Extrinsics extrinsics;
+};
+
+struct CameraPasses {
+  bool noise = true;         // apply the camera's depth noise
+  bool segmentation = true;  // render the segmentation pass (a second render)
+};
+
+class CameraRig {
+ public:
+  // Throws rtamp::Error when offscreen rendering is unavailable or a camera is not
+  // in the simulation's model (mjcf_builder.hpp names them).
+  CameraRig(const Simulation& sim, std::vector<world::Camera> cameras, std::uint64_t seed = 1);
+  ~CameraRig();
+  CameraRig(const CameraRig&) = delete;
+  CameraRig& operator=(const CameraRig&) = delete;
+
+  const std::vector<world::Camera>& cameras() const { return cameras_; }
+  // Index of the named camera; rtamp::Error "unknown camera 'x' (cameras: ...)" at `where`.
+  std::size_t index(const std::string& name, const SourceLocation& where) const;
+  Intrinsics intrinsics(std::size_t camera) const;
+  Extrinsics extrinsics(std::size_t camera) const;  // at the simulation's current state
+  void render(std::size_t camera, CameraImage& out, CameraPasses passes = {});
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+  const Simulation& sim_;
+  std::vector<world::Camera> cameras_;
+  std::vector<int> mj_camera_;  // MuJoCo camera id of each
+  std::mt19937_64 rng_;
+};
+
+}  // namespace rtamp::sim
