@@ -9,9 +9,9 @@ pybind11's text kept below it. Only a definite mismatch against a single
 signature is renamed (builtin types and the module's own classes); anything
 else (overloads, container types) keeps pybind11's message unchanged.
 The methods of classes Python code overrides (World, EpisodeObserver,
-CostModel and their subclasses) are left alone: pybind11 finds an override
-by looking for a method that is not its own, so a wrapper there would be
-taken for one.
+CostModel and their subclasses) get their wrapper as a compiled method
+(_rtamp._as_method): pybind11 finds an override by looking for a method that
+is not its own, and would take a Python wrapper for one.
 """
 
 import functools
@@ -102,6 +102,14 @@ def _renamed(what, doc, args, kwargs, core, error):
     return None
 
 
+def _better(error, shown, doc, args, kwargs, core):
+    """The renamed TypeError for pybind11's `error`, or None to keep it."""
+    text = str(error)
+    if not any(s in text for s in _INCOMPATIBLE):
+        return None
+    return _renamed(shown, doc, args, kwargs, core, text)
+
+
 def _wrap(function, shown, skip, core):
     """`function` raising the renamed TypeError; `shown`: its name in messages; `skip`: leading args not in
     the signature's list (the instance of a constructor)."""
@@ -112,16 +120,31 @@ def _wrap(function, shown, skip, core):
         try:
             return function(*args, **kwargs)
         except TypeError as e:
-            text = str(e)
-            if not any(s in text for s in _INCOMPATIBLE):
-                raise
-            better = _renamed(shown, doc, args[skip:], kwargs, core, text)
+            better = _better(e, shown, doc, args[skip:], kwargs, core)
             if better is None:
                 raise
             raise better from None
     if skip == 0 and "." not in shown:  # pickled by reference as rtamp.NAME (Dask ships functions so)
         call.__module__, call.__qualname__ = "rtamp", shown
     return call
+
+
+def _wrap_overridable(function, shown, attr, core):
+    """A method of a class Python overrides, wrapped like _wrap. pybind11 takes a call made from a
+    frame named after the method whose first argument is the instance for `super().attr()` from an
+    override (and then runs the C++ method, not the override again): this wrapper is such a frame."""
+    doc = function.__doc__
+
+    def method(self, *args, **kwargs):
+        try:
+            return function(self, *args, **kwargs)
+        except TypeError as e:
+            better = _better(e, shown, doc, args, kwargs, core)
+            if better is None:
+                raise
+            raise better from None
+    method.__code__ = method.__code__.replace(co_name=attr)
+    return method
 
 
 def name_arguments(namespace, core):
@@ -137,8 +160,11 @@ def name_arguments(namespace, core):
                 kind = type(member).__name__
                 if attr == "__init__" and kind == "instancemethod":
                     value.__init__ = _wrap(member, name, 1, core)
-                elif attr.startswith("_") or issubclass(value, overridden):
+                elif attr.startswith("_"):
                     continue
+                elif kind == "instancemethod" and issubclass(value, overridden):
+                    wrapper = _wrap_overridable(member, f"{name}.{attr}", attr, core)
+                    setattr(value, attr, core._as_method(value, attr, wrapper, member.__doc__ or ""))
                 elif kind == "instancemethod":
                     setattr(value, attr, _wrap(member, f"{name}.{attr}", 1, core))
                 elif kind == "staticmethod":

@@ -4,6 +4,8 @@
 // "file:line:col: message", the same line the CLI prints after "rtamp: error: ".
 // A value of the wrong type that pybind11 could not convert (py::cast_error, e.g.
 // what a Python override returned) is a TypeError, not pybind11's RuntimeError.
+// _as_method makes a Python callable a method pybind11 takes for its own, so wrapping a
+// method of a class Python overrides (rtamp/_arguments.py) is not mistaken for an override.
 #include "bindings.hpp"
 
 namespace rtamp::python {
@@ -31,6 +33,15 @@ void bind_errors(py::module_& m) {
       PyErr_SetString(PyExc_TypeError, e.what());
     }
   });
+  m.def(
+      "_as_method",
+      [](py::type cls, const std::string& name, py::function call, const std::string& doc) {
+        py::options options;  // the doc is the wrapped method's, signature line included
+        options.disable_function_signatures();
+        return py::cpp_function([call](py::args args, py::kwargs kwargs) { return call(*args, **kwargs); },
+                                py::name(name.c_str()), py::is_method(cls), py::doc(doc.c_str()));
+      },
+      "Internal: `call` as a method of `cls` that pybind11's override lookup takes for a C++ one.");
 }
 
 }  // namespace rtamp::python

@@ -201,3 +201,45 @@ def test_a_value_pybind11_cannot_convert_is_a_type_error_naming_its_type():
     with pytest.raises(TypeError, match=r"Unable to cast Python instance of type <class 'int'>") as e:
         p.set_placement({"o1": (3, "block")})
     assert "PYBIND11_DETAILED_ERROR_MESSAGES" not in str(e.value)
+
+
+# The classes Python overrides name a wrong argument too, and an override is still found.
+@pytest.mark.parametrize("call, text", [
+    (lambda s: rtamp.SymbolicWorld(s).advance("soon"), "World.advance(): argument 'dt' must be float, not str"),
+    (lambda s: rtamp.SymbolicWorld(s).start(3), "World.start(): argument 'move' must be Move, not int"),
+    (lambda s: rtamp.SymbolicWorld(s).apply("add"),
+     "SymbolicWorld.apply(): argument 'intervention' must be Intervention, not str"),
+    (lambda s: rtamp.cost_model("euclid", s).cost(3), "CostModel.cost(): argument 'query' must be MotionQuery, not int"),
+])
+def test_a_wrong_argument_to_a_method_of_an_overridable_class_is_named(call, text):
+    s = rtamp.load_scenario("3-block")
+    with pytest.raises(TypeError) as e:
+        call(s)
+    assert str(e.value).partition("\n")[0] == text
+
+
+def test_overrides_are_still_found_and_defaults_still_reached():
+    calls = []
+
+    class Counting(rtamp.CostModel):
+        def cost(self, q):  # lower_bound, depends, expensive: the C++ defaults
+            calls.append(q.thing_name)
+            return 1.0
+
+    s = rtamp.load_scenario("3-block")
+    plan = rtamp.Planner(s, cost=Counting()).plan()
+    assert plan.found and calls
+    assert Counting().expensive() in (True, False)  # the default through the wrapper, no recursion
+    assert rtamp.CostModel.cost.__doc__.startswith("cost(self")
+
+
+def test_an_override_may_call_the_cpp_default_through_super():
+    class Bounded(rtamp.CostModel):
+        def cost(self, q):
+            return 1.0
+
+        def lower_bound(self, q, to_anywhere):
+            return super().lower_bound(q, to_anywhere)  # the C++ default (0), not this method again
+
+    plan = rtamp.Planner(rtamp.load_scenario("3-block"), algorithm="astar", cost=Bounded()).plan()
+    assert plan.found
