@@ -1,7 +1,7 @@
 // One camera frame of the default overhead camera (640x480) on the 3-block-tray
-// scenario, arm at home (docs/perception.md; issue 25's bar is a tenth of a 10 Hz frame
-// period, median, on one core, for render + segment + fit + belief — only the render
-// exists yet):
+// scenario, arm at home (docs/perception.md; the bar for a whole perception frame —
+// render, segment, fit, belief — is a tenth of a 10 Hz frame period, median, on one
+// core; only the render exists yet):
 //   BM_CameraFrame/0/1   RGB + linearised depth + depth noise
 //   BM_CameraFrame/0/0   the same without the depth noise
 //   BM_CameraFrame/1/1   RGB + depth + noise + the segmentation pass (a second render; tests only)

@@ -285,28 +285,41 @@ const cases = {
 
   async take() {
     await withPage([scenario('3-block-tray'), '--world', 'symbolic', '--no-operator'], async ({ page, ws }) => {
-      // Pause while the robot holds something (it may put it down before the pause
-      // arrives: then resume and wait for the next one).
+      // Pause while the robot holds something and take it. The page knows what the last
+      // frame showed; the world may have put the thing down after that frame and before
+      // the pause took effect: then the take is refused ("nothing in the gripper"),
+      // and the test resumes and waits for the next thing held.
       let held = null;
       for (let attempt = 0; attempt < 10 && !held; attempt++) {
         await waitFor(() => page.evaluate(() => window.rtamp.held), 'the robot holding a thing');
         await page.click('#pause');
         await waitFor(() => page.evaluate(() => window.rtamp.state?.paused), 'the pause');
         held = await page.evaluate(() => window.rtamp.held);
-        if (!held) await page.click('#pause');
+        if (!held) {
+          await page.click('#pause');
+          continue;
+        }
+        // While it carries something the arm is drawn from the streamed joint angles (the
+        // server's IK for the symbolic world's tool point) reaching that point, elbow and
+        // wrist above it (never through the table or a tray).
+        const [tool, streamed, points] = await page.evaluate(() => [window.rtamp.tool, window.rtamp.streamedTool, window.rtamp.armPoints]);
+        const q = lastFrame(ws)?.q;
+        assert.equal(q?.length, 6, 'the frame carries six joint angles');
+        assert.ok(Math.hypot(...tool.map((v, i) => v - streamed[i])) < 0.01, `drawn tool ${tool} vs streamed ${streamed}`);
+        for (const k of [2, 3, 4]) assert.ok(points[k][2] > streamed[2], `link frame ${k} at ${points[k]} below the tool ${streamed}`);
+        const replies = () => ws.received.filter((m) => m.type === 'reply');
+        const before = replies().length;
+        await page.selectOption('#take-to', 'r1');
+        await page.click('#take');
+        const reply = await waitFor(() => replies()[before], 'the reply to the take');
+        await page.click('#pause'); // resume
+        if (!reply.ok) {
+          assert.match(reply.error, /nothing in the gripper/, JSON.stringify(reply));
+          held = null;
+          await waitFor(() => page.evaluate(() => !window.rtamp.held), 'a frame with the gripper empty');
+        }
       }
-      assert.ok(held, 'paused while the robot held a thing');
-      // While it carries something the arm is drawn from the streamed joint angles (the
-      // server's IK for the symbolic world's tool point) reaching that point, elbow and
-      // wrist above it (never through the table or a tray).
-      const [tool, streamed, points] = await page.evaluate(() => [window.rtamp.tool, window.rtamp.streamedTool, window.rtamp.armPoints]);
-      const q = lastFrame(ws)?.q;
-      assert.equal(q?.length, 6, 'the frame carries six joint angles');
-      assert.ok(Math.hypot(...tool.map((v, i) => v - streamed[i])) < 0.01, `drawn tool ${tool} vs streamed ${streamed}`);
-      for (const k of [2, 3, 4]) assert.ok(points[k][2] > streamed[2], `link frame ${k} at ${points[k]} below the tool ${streamed}`);
-      await page.selectOption('#take-to', 'r1');
-      await page.click('#take');
-      await page.click('#pause'); // resume
+      assert.ok(held, 'took a thing from the gripper while the robot held it');
       const { intervention } = await reaction(ws, (x) => x.ev === 'intervention' && x.kind === 'take-from-gripper', 'the take and the reaction');
       assert.equal(intervention.applied, true, JSON.stringify(intervention));
       assert.equal(intervention.subject, held);
