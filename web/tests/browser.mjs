@@ -294,8 +294,12 @@ const cases = {
         await waitFor(() => page.evaluate(() => window.rtamp.held), 'the robot holding a thing');
         await page.click('#pause');
         await waitFor(() => page.evaluate(() => window.rtamp.state?.paused), 'the pause');
+        // Frames the server sent before the pause took effect may still arrive and show
+        // the gripper empty (the take button is then disabled): let them land first.
+        await page.waitForTimeout(300);
         held = await page.evaluate(() => window.rtamp.held);
-        if (!held) {
+        if (!held || !(await page.isEnabled('#take'))) {
+          held = null;
           await page.click('#pause');
           continue;
         }
@@ -310,7 +314,14 @@ const cases = {
         const replies = () => ws.received.filter((m) => m.type === 'reply');
         const before = replies().length;
         await page.selectOption('#take-to', 'r1');
-        await page.click('#take');
+        try {
+          await page.click('#take', { timeout: 3000 });
+        } catch (e) {
+          // A late frame disabled the button after all: resume and try the next thing held.
+          held = null;
+          await page.click('#pause');
+          continue;
+        }
         const reply = await waitFor(() => replies()[before], 'the reply to the take');
         await page.click('#pause'); // resume
         if (!reply.ok) {
