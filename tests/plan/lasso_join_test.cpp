@@ -179,7 +179,9 @@ TEST(LassoJoin, PatrolCostsEqualTheBestTsLasso) {
   std::mt19937 rng(606);
   const char* models[] = {"euclid", "unit"};
   int found = 0, improved = 0, equal = 0, several_turns = 0;
-  for (int trial = 0; trial < 80; ++trial) {
+  // Under the sanitizers (about 10x slower) 30 scenarios; the Release run checks 80.
+  const int trials = RTAMP_SANITIZER_BUILD ? 30 : 80;
+  for (int trial = 0; trial < trials; ++trial) {
     const Spelled& task = kTasks[trial % 5];
     const std::string model = models[(trial / 5) % 2];
     const world::Scenario sc = patrol_scenario(rng, task.one);
@@ -226,8 +228,8 @@ TEST(LassoJoin, PatrolCostsEqualTheBestTsLasso) {
   std::printf("%d scenarios with a plan, %d cheaper than the old lasso shape, %d equal to the TS optimum, %d whose "
               "best lasso turns its TS cycle several times\n",
               found, improved, equal, several_turns);
-  EXPECT_GT(found, 50);
-  EXPECT_GT(improved, 5);  // the old lasso shape (cycle through the prefix's accepting node) cost more there
+  EXPECT_GT(found, trials * 5 / 8);
+  EXPECT_GT(improved, trials / 16);  // the old lasso shape (cycle through the prefix's accepting node) cost more there
   EXPECT_EQ(equal, found);
 }
 

@@ -158,8 +158,10 @@ TEST(Ur5Kinematics, IkFindsEverySolutionANumericalSolverFinds) {
     e.tail<3>() = aa.angle() * aa.axis();
     return e;
   };
+  // Under the sanitizers (about 10x slower) 40 poses; the Release run checks 150.
+  const int poses = RTAMP_SANITIZER_BUILD ? 40 : 150;
   int converged = 0;
-  for (int i = 0; i < 150; ++i) {
+  for (int i = 0; i < poses; ++i) {
     const Joints q = random_joints(rng, -std::numbers::pi, std::numbers::pi);
     const Isometry3d target = k.flange_pose(q);
     IkSolutions sols;
@@ -186,7 +188,7 @@ TEST(Ur5Kinematics, IkFindsEverySolutionANumericalSolverFinds) {
       ASSERT_LT(best, 1e-5) << "numerical IK found a solution the closed form missed (pose " << i << ")";
     }
   }
-  EXPECT_GT(converged, 500);
+  EXPECT_GT(converged, poses * 10 / 3);
 }
 
 TEST(Ur5Kinematics, IkWithTighterLimitsStaysInside) {
