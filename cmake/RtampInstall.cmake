@@ -70,7 +70,7 @@ string(STRIP "${RTAMP_PC_MUJOCO_LIBS}" RTAMP_PC_MUJOCO_LIBS)
 file(RELATIVE_PATH RTAMP_PC_PREFIX /prefix/${CMAKE_INSTALL_LIBDIR}/pkgconfig /prefix)
 set(RTAMP_PC_OMPL -lompl)
 set(RTAMP_PC_MUJOCO -lmujoco)
-set(RTAMP_PC_EGL "-lEGL -lzstd -llz4 -lz")
+set(RTAMP_PC_EGL "-lEGL -lzstd -llz4 -lz -lopencv_imgproc -lopencv_core")
 configure_file(${PROJECT_SOURCE_DIR}/cmake/rtamp.pc.in ${PROJECT_BINARY_DIR}/rtamp.pc @ONLY)
 configure_file(${PROJECT_SOURCE_DIR}/cmake/rtamp-mujoco.pc.in ${PROJECT_BINARY_DIR}/rtamp-mujoco.pc @ONLY)
 install(FILES ${PROJECT_BINARY_DIR}/rtamp.pc ${PROJECT_BINARY_DIR}/rtamp-mujoco.pc

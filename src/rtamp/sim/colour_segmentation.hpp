@@ -1,0 +1,66 @@
+// Segmentation of an RGB image by the known colours of a scene (the paper's way: things
+// are told apart by colour). Each pixel takes the known colour nearest in hue — the
+// direction of its chroma vector, the colour minus its smallest channel, which shading
+// scales and white light (ambient, specular, clipping) leaves alone — or none when that
+// angle exceeds max_angle_deg or the pixel is too grey or dark to tell; then
+// each thing colour's mask is opened (OpenCV 4) to drop specks and split into connected
+// blobs. Only the pixels are used, never the simulator's segmentation pass (tests score
+// against that).
+//
+// Invariants: the classification is a lookup table over RGB quantised to 6 bits a channel,
+// built once; a blob's pixels all carry its colour's label; blobs smaller than
+// min_blob_pixels are dropped and their pixels labelled none.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "rtamp/world/scenario.hpp"
+
+namespace rtamp::sim {
+
+struct KnownColour {
+  std::string label;            // a thing class ("block"), or what else shows it ("region r1", "table", "arm")
+  std::array<double, 3> rgb{};  // in [0, 1], as modelled (unlit)
+  bool thing = false;           // things of a class: blobs are made of these only
+};
+
+struct ColourSegmentationOptions {
+  double max_angle_deg = 6.0;  // farther from every known colour: none
+  int min_chroma = 24;         // a pixel whose channels differ by less (grey, dark): none
+  int min_blob_pixels = 12;    // smaller blobs are dropped
+  int opening_radius = 1;      // of the square opening applied to each thing colour's mask (0: none)
+};
+
+struct ColourBlob {
+  std::size_t colour = 0;          // index into the segmenter's colours
+  std::vector<std::int32_t> pixels;  // row-major indices, ascending
+};
+
+struct ColourSegmentation {
+  int width = 0, height = 0;
+  std::vector<std::int16_t> label;  // per pixel: index of a known colour, -1 none
+  std::vector<ColourBlob> blobs;    // thing colours only
+};
+
+class ColourSegmenter {
+ public:
+  // Throws rtamp::Error on an empty palette or options out of range.
+  explicit ColourSegmenter(std::vector<KnownColour> colours, ColourSegmentationOptions options = {});
+  const std::vector<KnownColour>& colours() const { return colours_; }
+  // rgb: width x height x 3 bytes, top row first.
+  void segment(const std::uint8_t* rgb, int width, int height, ColourSegmentation& out) const;
+
+ private:
+  std::vector<KnownColour> colours_;
+  ColourSegmentationOptions options_;
+  std::vector<std::int16_t> table_;  // 64^3 entries
+};
+
+// The colours a MuJoCo model built from `s` shows (mjcf_builder.hpp): each thing class,
+// each region's fill and outline, the table, the floor, the arm and the gripper.
+std::vector<KnownColour> scene_colours(const world::Scenario& s);
+
+}  // namespace rtamp::sim

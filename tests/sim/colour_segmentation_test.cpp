@@ -1,0 +1,115 @@
+// Colour segmentation scored pixel by pixel against MuJoCo's segmentation pass (the
+// truth of which body a pixel shows, which the segmenter never sees): in generated
+// scenes (2-5 regions, 1-8 blocks, 0-2 trays with blocks on them) seen by the default
+// overhead camera, a pixel is labelled with a thing class exactly when it shows a thing
+// of that class. Also: a wrong palette or option is refused.
+#include <gtest/gtest.h>
+
+#include <cstdio>
+
+#include "rtamp/sim/camera_rig.hpp"
+#include "rtamp/sim/colour_segmentation.hpp"
+#include "rtamp/util/error.hpp"
+#include "rtamp/world/generator.hpp"
+
+namespace rtamp::sim {
+namespace {
+
+struct Score {
+  long pixels = 0, thing_pixels = 0, missed = 0, phantom = 0, confused = 0;
+};
+
+Score score_scene(const world::Scenario& s) {
+  Simulation sim(s);
+  sim.step(50);
+  CameraRig rig(sim, world::cameras_of(s));
+  CameraImage im;
+  rig.render(rig.index("overhead", {}), im, {.noise = false, .segmentation = true});
+  const ColourSegmenter seg(scene_colours(s));
+  ColourSegmentation out;
+  seg.segment(im.rgb.data(), im.width, im.height, out);
+  std::vector<const Thing*> thing_of_body(static_cast<std::size_t>(sim.model()->nbody), nullptr);
+  for (const Thing& t : sim.things())
+    if (t.present && t.body >= 0) thing_of_body[static_cast<std::size_t>(t.body)] = &t;
+  Score sc;
+  for (std::size_t i = 0; i < out.label.size(); ++i) {
+    const int b = im.body[i];
+    const Thing* truth = b >= 0 ? thing_of_body[static_cast<std::size_t>(b)] : nullptr;
+    const int l = out.label[i];
+    const KnownColour* said = l >= 0 && seg.colours()[static_cast<std::size_t>(l)].thing ? &seg.colours()[static_cast<std::size_t>(l)] : nullptr;
+    ++sc.pixels;
+    if (truth) ++sc.thing_pixels;
+    if (truth && !said) ++sc.missed;
+    if (!truth && said) ++sc.phantom;
+    if (truth && said && said->label != truth->cls) ++sc.confused;
+  }
+  for (const ColourBlob& blob : out.blobs)
+    for (std::int32_t i : blob.pixels) EXPECT_EQ(out.label[static_cast<std::size_t>(i)], static_cast<int>(blob.colour));
+  return sc;
+}
+
+TEST(ColourSegmentation, AgreesWithTheSegmentationPassPixelByPixel) {
+  Score total;
+  for (std::uint64_t seed = 1; seed <= 12; ++seed) {
+    world::GeneratorOptions g;
+    g.seed = seed;
+    g.regions = 2 + static_cast<int>(seed % 4);
+    g.objects = 1 + static_cast<int>((seed * 5) % 8);
+    g.containers = std::min<int>(static_cast<int>(seed % 3), g.regions - 1);
+    g.layout = world::GeneratorOptions::Layout::Line;
+    const world::Scenario s = world::generate_scenario(g);
+    SCOPED_TRACE("seed " + std::to_string(seed));
+    const Score sc = score_scene(s);
+    EXPECT_GT(sc.thing_pixels, 100);
+    // No class taken for another, no pixel of anything else taken for a thing, and nearly
+    // every pixel of a thing found (measured: 0.2 % missed over these scenes, 1.2 % in the
+    // worst: slivers of side faces the opening removes, the darkest side pixels).
+    EXPECT_EQ(sc.confused, 0);
+    EXPECT_EQ(sc.phantom, 0);
+    EXPECT_LE(sc.missed, sc.thing_pixels / 50) << sc.missed << " of " << sc.thing_pixels << " thing pixels missed";
+    total.pixels += sc.pixels, total.thing_pixels += sc.thing_pixels, total.missed += sc.missed;
+    total.phantom += sc.phantom, total.confused += sc.confused;
+  }
+  EXPECT_LE(total.missed, total.thing_pixels / 200);
+  std::printf("colour segmentation vs segmentation pass: %ld pixels, %ld of things; missed %ld (%.3f %%), "
+              "phantom %ld (%.3f %%), confused %ld\n",
+              total.pixels, total.thing_pixels, total.missed, 100.0 * total.missed / total.thing_pixels, total.phantom,
+              100.0 * total.phantom / total.thing_pixels, total.confused);
+}
+
+TEST(ColourSegmentation, ABadPaletteOrOptionIsRefused) {
+  EXPECT_THROW(ColourSegmenter({}), Error);
+  EXPECT_THROW(ColourSegmenter({{"grey", {0.5, 0.5, 0.52}, true}}), Error);  // no hue to find it by
+  EXPECT_THROW(ColourSegmenter({{"red", {1, 0, 0}, true}}, {.max_angle_deg = 0}), Error);
+  EXPECT_THROW(ColourSegmenter({{"red", {1, 0, 0}, true}}, {.min_blob_pixels = 0}), Error);
+}
+
+TEST(ColourSegmentation, BlobsSplitThingsApartAndDropSpecks) {
+  // A synthetic image: two red squares apart (one shaded darker), one red speck, a blue
+  // square; grey elsewhere.
+  const int w = 40, h = 20;
+  std::vector<std::uint8_t> rgb(static_cast<std::size_t>(w * h * 3), 128);
+  auto paint = [&](int x0, int y0, int x1, int y1, std::array<std::uint8_t, 3> c) {
+    for (int y = y0; y < y1; ++y)
+      for (int x = x0; x < x1; ++x)
+        for (int k = 0; k < 3; ++k) rgb[static_cast<std::size_t>((y * w + x) * 3 + k)] = c[static_cast<std::size_t>(k)];
+  };
+  paint(2, 2, 8, 8, {200, 30, 20});
+  paint(12, 2, 18, 8, {120, 18, 12});  // the same red, darker (shaded)
+  paint(30, 15, 31, 16, {200, 30, 20});
+  paint(22, 10, 28, 16, {20, 40, 200});
+  const ColourSegmenter seg({{"block", {0.85, 0.15, 0.12}, true}, {"cup", {0.1, 0.2, 0.9}, true}, {"table", {0.5, 0.5, 0.5}, false}});
+  ColourSegmentation out;
+  seg.segment(rgb.data(), w, h, out);
+  ASSERT_EQ(out.blobs.size(), 3u);
+  EXPECT_EQ(out.blobs[0].colour, 0u);
+  EXPECT_EQ(out.blobs[0].pixels.size(), 36u);
+  EXPECT_EQ(out.blobs[1].colour, 0u);
+  EXPECT_EQ(out.blobs[1].pixels.size(), 36u);
+  EXPECT_EQ(out.blobs[2].colour, 1u);
+  EXPECT_EQ(out.label[static_cast<std::size_t>(15 * w + 30)], -1);  // the speck
+  EXPECT_EQ(out.label[0], -1);                                      // grey: no hue, nothing
+}
+
+}  // namespace
+}  // namespace rtamp::sim
