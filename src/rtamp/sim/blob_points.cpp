@@ -1,0 +1,103 @@
+#include "rtamp/sim/blob_points.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+
+namespace rtamp::sim {
+namespace {
+
+int find(std::vector<int>& parent, int i) {
+  while (parent[static_cast<std::size_t>(i)] != i) {
+    parent[static_cast<std::size_t>(i)] = parent[static_cast<std::size_t>(parent[static_cast<std::size_t>(i)])];
+    i = parent[static_cast<std::size_t>(i)];
+  }
+  return i;
+}
+
+double quantile(std::vector<double> v, double q) {
+  const auto k = static_cast<std::ptrdiff_t>(std::floor(q * static_cast<double>(v.size() - 1)));
+  std::nth_element(v.begin(), v.begin() + k, v.end());
+  return v[static_cast<std::size_t>(k)];
+}
+
+}  // namespace
+
+std::vector<std::vector<Eigen::Vector3d>> blob_points(const ColourBlob& blob, const std::vector<float>& depth, int width,
+                                                      const Intrinsics& K, const Extrinsics& E,
+                                                      const BlobPointsOptions& options) {
+  // The blob's pixels with a reading, ascending (the blob's order), their points and depths.
+  std::vector<std::int32_t> pix;
+  std::vector<Eigen::Vector3d> pts;
+  std::vector<double> z;
+  double mean_depth = 0;
+  for (std::int32_t i : blob.pixels) {
+    const float d = depth[static_cast<std::size_t>(i)];
+    if (d <= 0) continue;
+    pix.push_back(i);
+    pts.push_back(E.to_world(K.back_project(i % width, i / width, d)));
+    z.push_back(pts.back().z());
+    mean_depth += d;
+  }
+  if (pix.empty()) return {};
+  mean_depth /= static_cast<double>(pix.size());
+  const double sigma = options.noise.a + options.noise.b * mean_depth * mean_depth;
+  // The top height and the top face's pixels.
+  const double high = quantile(z, 0.9);
+  std::vector<double> near_top;
+  for (double h : z)
+    if (h >= high - options.top_band - 3 * sigma) near_top.push_back(h);
+  const double top = quantile(near_top, 0.5);
+  const double band = options.top_band + 2.5 * sigma;
+  std::vector<int> parent(pix.size(), -1);  // -1: not on the top face
+  for (std::size_t a = 0; a < pix.size(); ++a)
+    if (std::abs(z[a] - top) <= band) parent[a] = options.split ? static_cast<int>(a) : 0;
+  if (options.split) {
+    const auto join = [&](std::size_t a, std::int32_t neighbour) {
+      const auto it = std::lower_bound(pix.begin(), pix.end(), neighbour);
+      if (it == pix.end() || *it != neighbour) return;
+      const auto b = static_cast<std::size_t>(it - pix.begin());
+      if (parent[b] < 0) return;
+      const int ra = find(parent, static_cast<int>(a)), rb = find(parent, static_cast<int>(b));
+      if (ra != rb) parent[static_cast<std::size_t>(std::max(ra, rb))] = std::min(ra, rb);
+    };
+    for (std::size_t a = 0; a < pix.size(); ++a) {
+      if (parent[a] < 0) continue;
+      const int u = pix[a] % width;
+      if (u + 1 < width) join(a, pix[a] + 1);
+      join(a, pix[a] + width);
+      if (u + 1 < width) join(a, pix[a] + width + 1);
+      if (u > 0) join(a, pix[a] + width - 1);
+    }
+  }
+  // Clusters of pixel indices (into pix), then each re-projected onto its own plane.
+  std::vector<int> cluster_of_root(pix.size(), -1);
+  std::vector<std::vector<std::size_t>> members;
+  for (std::size_t a = 0; a < pix.size(); ++a) {
+    if (parent[a] < 0) continue;
+    const auto r = static_cast<std::size_t>(options.split ? find(parent, static_cast<int>(a)) : 0);
+    if (cluster_of_root[r] < 0) {
+      cluster_of_root[r] = static_cast<int>(members.size());
+      members.emplace_back();
+    }
+    members[static_cast<std::size_t>(cluster_of_root[r])].push_back(a);
+  }
+  const Eigen::Vector3d eye = E.to_world(Eigen::Vector3d::Zero());
+  std::vector<std::vector<Eigen::Vector3d>> clusters;
+  for (const auto& m : members) {
+    if (static_cast<int>(m.size()) < options.min_points) continue;
+    std::vector<double> h;
+    for (std::size_t a : m) h.push_back(z[a]);
+    const double plane = quantile(h, 0.5);
+    auto& out = clusters.emplace_back();
+    out.reserve(m.size());
+    for (std::size_t a : m) {
+      const Eigen::Vector3d ray = E.R.transpose() * K.back_project(pix[a] % width, pix[a] / width, 1.0);
+      if (std::abs(ray.z()) < 1e-9) continue;
+      out.push_back(eye + ray * ((plane - eye.z()) / ray.z()));
+    }
+  }
+  return clusters;
+}
+
+}  // namespace rtamp::sim

@@ -1,0 +1,140 @@
+// Poses from pixels against the truth: in generated static scenes (2-5 regions, 1-8
+// blocks, 0-2 trays with blocks on them; arm at home) the default overhead camera's image
+// is segmented by colour, each blob's top faces found and a box of the block's known size
+// fitted. Every block gets one complete fit; its base lies within 5 mm of the truth
+// (median within 2 mm), and the placement read from the fitted poses with the world's
+// geometry equals the truth's. Also: the fit itself on exact synthetic boxes.
+// Partial: the depth noise is off (with it, the top-face band lets side faces in: blocks
+// widen by up to 14 mm and two blocks 2 cm apart join) and trays are taken from the truth
+// (their image splits around the blocks on them); both are the next step.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <numbers>
+
+#include "rtamp/sim/blob_points.hpp"
+#include "rtamp/sim/box_fit.hpp"
+#include "rtamp/sim/camera_rig.hpp"
+#include "rtamp/sim/colour_segmentation.hpp"
+#include "rtamp/sim/perception.hpp"
+#include "rtamp/world/generator.hpp"
+#include "rtamp/world/geometry.hpp"
+
+namespace rtamp::sim {
+namespace {
+
+Eigen::Vector3d truth_base(const Simulation& sim, int i) {
+  const Thing& t = sim.things()[static_cast<std::size_t>(i)];
+  Eigen::Vector3d c = sim.position(i);
+  if (!t.container) c.z() -= t.size[2] / 2;
+  return c;
+}
+
+TEST(BoxFit, StaticScenesArePerceivedAsTheyAre) {
+  std::vector<double> errors;
+  int scenes = 0;
+  for (std::uint64_t seed = 1; seed <= 12; ++seed) {
+    world::GeneratorOptions g;
+    g.seed = seed;
+    g.regions = 2 + static_cast<int>(seed % 4);
+    g.objects = 1 + static_cast<int>((seed * 5) % 8);
+    g.containers = std::min<int>(static_cast<int>(seed % 3), g.regions - 1);
+    const world::Scenario s = world::generate_scenario(g);
+    SCOPED_TRACE("seed " + std::to_string(seed));
+    Simulation sim(s);
+    sim.step(50);
+    CameraRig rig(sim, world::cameras_of(s), seed);
+    CameraImage im;
+    rig.render(rig.index("overhead", {}), im, {.noise = false, .segmentation = false});
+    const ColourSegmenter seg(scene_colours(s));
+    ColourSegmentation out;
+    seg.segment(im.rgb.data(), im.width, im.height, out);
+    // Each blob's clusters of points: a box fitted with its class's size, then the thing of that
+    // class nearest the fitted base (the scoring's association; identity is the belief's job).
+    std::vector<int> fitted_by(sim.things().size(), 0);
+    std::vector<Eigen::Vector3d> fitted(sim.things().size());
+    for (const ColourBlob& blob : out.blobs) {
+      const std::string& cls = seg.colours()[blob.colour].label;
+      if (cls == "tray") continue;  // trays: not yet (see the header)
+      BlobPointsOptions split;
+      split.noise = {};  // noise off: no allowance
+      for (const auto& pts : blob_points(blob, im.depth, im.width, im.intrinsics, im.extrinsics, split)) {
+        int best = -1;
+        double best_d = INFINITY;
+        BoxFit best_fit;
+        for (std::size_t k = 0; k < sim.things().size(); ++k) {
+          const Thing& t = sim.things()[k];
+          if (!t.present || t.name.empty() || t.cls != cls) continue;
+          const BoxFit f = fit_box(pts, t.size, t.container, im.extrinsics.to_world(Eigen::Vector3d::Zero()));
+          const double d = (f.base - truth_base(sim, static_cast<int>(k))).head<2>().norm();
+          if (d < best_d) best_d = d, best = static_cast<int>(k), best_fit = f;
+        }
+        ASSERT_GE(best, 0) << "a blob of class " << cls << " and no such thing";
+        EXPECT_TRUE(best_fit.complete) << sim.things()[static_cast<std::size_t>(best)].name << " seen "
+                                       << best_fit.seen_x << " x " << best_fit.seen_y;
+        ++fitted_by[static_cast<std::size_t>(best)];
+        fitted[static_cast<std::size_t>(best)] = best_fit.base;
+      }
+    }
+    // Every thing fitted once; poses near the truth; the placement equal to the truth's.
+    world::Geometry geometry(s);
+    for (std::size_t k = 0; k < sim.things().size(); ++k) {
+      const Thing& t = sim.things()[k];
+      if (!t.present || t.name.empty()) continue;
+      if (t.container) {
+        const Eigen::Vector3d c = truth_base(sim, static_cast<int>(k));
+        geometry.move_container(t.name, {c.x(), c.y(), c.z()});
+        fitted[k] = c;
+        continue;
+      }
+      ASSERT_EQ(fitted_by[k], 1) << t.name << " (one blob each: things of a class must not touch)";
+      const double e = (fitted[k] - truth_base(sim, static_cast<int>(k))).norm();
+      errors.push_back(e);
+      EXPECT_LE(e, 0.005) << t.name;
+    }
+    Perception truth(sim);
+    const Percept p = truth.observe();
+    for (const Observation& o : p.things) {
+      const int k = sim.find(o.name);
+      const Eigen::Vector3d& b = fitted[static_cast<std::size_t>(k)];
+      const std::string at = o.container ? geometry.locate_region({b.x(), b.y(), b.z()}) : geometry.locate({b.x(), b.y(), b.z()});
+      EXPECT_EQ(at, o.location) << o.name;
+    }
+    ++scenes;
+  }
+  std::sort(errors.begin(), errors.end());
+  ASSERT_FALSE(errors.empty());
+  const double median = errors[errors.size() / 2];
+  EXPECT_LE(median, 0.002);
+  std::printf("box fit over %d scenes, %zu things: base error median %.2f mm, worst %.2f mm\n", scenes,
+              errors.size(), median * 1000, errors.back() * 1000);
+}
+
+TEST(BoxFit, ExactBoxesAreFoundAndPartOfOneIsNotComplete) {
+  // The top face of a 4 x 6 x 3 cm box at (0.3, -0.2), turned 0.4 rad, on the table, as a
+  // grid of points 1 mm apart, plus side points below the top band.
+  const world::Vec3 size{0.04, 0.06, 0.03};
+  const double yaw = 0.4, c = std::cos(yaw), s = std::sin(yaw);
+  std::vector<Eigen::Vector3d> pts;
+  for (double u = -0.02; u <= 0.02 + 1e-9; u += 0.001)
+    for (double v = -0.03; v <= 0.03 + 1e-9; v += 0.001) pts.emplace_back(0.3 + c * u - s * v, -0.2 + s * u + c * v, 0.03);
+  for (double h = 0; h < 0.02; h += 0.002) pts.emplace_back(0.3 + c * 0.02, -0.2 + s * 0.02, h);
+  const Eigen::Vector3d eye(0.3, -0.2, 1.0);  // straight above
+  BoxFit f = fit_box(pts, size, false, eye);
+  EXPECT_TRUE(f.complete);
+  EXPECT_NEAR(f.base.x(), 0.3, 1e-4);
+  EXPECT_NEAR(f.base.y(), -0.2, 1e-4);
+  EXPECT_NEAR(f.base.z(), 0.0, 1e-6);
+  EXPECT_NEAR(std::remainder(f.yaw - yaw, std::numbers::pi), 0, 1e-3);
+  // Half of the top hidden: the sides no longer match, the fit says so.
+  std::vector<Eigen::Vector3d> half;
+  for (const auto& p : pts)
+    if ((p - Eigen::Vector3d(0.3, -0.2, 0)).dot(Eigen::Vector3d(-s, c, 0)) > 0) half.push_back(p);
+  f = fit_box(half, size, false, eye);
+  EXPECT_FALSE(f.complete);
+  EXPECT_FALSE(fit_box({}, size, false, eye).complete);
+}
+
+}  // namespace
+}  // namespace rtamp::sim
