@@ -18,8 +18,8 @@
 #include "rtamp/sim/camera_rig.hpp"
 #include "rtamp/sim/colour_segmentation.hpp"
 #include "rtamp/sim/perception.hpp"
-#include "rtamp/world/generator.hpp"
 #include "rtamp/world/geometry.hpp"
+#include "test_scenarios.hpp"
 
 namespace rtamp::sim {
 namespace {
@@ -35,12 +35,7 @@ TEST(BoxFit, StaticScenesArePerceivedAsTheyAre) {
   std::vector<double> errors;
   int scenes = 0;
   for (std::uint64_t seed = 1; seed <= 12; ++seed) {
-    world::GeneratorOptions g;
-    g.seed = seed;
-    g.regions = 2 + static_cast<int>(seed % 4);
-    g.objects = 1 + static_cast<int>((seed * 5) % 8);
-    g.containers = std::min<int>(static_cast<int>(seed % 3), g.regions - 1);
-    const world::Scenario s = world::generate_scenario(g);
+    const world::Scenario s = testing::camera_scene(seed);
     SCOPED_TRACE("seed " + std::to_string(seed));
     Simulation sim(s);
     sim.step(50);

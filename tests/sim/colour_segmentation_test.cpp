@@ -10,7 +10,7 @@
 #include "rtamp/sim/camera_rig.hpp"
 #include "rtamp/sim/colour_segmentation.hpp"
 #include "rtamp/util/error.hpp"
-#include "rtamp/world/generator.hpp"
+#include "test_scenarios.hpp"
 
 namespace rtamp::sim {
 namespace {
@@ -51,13 +51,7 @@ Score score_scene(const world::Scenario& s) {
 TEST(ColourSegmentation, AgreesWithTheSegmentationPassPixelByPixel) {
   Score total;
   for (std::uint64_t seed = 1; seed <= 12; ++seed) {
-    world::GeneratorOptions g;
-    g.seed = seed;
-    g.regions = 2 + static_cast<int>(seed % 4);
-    g.objects = 1 + static_cast<int>((seed * 5) % 8);
-    g.containers = std::min<int>(static_cast<int>(seed % 3), g.regions - 1);
-    g.layout = world::GeneratorOptions::Layout::Line;
-    const world::Scenario s = world::generate_scenario(g);
+    const world::Scenario s = testing::camera_scene(seed);
     SCOPED_TRACE("seed " + std::to_string(seed));
     const Score sc = score_scene(s);
     EXPECT_GT(sc.thing_pixels, 100);

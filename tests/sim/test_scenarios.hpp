@@ -2,6 +2,10 @@
 // layouts (Section V) in front of a UR5 at the origin. Independent of world's loader.
 #pragma once
 
+#include <algorithm>
+#include <cstdint>
+
+#include "rtamp/world/generator.hpp"
 #include "rtamp/world/scenario.hpp"
 
 namespace rtamp::sim::testing {
@@ -20,6 +24,18 @@ inline world::Scenario three_block(bool with_tray = false) {
   s.objects.push_back({"o2", "block", {0.50, -0.30, 0}, {0.04, 0.04, 0.04}, {}});
   s.objects.push_back({"o3", "block", {0.40, -0.24, 0}, {0.04, 0.04, 0.04}, {}});
   return s;
+}
+
+// The camera tests' scenes: 2-5 regions on a line, 1-8 blocks, 0-2 trays (with blocks on
+// them), varied by the seed.
+inline world::Scenario camera_scene(std::uint64_t seed) {
+  world::GeneratorOptions g;
+  g.seed = seed;
+  g.regions = 2 + static_cast<int>(seed % 4);
+  g.objects = 1 + static_cast<int>((seed * 5) % 8);
+  g.containers = std::min<int>(static_cast<int>(seed % 3), g.regions - 1);
+  g.layout = world::GeneratorOptions::Layout::Line;
+  return world::generate_scenario(g);
 }
 
 }  // namespace rtamp::sim::testing
