@@ -26,22 +26,43 @@ double quantile(std::vector<double> v, double q) {
 std::vector<std::vector<Eigen::Vector3d>> blob_points(const ColourBlob& blob, const std::vector<float>& depth, int width,
                                                       const Intrinsics& K, const Extrinsics& E,
                                                       const BlobPointsOptions& options) {
-  // The blob's pixels with a reading, ascending (the blob's order), their points and depths.
+  // The blob's pixels with a reading, ascending (the blob's order), and their depths.
   std::vector<std::int32_t> pix;
-  std::vector<Eigen::Vector3d> pts;
-  std::vector<double> z;
-  double mean_depth = 0;
+  std::vector<float> raw;
   for (std::int32_t i : blob.pixels) {
     const float d = depth[static_cast<std::size_t>(i)];
     if (d <= 0) continue;
     pix.push_back(i);
-    pts.push_back(E.to_world(K.back_project(i % width, i / width, d)));
+    raw.push_back(d);
+  }
+  // Each depth replaced by the median of the blob's readings in the window around it (the
+  // noise is independent per pixel; the blob's own pixels only, so other surfaces do not
+  // mix in), then the points.
+  const int radius = options.smooth_radius;
+  std::vector<Eigen::Vector3d> pts;
+  std::vector<double> z;
+  std::vector<float> window;
+  double mean_depth = 0;
+  for (std::size_t a = 0; a < pix.size(); ++a) {
+    const int u = pix[a] % width, v = pix[a] / width;
+    window.clear();
+    for (int dv = -radius; dv <= radius; ++dv)
+      for (int du = -radius; du <= radius; ++du) {
+        if (u + du < 0 || u + du >= width || v + dv < 0) continue;
+        const std::int32_t n = pix[a] + dv * width + du;
+        const auto it = std::lower_bound(pix.begin(), pix.end(), n);
+        if (it != pix.end() && *it == n) window.push_back(raw[static_cast<std::size_t>(it - pix.begin())]);
+      }
+    std::nth_element(window.begin(), window.begin() + static_cast<std::ptrdiff_t>(window.size() / 2), window.end());
+    const double d = window[window.size() / 2];
+    pts.push_back(E.to_world(K.back_project(u, v, d)));
     z.push_back(pts.back().z());
     mean_depth += d;
   }
   if (pix.empty()) return {};
   mean_depth /= static_cast<double>(pix.size());
-  const double sigma = options.noise.a + options.noise.b * mean_depth * mean_depth;
+  // The noise left after the median of (2r+1)^2 readings: about 1.25 sigma / (2r+1).
+  const double sigma = (options.noise.a + options.noise.b * mean_depth * mean_depth) * 1.25 / (2 * radius + 1);
   // The top height and the top face's pixels.
   const double high = quantile(z, 0.9);
   std::vector<double> near_top;

@@ -25,6 +25,7 @@ struct BlobPointsOptions {
   bool split = true;
   double top_band = 0.003;  // m, on top of the depth noise's allowance
   int min_points = 12;
+  int smooth_radius = 2;    // each depth becomes the median of the blob's readings within this many pixels
   world::DepthNoise noise;  // the camera's, for the allowance (a + b z² at the blob's depth)
 };
 
