@@ -68,7 +68,7 @@ std::vector<std::vector<Eigen::Vector3d>> blob_points(const ColourBlob& blob, co
   std::vector<double> near_top;
   for (double h : z)
     if (h >= high - options.top_band - 3 * sigma) near_top.push_back(h);
-  const double top = quantile(near_top, 0.5);
+  const double top = options.top ? *options.top : quantile(near_top, 0.5);
   const double band = options.top_band + 2.5 * sigma;
   std::vector<int> parent(pix.size(), -1);  // -1: not on the top face
   for (std::size_t a = 0; a < pix.size(); ++a)
@@ -109,7 +109,7 @@ std::vector<std::vector<Eigen::Vector3d>> blob_points(const ColourBlob& blob, co
     if (static_cast<int>(m.size()) < options.min_points) continue;
     std::vector<double> h;
     for (std::size_t a : m) h.push_back(z[a]);
-    const double plane = quantile(h, 0.5);
+    const double plane = options.top ? *options.top : quantile(h, 0.5);
     auto& out = clusters.emplace_back();
     out.reserve(m.size());
     for (std::size_t a : m) {
@@ -117,6 +117,26 @@ std::vector<std::vector<Eigen::Vector3d>> blob_points(const ColourBlob& blob, co
       if (std::abs(ray.z()) < 1e-9) continue;
       out.push_back(eye + ray * ((plane - eye.z()) / ray.z()));
     }
+  }
+  return clusters;
+}
+
+std::vector<std::vector<Eigen::Vector3d>> join_near(std::vector<std::vector<Eigen::Vector3d>> clusters, double max_gap) {
+  const auto near = [&](const std::vector<Eigen::Vector3d>& a, const std::vector<Eigen::Vector3d>& b) {
+    for (const auto& p : a)
+      for (const auto& q : b)
+        if ((p - q).head<2>().squaredNorm() <= max_gap * max_gap) return true;
+    return false;
+  };
+  for (bool joined = true; joined;) {
+    joined = false;
+    for (std::size_t i = 0; i < clusters.size() && !joined; ++i)
+      for (std::size_t j = i + 1; j < clusters.size() && !joined; ++j)
+        if (near(clusters[i], clusters[j])) {
+          clusters[i].insert(clusters[i].end(), clusters[j].begin(), clusters[j].end());
+          clusters.erase(clusters.begin() + static_cast<std::ptrdiff_t>(j));
+          joined = true;
+        }
   }
   return clusters;
 }

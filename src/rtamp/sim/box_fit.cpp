@@ -48,7 +48,8 @@ BoxFit fit_box(const std::vector<Eigen::Vector3d>& points, const world::Vec3& si
   extent(yaw, lo_a, hi_a);
   extent(yaw + std::numbers::pi / 2, lo_b, hi_b);
   // A row of points spans one pixel's footprint less than the face: half a spacing at each end.
-  const double spacing = std::sqrt((hi_a - lo_a) * (hi_b - lo_b) / static_cast<double>(xy.size()));
+  const double spacing = options.spacing > 0 ? options.spacing
+                                             : std::sqrt((hi_a - lo_a) * (hi_b - lo_b) / static_cast<double>(xy.size()));
   lo_a -= spacing / 2, hi_a += spacing / 2, lo_b -= spacing / 2, hi_b += spacing / 2;
   // Which of the thing's sides lies along the rectangle's first axis.
   const double a = hi_a - lo_a, b = hi_b - lo_b;

@@ -25,7 +25,10 @@ struct BoxFitOptions {
   double top_band = 0.005;   // m: points this close below the top height belong to the top face
   double tolerance = 0.004;  // m: how far the seen sides may differ from the footprint's
   double side_bleed = 0.008; // m: how far the top of a side face may widen the top face towards the camera
-  double trim_rows = 0.3;    // left out at each end of a side's extent: this share of a row of points
+  double trim_rows = 0.3;
+  // The distance between neighbouring points (a pixel's footprint on the face); 0: from the
+  // points' area, right for a filled face but not for a container's rims.
+  double spacing = 0;    // left out at each end of a side's extent: this share of a row of points
 };
 
 struct BoxFit {
