@@ -35,6 +35,18 @@ std::vector<std::vector<Eigen::Vector3d>> blob_points(const ColourBlob& blob, co
     pix.push_back(i);
     raw.push_back(d);
   }
+  if (pix.empty()) return {};
+  // The blob's bounding box as a grid of indices into pix (-1: not the blob's, or no reading).
+  int u0 = width, u1 = -1, v0 = pix.front() / width, v1 = pix.back() / width;
+  for (std::int32_t i : pix) u0 = std::min(u0, i % width), u1 = std::max(u1, i % width);
+  const int bw = u1 - u0 + 1, bh = v1 - v0 + 1;
+  std::vector<int> grid(static_cast<std::size_t>(bw) * static_cast<std::size_t>(bh), -1);
+  for (std::size_t a = 0; a < pix.size(); ++a)
+    grid[static_cast<std::size_t>((pix[a] / width - v0) * bw + (pix[a] % width - u0))] = static_cast<int>(a);
+  const auto at = [&](int u, int v) {
+    if (u < u0 || u > u1 || v < v0 || v > v1) return -1;
+    return grid[static_cast<std::size_t>((v - v0) * bw + (u - u0))];
+  };
   // Each depth replaced by the median of the blob's readings in the window around it (the
   // noise is independent per pixel; the blob's own pixels only, so other surfaces do not
   // mix in), then the points.
@@ -47,19 +59,14 @@ std::vector<std::vector<Eigen::Vector3d>> blob_points(const ColourBlob& blob, co
     const int u = pix[a] % width, v = pix[a] / width;
     window.clear();
     for (int dv = -radius; dv <= radius; ++dv)
-      for (int du = -radius; du <= radius; ++du) {
-        if (u + du < 0 || u + du >= width || v + dv < 0) continue;
-        const std::int32_t n = pix[a] + dv * width + du;
-        const auto it = std::lower_bound(pix.begin(), pix.end(), n);
-        if (it != pix.end() && *it == n) window.push_back(raw[static_cast<std::size_t>(it - pix.begin())]);
-      }
+      for (int du = -radius; du <= radius; ++du)
+        if (const int n = at(u + du, v + dv); n >= 0) window.push_back(raw[static_cast<std::size_t>(n)]);
     std::nth_element(window.begin(), window.begin() + static_cast<std::ptrdiff_t>(window.size() / 2), window.end());
     const double d = window[window.size() / 2];
     pts.push_back(E.to_world(K.back_project(u, v, d)));
     z.push_back(pts.back().z());
     mean_depth += d;
   }
-  if (pix.empty()) return {};
   mean_depth /= static_cast<double>(pix.size());
   // The noise left after the median of (2r+1)^2 readings: about 1.25 sigma / (2r+1).
   const double sigma = (options.noise.a + options.noise.b * mean_depth * mean_depth) * 1.25 / (2 * radius + 1);
@@ -74,21 +81,19 @@ std::vector<std::vector<Eigen::Vector3d>> blob_points(const ColourBlob& blob, co
   for (std::size_t a = 0; a < pix.size(); ++a)
     if (std::abs(z[a] - top) <= band) parent[a] = options.split ? static_cast<int>(a) : 0;
   if (options.split) {
-    const auto join = [&](std::size_t a, std::int32_t neighbour) {
-      const auto it = std::lower_bound(pix.begin(), pix.end(), neighbour);
-      if (it == pix.end() || *it != neighbour) return;
-      const auto b = static_cast<std::size_t>(it - pix.begin());
-      if (parent[b] < 0) return;
+    const auto join = [&](std::size_t a, int neighbour) {
+      if (neighbour < 0 || parent[static_cast<std::size_t>(neighbour)] < 0) return;
+      const auto b = static_cast<std::size_t>(neighbour);
       const int ra = find(parent, static_cast<int>(a)), rb = find(parent, static_cast<int>(b));
       if (ra != rb) parent[static_cast<std::size_t>(std::max(ra, rb))] = std::min(ra, rb);
     };
     for (std::size_t a = 0; a < pix.size(); ++a) {
       if (parent[a] < 0) continue;
-      const int u = pix[a] % width;
-      if (u + 1 < width) join(a, pix[a] + 1);
-      join(a, pix[a] + width);
-      if (u + 1 < width) join(a, pix[a] + width + 1);
-      if (u > 0) join(a, pix[a] + width - 1);
+      const int u = pix[a] % width, v = pix[a] / width;
+      join(a, at(u + 1, v));
+      join(a, at(u, v + 1));
+      join(a, at(u + 1, v + 1));
+      join(a, at(u - 1, v + 1));
     }
   }
   // Clusters of pixel indices (into pix), then each re-projected onto its own plane.

@@ -27,7 +27,7 @@ struct BlobPointsOptions {
   bool split = true;
   double top_band = 0.003;  // m, on top of the depth noise's allowance
   int min_points = 12;
-  int smooth_radius = 2;    // each depth becomes the median of the blob's readings within this many pixels
+  int smooth_radius = 1;    // each depth becomes the median of the blob's readings within this many pixels
   world::DepthNoise noise;  // the camera's, for the allowance (a + b z² at the blob's depth)
   // The top height when it is known (a tray on the table: the table's height plus the
   // tray's); the top face's pixels are then those near it, and all are re-projected onto it.
