@@ -1,0 +1,46 @@
+// Detections from one camera frame, the paper's way (Section V): the RGB image segmented
+// by the scene's known colours, each blob's top faces found with the depth image, and a
+// box of its class's known size fitted to each face (an object) or to a container's rims
+// (its parts, cut apart by the things on it, joined again). A detection names a class,
+// never a thing: identity is the belief's (world/belief.hpp).
+//
+// Invariants: uses only the RGB and depth images and the camera's calibration (never the
+// segmentation pass); a class's size is the first declared thing's of that class; storage
+// is kept between frames.
+#pragma once
+
+#include <vector>
+
+#include "rtamp/sim/camera_rig.hpp"
+#include "rtamp/sim/colour_segmentation.hpp"
+#include "rtamp/world/belief.hpp"
+#include "rtamp/world/scenario.hpp"
+
+namespace rtamp::sim {
+
+struct CameraDetectorOptions {
+  ColourSegmentationOptions segmentation;
+  double container_gap = 0.05;  // m: a container's parts closer than this are one container
+};
+
+class CameraDetector {
+ public:
+  // `noise`: the camera's depth noise (its allowance when finding top faces).
+  CameraDetector(const world::Scenario& s, world::DepthNoise noise, CameraDetectorOptions options = {});
+  void detect(const CameraImage& image, std::vector<world::Detection>& out);
+  const ColourSegmenter& segmenter() const { return segmenter_; }
+
+ private:
+  struct ClassInfo {
+    bool known = false;
+    bool container = false;
+    world::Vec3 size{};
+  };
+  ColourSegmenter segmenter_;
+  world::DepthNoise noise_;
+  CameraDetectorOptions options_;
+  std::vector<ClassInfo> class_of_colour_;  // by the segmenter's colour index
+  ColourSegmentation segmentation_;
+};
+
+}  // namespace rtamp::sim

@@ -1,0 +1,281 @@
+#include "rtamp/world/belief.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "rtamp/util/error.hpp"
+
+namespace rtamp::world {
+
+const char* to_string(ThingState s) {
+  switch (s) {
+    case ThingState::Visible: return "visible";
+    case ThingState::Occluded: return "occluded";
+    case ThingState::Held: return "held";
+    case ThingState::OutOfView: return "out-of-view";
+    case ThingState::Missing: return "missing";
+  }
+  return "?";
+}
+
+namespace {
+
+double distance(const Vec3& a, const Vec3& b) { return std::hypot(a[0] - b[0], a[1] - b[1], a[2] - b[2]); }
+
+bool finite_positive(double x) { return std::isfinite(x) && x > 0; }
+
+}  // namespace
+
+Belief::Belief(const Scenario& s, BeliefOptions options) : options_(options), geometry_(s) {
+  if (!finite_positive(options.match_radius)) throw Error("belief: match_radius must be a positive number of metres");
+  if (!std::isfinite(options.remove_after) || options.remove_after < 0)
+    throw Error("belief: remove_after must be a number of seconds >= 0");
+  if (options.confirm_sightings < 1 || options.confirm_sightings > 1000)
+    throw Error("belief: confirm_sightings must be in 1..1000");
+  if (!finite_positive(options.candidate_timeout)) throw Error("belief: candidate_timeout must be a positive number of seconds");
+  if (!finite_positive(options.rest_height)) throw Error("belief: rest_height must be a positive number of metres");
+  auto note_class = [&](const std::string& cls, bool container, const Vec3& size) {
+    for (const auto& c : classes_)
+      if (c.cls == cls) return;
+    classes_.push_back({cls, container, size});
+  };
+  for (const auto& c : s.containers) {
+    note_class(c.cls, true, c.size);
+    BelievedThing t;
+    t.name = c.name, t.cls = c.cls, t.container = true, t.size = c.size, t.base = c.position;
+    things_.push_back(std::move(t));
+  }
+  for (const auto& o : s.objects) {
+    note_class(o.cls, false, o.size);
+    BelievedThing t;
+    t.name = o.name, t.cls = o.cls, t.size = o.size, t.base = o.position;
+    things_.push_back(std::move(t));
+  }
+  locate_all();
+}
+
+const BelievedThing* Belief::find(const std::string& name) const {
+  for (const auto& t : things_)
+    if (t.name == name) return &t;
+  return nullptr;
+}
+
+void Belief::update(double time, const std::vector<Detection>& seen, const Visibility& visibility,
+                    const Gripper& gripper) {
+  if (!std::isfinite(time) || time < time_)
+    throw Error("belief: frame time " + std::to_string(time) + " s is before the last frame's (" +
+                std::to_string(time_) + " s)");
+  time_ = time;
+  before_.clear();
+  for (const auto& t : things_) before_.push_back(t.base);
+  follow_gripper(gripper);
+  match(time, seen);
+  judge_unseen(time, visibility);
+  promote(time, seen);
+  locate_all();
+}
+
+void Belief::follow_gripper(const Gripper& g) {
+  if (g.holds != held_) {
+    for (auto& t : things_) {
+      if (!held_.empty() && t.name == held_) t.state = ThingState::Occluded;  // put down where the tool left it
+      if (!g.holds.empty() && t.name == g.holds)
+        held_offset_ = {t.base[0] - g.tool[0], t.base[1] - g.tool[1], t.base[2] - g.tool[2]};
+    }
+    held_ = g.holds;
+  }
+  for (auto& t : things_)
+    if (!held_.empty() && t.name == held_) {
+      t.state = ThingState::Held;
+      t.base = {g.tool[0] + held_offset_[0], g.tool[1] + held_offset_[1], g.tool[2] + held_offset_[2]};
+      t.missing_since = -1;
+    }
+}
+
+void Belief::match(double time, const std::vector<Detection>& seen) {
+  used_.assign(seen.size(), 0);
+  matched_.assign(things_.size(), 0);
+  // In the air: the held thing, seen in the gripper. Never a thing at rest.
+  for (std::size_t j = 0; j < seen.size(); ++j)
+    if (seen[j].base[2] > options_.rest_height) used_[j] = 1;
+  for (std::size_t i = 0; i < things_.size(); ++i)
+    if (things_[i].state == ThingState::Held) {
+      matched_[i] = 1;
+      for (std::size_t j = 0; j < seen.size(); ++j)
+        if (seen[j].cls == things_[i].cls && distance(seen[j].base, things_[i].base) <= options_.match_radius) {
+          used_[j] = 1;
+          things_[i].last_seen = time;
+        }
+    }
+  // Containers first: their contents move with them before the objects are matched.
+  for (const bool containers : {true, false}) {
+    pairs_.clear();
+    for (std::size_t i = 0; i < things_.size(); ++i) {
+      if (matched_[i] || things_[i].container != containers) continue;
+      for (std::size_t j = 0; j < seen.size(); ++j) {
+        if (used_[j] || seen[j].cls != things_[i].cls) continue;
+        const double d = distance(seen[j].base, things_[i].base);
+        if (d <= options_.match_radius) pairs_.push_back({d, {i, j}});
+      }
+    }
+    std::sort(pairs_.begin(), pairs_.end());
+    for (const auto& [d, ij] : pairs_) {
+      const auto [i, j] = ij;
+      if (matched_[i] || used_[j]) continue;
+      matched_[i] = used_[j] = 1;
+      BelievedThing& t = things_[i];
+      t.state = ThingState::Visible;
+      t.last_seen = time;
+      t.missing_since = -1;
+      if (seen[j].complete) t.base = seen[j].base, t.yaw = seen[j].yaw;
+    }
+    if (containers) carry_contents(before_);
+  }
+}
+
+void Belief::carry_contents(const std::vector<Vec3>& before) {
+  for (std::size_t c = 0; c < things_.size(); ++c) {
+    const BelievedThing& box = things_[c];
+    if (!box.container) continue;
+    const Vec3 d{box.base[0] - before[c][0], box.base[1] - before[c][1], box.base[2] - before[c][2]};
+    if (d[0] == 0 && d[1] == 0 && d[2] == 0) continue;
+    for (std::size_t i = 0; i < things_.size(); ++i) {
+      BelievedThing& t = things_[i];
+      if (t.container || matched_[i] || t.on != box.name) continue;
+      for (int k = 0; k < 3; ++k) t.base[static_cast<std::size_t>(k)] += d[static_cast<std::size_t>(k)];
+    }
+  }
+}
+
+void Belief::judge_unseen(double time, const Visibility& visibility) {
+  for (std::size_t i = 0; i < things_.size(); ++i) {
+    if (matched_[i]) continue;
+    BelievedThing& t = things_[i];
+    switch (visibility.sight(t)) {
+      case Sight::OutOfView:
+        t.state = ThingState::OutOfView;
+        t.missing_since = -1;
+        break;
+      case Sight::Occluded:
+        t.state = ThingState::Occluded;
+        t.missing_since = -1;
+        break;
+      case Sight::Visible:
+        if (t.state != ThingState::Missing) t.state = ThingState::Missing, t.missing_since = time;
+        break;
+    }
+  }
+  // Missing long enough: believed removed (a container's contents stay where they are).
+  const auto gone = [&](const BelievedThing& t) {
+    return t.state == ThingState::Missing && time - t.missing_since >= options_.remove_after;
+  };
+  for (const auto& t : things_)
+    if (gone(t) && t.container) geometry_.remove_container(t.name);
+  std::erase_if(things_, gone);
+}
+
+void Belief::promote(double time, const std::vector<Detection>& seen) {
+  std::erase_if(candidates_, [&](const Candidate& c) { return time - c.last_seen > options_.candidate_timeout; });
+  for (std::size_t j = 0; j < seen.size(); ++j) {
+    if (used_[j]) continue;
+    const Detection& d = seen[j];
+    // A second view of a thing already explained (a blob the arm cut in two) is no candidate.
+    bool known = false;
+    for (const auto& t : things_) known = known || (t.cls == d.cls && distance(t.base, d.base) <= options_.match_radius);
+    if (known) continue;
+    Candidate* nearest = nullptr;
+    for (auto& c : candidates_)
+      if (c.seen.cls == d.cls && distance(c.seen.base, d.base) <= options_.match_radius &&
+          (!nearest || distance(c.seen.base, d.base) < distance(nearest->seen.base, d.base)))
+        nearest = &c;
+    if (!nearest) {
+      candidates_.push_back({d, 0, time});
+      nearest = &candidates_.back();
+    } else if (nearest->last_seen == time) {
+      continue;  // two detections of one candidate in a frame count once
+    }
+    if (d.complete || nearest->sightings == 0) nearest->seen = d;
+    ++nearest->sightings;
+    nearest->last_seen = time;
+  }
+  // Confirmed candidates, containers first (the things a moved container carries go with it).
+  for (const bool containers : {true, false})
+    for (std::size_t k = 0; k < candidates_.size();) {
+      const Candidate c = candidates_[k];
+      const ClassInfo* info = nullptr;
+      for (const auto& ci : classes_)
+        if (ci.cls == c.seen.cls) info = &ci;
+      const bool container = info && info->container;
+      if (container != containers || c.sightings < options_.confirm_sightings) {
+        ++k;
+        continue;
+      }
+      candidates_.erase(candidates_.begin() + static_cast<std::ptrdiff_t>(k));
+      bool known = false;  // explained meanwhile (carried with its container)
+      for (const auto& t : things_) known = known || (t.cls == c.seen.cls && distance(t.base, c.seen.base) <= options_.match_radius);
+      if (known) continue;
+      // A Missing thing of the class moved here (the nearest), or else a new thing.
+      BelievedThing* moved = nullptr;
+      for (auto& t : things_)
+        if (t.cls == c.seen.cls && t.state == ThingState::Missing &&
+            (!moved || distance(t.base, c.seen.base) < distance(moved->base, c.seen.base)))
+          moved = &t;
+      if (!moved) {
+        BelievedThing t;
+        t.name = fresh_name(c.seen.cls);
+        t.cls = c.seen.cls;
+        t.container = container;
+        t.size = info ? info->size : Vec3{0.04, 0.04, 0.04};
+        t.base = c.seen.base;
+        things_.push_back(std::move(t));
+        moved = &things_.back();
+        if (container) geometry_.add_container({moved->name, moved->cls, c.seen.base, moved->size, 4, {}});
+      }
+      if (container) {
+        const Vec3 d{c.seen.base[0] - moved->base[0], c.seen.base[1] - moved->base[1], c.seen.base[2] - moved->base[2]};
+        for (auto& t : things_)
+          if (!t.container && t.on == moved->name && t.state != ThingState::Held) {
+            for (std::size_t a = 0; a < 3; ++a) t.base[a] += d[a];
+            t.state = ThingState::Occluded;  // until it is seen where its container took it
+            t.missing_since = -1;
+          }
+      }
+      moved->base = c.seen.base;
+      moved->yaw = c.seen.yaw;
+      moved->state = ThingState::Visible;
+      moved->last_seen = time;
+      moved->missing_since = -1;
+    }
+}
+
+std::string Belief::fresh_name(const std::string& cls) {
+  for (;;) {
+    std::string name = cls + "_seen" + std::to_string(++added_);
+    if (!find(name)) return name;
+  }
+}
+
+void Belief::locate_all() {
+  for (const auto& t : things_)
+    if (t.container) geometry_.move_container(t.name, t.base);
+  for (auto& t : things_) {
+    t.on.clear();
+    if (t.container || t.state == ThingState::Held) continue;
+    std::string at = geometry_.locate(t.base);
+    for (const auto& c : things_)
+      if (c.container && c.name == at) t.on = std::move(at);
+  }
+}
+
+Placement Belief::placement() const {
+  Placement p;
+  for (const auto& t : things_) {
+    if (t.state == ThingState::Held)
+      p.set(t.name, "hand", t.cls, t.container);
+    else
+      p.set(t.name, t.container ? geometry_.locate_region(t.base) : geometry_.locate(t.base), t.cls, t.container);
+  }
+  return p;
+}
+
+}  // namespace rtamp::world

@@ -1,0 +1,130 @@
+// A belief about where things are, kept from what a camera sees frame by frame (paper
+// Section V: the robot knows the world only through its camera). It keeps what the camera
+// cannot see right now: each thing is Visible, Occluded (its spot is covered, by the arm
+// say), Held (it follows the gripper), OutOfView, or Missing (its spot is in view and
+// uncovered, and nothing of its class is there). Its placement is read with the same
+// Geometry as the planner's (geometry.hpp), from the believed poses.
+//
+// Rules (docs/perception.md "The belief", with the measurements that chose the numbers):
+//  - A detection is matched to the nearest believed thing of its class within
+//    match_radius (greedily, nearest pairs first); a complete detection sets the pose, an
+//    incomplete one only says the thing is there.
+//  - A thing is believed removed only after it has been Missing for remove_after seconds.
+//  - A detection no thing explains is a candidate; after confirm_sightings sightings
+//    (each within candidate_timeout of the last) it is a Missing thing of its class that
+//    moved there (the nearest one), or else a new thing.
+//  - A container's contents move with it; the held thing keeps the offset to the tool it
+//    had when grasped; detections above rest_height (in the air: in the gripper) only
+//    confirm the held thing and never start a candidate.
+// The belief never reads the truth: it sees detections, a visibility model and what the
+// robot knows of its own gripper. Storage is kept between frames.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "rtamp/world/geometry.hpp"
+#include "rtamp/world/placement.hpp"
+#include "rtamp/world/scenario.hpp"
+
+namespace rtamp::world {
+
+// A thing of a class seen in one frame: its base centre and yaw (the box fit of perception).
+struct Detection {
+  std::string cls;
+  Vec3 base{};
+  double yaw = 0;
+  bool complete = true;  // the whole outline was seen: the pose can be trusted
+};
+
+enum class ThingState { Visible, Occluded, Held, OutOfView, Missing };
+const char* to_string(ThingState s);
+
+struct BelievedThing {
+  std::string name, cls;
+  bool container = false;
+  Vec3 size{};
+  Vec3 base{};  // centre of the base, world frame
+  double yaw = 0;
+  ThingState state = ThingState::OutOfView;
+  double last_seen = -1;      // world time of the last match; < 0: never seen
+  double missing_since = -1;  // world time it became Missing
+  std::string on;             // the container it rested in at the last frame ("" if none)
+};
+
+// What a camera could say of a spot where a thing is believed to be: it would be seen
+// there (Visible), something covers it (Occluded), or it lies outside the image (OutOfView).
+enum class Sight { Visible, Occluded, OutOfView };
+
+// The camera side of the belief: a user's own perception implements it.
+class Visibility {
+ public:
+  virtual ~Visibility() = default;
+  virtual Sight sight(const BelievedThing& thing) const = 0;
+};
+
+// What the robot knows of its own gripper.
+struct Gripper {
+  std::string holds;  // the thing it grasped ("" when empty)
+  Vec3 tool{};        // the tool point (world)
+};
+
+struct BeliefOptions {
+  double match_radius = 0.05;     // m, base to base
+  double remove_after = 0.3;      // s Missing before a thing is believed removed
+  int confirm_sightings = 2;      // sightings that make a candidate a thing
+  double candidate_timeout = 0.5; // s between a candidate's sightings at most
+  double rest_height = 0.05;      // m: a base higher than this is in the air
+};
+
+class Belief {
+ public:
+  // The things the scenario declares, where it declares them (not yet seen). Throws
+  // rtamp::Error on options out of range.
+  explicit Belief(const Scenario& s, BeliefOptions options = {});
+
+  // One frame at world `time` (not earlier than the last).
+  void update(double time, const std::vector<Detection>& seen, const Visibility& visibility, const Gripper& gripper);
+
+  const std::vector<BelievedThing>& things() const { return things_; }
+  const BelievedThing* find(const std::string& name) const;
+  // Every believed thing's location: the held one "hand", the others where their base lies.
+  Placement placement() const;
+  const BeliefOptions& options() const { return options_; }
+
+ private:
+  struct Candidate {
+    Detection seen;
+    int sightings = 0;
+    double last_seen = 0;
+  };
+  void follow_gripper(const Gripper& g);
+  void match(double time, const std::vector<Detection>& seen);
+  void judge_unseen(double time, const Visibility& visibility);
+  void carry_contents(const std::vector<Vec3>& before);
+  void promote(double time, const std::vector<Detection>& seen);
+  void locate_all();
+  std::string fresh_name(const std::string& cls);
+
+  BeliefOptions options_;
+  Geometry geometry_;
+  std::vector<BelievedThing> things_;
+  std::vector<Candidate> candidates_;
+  struct ClassInfo {
+    std::string cls;
+    bool container = false;
+    Vec3 size{};  // of the first thing of the class the scenario declares
+  };
+  std::vector<ClassInfo> classes_;
+  std::string held_;
+  Vec3 held_offset_{};
+  double time_ = 0;
+  int added_ = 0;  // things the belief has named
+  // Per frame scratch, kept to spare allocations.
+  std::vector<char> used_;
+  std::vector<char> matched_;
+  std::vector<std::pair<double, std::pair<std::size_t, std::size_t>>> pairs_;
+  std::vector<Vec3> before_;  // containers' bases at the frame's start
+};
+
+}  // namespace rtamp::world

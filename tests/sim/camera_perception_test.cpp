@@ -1,0 +1,162 @@
+// The belief fed by the overhead camera in MuJoCo, against the truth: in generated static
+// scenes every thing is believed where it is under its own name after a few frames; the
+// arm stopped over each thing in turn never makes a thing believed removed; a thing
+// really removed while the arm hides it is believed removed once its place is in view
+// again; a thing added is believed only after it was seen, a relocated one keeps its name.
+#include <gtest/gtest.h>
+
+#include "rtamp/robot/skills.hpp"
+#include "rtamp/robot/ur5_kinematics.hpp"
+#include "rtamp/sim/camera_perception.hpp"
+#include "rtamp/sim/perception.hpp"
+#include "test_scenarios.hpp"
+
+namespace rtamp::sim {
+namespace {
+
+// `frames` frames at 10 Hz of simulated time.
+void watch(Simulation& sim, CameraPerception& eyes, int frames) {
+  const int steps = static_cast<int>(std::lround(0.1 / sim.timestep()));
+  for (int k = 0; k < frames; ++k) {
+    sim.step(steps);
+    eyes.frame();
+  }
+}
+
+world::Placement truth(Simulation& sim) { return Perception(sim).observe().placement(); }
+
+TEST(CameraPerception, StaticScenesAreBelievedAsTheyAreUnderTheirOwnNames) {
+  int things = 0;
+  for (std::uint64_t seed = 1; seed <= 12; ++seed) {
+    SCOPED_TRACE("seed " + std::to_string(seed));
+    const world::Scenario s = testing::camera_scene(seed);
+    Simulation sim(s);
+    sim.step(50);
+    CameraPerception eyes(sim, {.seed = seed});
+    watch(sim, eyes, 3);
+    EXPECT_EQ(eyes.belief().placement(), truth(sim));
+    for (const auto& t : eyes.belief().things()) {
+      EXPECT_EQ(t.state, world::ThingState::Visible) << t.name;
+      ++things;
+    }
+  }
+  EXPECT_GT(things, 40);
+}
+
+class ArmOver : public ::testing::Test {
+ protected:
+  // The tool `above` m over the top of thing i, gripper pointing down.
+  static bool hover(Simulation& sim, int i, double above) {
+    robot::Ur5Kinematics::Config cfg;
+    cfg.base = robot::Ur5Kinematics::base_pose(sim.scenario().robot);
+    cfg.tool_offset = sim.options().mjcf.arm.tool_offset;
+    const robot::Ur5Kinematics arm(cfg);
+    const Thing& t = sim.thing(i);
+    Eigen::Vector3d top = sim.position(i);
+    top.z() += t.container ? t.size[2] : t.size[2] / 2;
+    top.z() += above;
+    robot::IkSolutions q;
+    const robot::Joints now = sim.arm_q();
+    if (arm.ik_tool(robot::top_down_pose(top, 0), q, &now) == 0) return false;
+    sim.set_arm_configuration(q[0]);
+    return true;
+  }
+};
+
+TEST_F(ArmOver, EachThingInTurnIsNeverBelievedRemoved) {
+  int hidden = 0;
+  for (std::uint64_t seed : {4u, 7u, 10u}) {
+    SCOPED_TRACE("seed " + std::to_string(seed));
+    const world::Scenario s = testing::camera_scene(seed);
+    Simulation sim(s);
+    sim.step(50);
+    const robot::Joints home = sim.arm_q();
+    CameraPerception eyes(sim, {.seed = seed});
+    watch(sim, eyes, 3);
+    const world::Placement before = truth(sim);
+    for (std::size_t i = 0; i < sim.things().size(); ++i) {
+      const Thing& t = sim.thing(static_cast<int>(i));
+      if (!t.present || t.name.empty() || t.container) continue;
+      ASSERT_TRUE(hover(sim, static_cast<int>(i), 0.03)) << t.name;
+      for (int k = 0; k < 10; ++k) {
+        watch(sim, eyes, 1);
+        EXPECT_EQ(eyes.belief().placement(), before) << t.name << " frame " << k;
+      }
+      const world::BelievedThing* b = eyes.belief().find(t.name);
+      ASSERT_NE(b, nullptr);
+      if (b->state == world::ThingState::Occluded) ++hidden;
+      sim.set_arm_configuration(home);
+    }
+  }
+  EXPECT_GT(hidden, 3);  // the arm does hide things
+}
+
+TEST_F(ArmOver, AThingRemovedWhileHiddenIsBelievedRemovedWhenItsPlaceIsSeen) {
+  const world::Scenario s = testing::camera_scene(7);
+  Simulation sim(s);
+  sim.step(50);
+  const robot::Joints home = sim.arm_q();
+  CameraPerception eyes(sim, {.seed = 7});
+  watch(sim, eyes, 3);
+  int i = -1;
+  for (std::size_t k = 0; k < sim.things().size() && i < 0; ++k)
+    if (!sim.thing(static_cast<int>(k)).container && !sim.thing(static_cast<int>(k)).name.empty()) i = static_cast<int>(k);
+  ASSERT_GE(i, 0);
+  const std::string name = sim.thing(i).name;
+  ASSERT_TRUE(hover(sim, i, 0.03));
+  watch(sim, eyes, 2);
+  ASSERT_EQ(eyes.belief().find(name)->state, world::ThingState::Occluded);
+  sim.hide(i);
+  watch(sim, eyes, 10);
+  ASSERT_NE(eyes.belief().find(name), nullptr) << "removed while its place was hidden";
+  sim.set_arm_configuration(home);
+  const double back = sim.time();
+  while (eyes.belief().find(name) && sim.time() < back + 2) watch(sim, eyes, 1);
+  EXPECT_EQ(eyes.belief().find(name), nullptr);
+  // Within the configured time and a frame.
+  EXPECT_LE(sim.time() - back, eyes.belief().options().remove_after + 0.2 + 1e-9);
+  EXPECT_EQ(eyes.belief().placement(), truth(sim));
+}
+
+TEST(CameraPerception, AnAddedThingIsBelievedAfterItWasSeenARelocatedOneKeepsItsName) {
+  const world::Scenario s = testing::camera_scene(5);
+  Simulation sim(s);
+  sim.step(50);
+  CameraPerception eyes(sim, {.seed = 5});
+  watch(sim, eyes, 3);
+  // A block moved within its region's far corner.
+  int i = -1;
+  for (std::size_t k = 0; k < sim.things().size() && i < 0; ++k)
+    if (!sim.thing(static_cast<int>(k)).container && !sim.thing(static_cast<int>(k)).name.empty()) i = static_cast<int>(k);
+  ASSERT_GE(i, 0);
+  const std::string name = sim.thing(i).name;
+  const std::size_t count = eyes.belief().things().size();
+  const world::Region& far = s.regions.back();
+  Eigen::Isometry3d pose = sim.pose(i);
+  pose.translation() = Eigen::Vector3d(far.center[0] + far.size[0] / 2 - 0.03, far.center[1] + far.size[1] / 2 - 0.03,
+                                       far.center[2] + sim.thing(i).size[2] / 2 + 0.001);
+  sim.set_pose(i, pose);
+  watch(sim, eyes, 5);
+  EXPECT_EQ(eyes.belief().things().size(), count);
+  ASSERT_NE(eyes.belief().find(name), nullptr);
+  EXPECT_EQ(eyes.belief().placement(), truth(sim));
+  // A block added by a person: believed after its second sighting, under a name of the belief's.
+  const world::Region& near = s.regions.front();
+  Eigen::Isometry3d at = Eigen::Isometry3d::Identity();
+  at.translation() = Eigen::Vector3d(near.center[0] - near.size[0] / 2 + 0.03, near.center[1] - near.size[1] / 2 + 0.03,
+                                     near.center[2] + 0.021);
+  sim.add("extra", sim.thing(i).cls, false, at, {0.04, 0.04, 0.04});
+  watch(sim, eyes, 1);
+  EXPECT_EQ(eyes.belief().things().size(), count);
+  watch(sim, eyes, 1);
+  ASSERT_EQ(eyes.belief().things().size(), count + 1);
+  const std::string added = eyes.belief().things().back().name;
+  EXPECT_EQ(added.rfind(sim.thing(i).cls + "_seen", 0), 0u) << added;
+  world::Placement expected = truth(sim);
+  expected.things[added] = expected.things.at("extra");
+  expected.things.erase("extra");
+  EXPECT_EQ(eyes.belief().placement(), expected);
+}
+
+}  // namespace
+}  // namespace rtamp::sim

@@ -1,0 +1,230 @@
+// The belief's rules on hand-made frames: what a camera cannot see now is kept (occluded,
+// out of view), a thing is removed only after it was Missing for the configured time, new
+// things only after k sightings, a thing that vanished and shows up elsewhere keeps its
+// name, the held thing follows the tool, a container's contents move with it; and the
+// placement read from the belief equals the scenario's when every thing is seen where it is.
+#include <gtest/gtest.h>
+
+#include <set>
+
+#include "rtamp/util/error.hpp"
+#include "rtamp/world/belief.hpp"
+#include "rtamp/world/geometry.hpp"
+
+namespace rtamp::world {
+namespace {
+
+Scenario scene() {
+  Scenario s;
+  s.regions = {{"r1", {0.4, -0.3, 0}, {0.3, 0.3, 0}, 8, {}}, {"r2", {0.4, 0.3, 0}, {0.3, 0.3, 0}, 8, {}}};
+  s.containers = {{"t1", "tray", {0.45, -0.3, 0}, {0.24, 0.16, 0.03}, 4, {}}};
+  s.objects = {{"b1", "block", {0.45, -0.3, 0.01}, {0.04, 0.04, 0.04}, {}},
+               {"b2", "block", {0.35, 0.3, 0}, {0.04, 0.04, 0.04}, {}},
+               {"b3", "block", {0.45, 0.3, 0}, {0.04, 0.04, 0.04}, {}}};
+  return s;
+}
+
+// Every spot in view and uncovered, except the things named.
+struct Spots : Visibility {
+  std::set<std::string> covered, outside;
+  Sight sight(const BelievedThing& t) const override {
+    if (covered.count(t.name)) return Sight::Occluded;
+    if (outside.count(t.name)) return Sight::OutOfView;
+    return Sight::Visible;
+  }
+};
+
+Detection at(const std::string& cls, double x, double y, double z = 0) { return {cls, {x, y, z}, 0, true}; }
+
+// The scenario's things, each seen where it is.
+std::vector<Detection> all_seen(const Scenario& s) {
+  std::vector<Detection> d;
+  for (const auto& c : s.containers) d.push_back(at(c.cls, c.position[0], c.position[1], c.position[2]));
+  for (const auto& o : s.objects) d.push_back(at(o.cls, o.position[0], o.position[1], o.position[2]));
+  return d;
+}
+
+TEST(Belief, EveryThingSeenWhereItIsGivesTheScenariosPlacement) {
+  const Scenario s = scene();
+  Belief b(s);
+  b.update(0.1, all_seen(s), Spots{}, {});
+  EXPECT_EQ(b.placement(), initial_placement(s));
+  for (const auto& t : b.things()) EXPECT_EQ(t.state, ThingState::Visible) << t.name;
+  // Seen a little off: the pose follows, the names stay.
+  auto d = all_seen(s);
+  for (auto& x : d) x.base[0] += 0.01;
+  b.update(0.2, d, Spots{}, {});
+  EXPECT_NEAR(b.find("b2")->base[0], 0.36, 1e-12);
+  EXPECT_EQ(b.things().size(), 4u);
+}
+
+TEST(Belief, AnIncompleteDetectionConfirmsButDoesNotMove) {
+  const Scenario s = scene();
+  Belief b(s);
+  auto d = all_seen(s);
+  d[2].base[0] += 0.02;  // b2, half hidden: the fit is off and says so
+  d[2].complete = false;
+  b.update(0.1, d, Spots{}, {});
+  EXPECT_EQ(b.find("b2")->state, ThingState::Visible);
+  EXPECT_DOUBLE_EQ(b.find("b2")->base[0], 0.35);
+}
+
+TEST(Belief, HiddenOrOutOfViewIsKeptForever) {
+  const Scenario s = scene();
+  Belief b(s);
+  Spots spots;
+  spots.covered = {"b2"};
+  spots.outside = {"b3"};
+  auto d = all_seen(s);
+  d.erase(d.begin() + 2, d.end());  // b2 and b3 not seen
+  for (double t = 0.1; t < 30; t += 0.1) b.update(t, d, spots, {});
+  ASSERT_NE(b.find("b2"), nullptr);
+  ASSERT_NE(b.find("b3"), nullptr);
+  EXPECT_EQ(b.find("b2")->state, ThingState::Occluded);
+  EXPECT_EQ(b.find("b3")->state, ThingState::OutOfView);
+  EXPECT_EQ(b.placement(), initial_placement(s));
+}
+
+TEST(Belief, RemovedOnlyAfterMissingForTheConfiguredTime) {
+  const Scenario s = scene();
+  BeliefOptions o;
+  o.remove_after = 0.3;
+  Belief b(s, o);
+  auto d = all_seen(s);
+  d.erase(d.begin() + 2);  // b2 gone, its spot in view
+  b.update(1.0, d, Spots{}, {});
+  EXPECT_EQ(b.find("b2")->state, ThingState::Missing);
+  b.update(1.2, d, Spots{}, {});
+  ASSERT_NE(b.find("b2"), nullptr);
+  // Covered meanwhile: the clock starts again when the spot is in view.
+  Spots cover;
+  cover.covered = {"b2"};
+  b.update(1.25, d, cover, {});
+  b.update(1.5, d, Spots{}, {});
+  ASSERT_NE(b.find("b2"), nullptr);
+  b.update(1.79, d, Spots{}, {});
+  ASSERT_NE(b.find("b2"), nullptr);
+  b.update(1.8, d, Spots{}, {});
+  EXPECT_EQ(b.find("b2"), nullptr);
+  EXPECT_EQ(b.placement().things.count("b2"), 0u);
+}
+
+TEST(Belief, ANewThingAfterKSightingsWithANameNeverUsed) {
+  const Scenario s = scene();
+  BeliefOptions o;
+  o.confirm_sightings = 3;
+  Belief b(s, o);
+  auto d = all_seen(s);
+  d.push_back(at("block", 0.5, 0.25));
+  b.update(0.1, d, Spots{}, {});
+  b.update(0.2, d, Spots{}, {});
+  EXPECT_EQ(b.things().size(), 4u);
+  b.update(0.3, d, Spots{}, {});
+  ASSERT_EQ(b.things().size(), 5u);
+  const BelievedThing& n = b.things().back();
+  EXPECT_EQ(n.name, "block_seen1");
+  EXPECT_EQ(b.placement().things.at("block_seen1").location, "r2");
+  // Removed, and another appears: a new name.
+  d.pop_back();
+  for (double t = 0.4; t < 1.0; t += 0.1) b.update(t, d, Spots{}, {});
+  EXPECT_EQ(b.find("block_seen1"), nullptr);
+  d.push_back(at("block", 0.3, 0.35));
+  for (double t = 1.0; t < 1.35; t += 0.1) b.update(t, d, Spots{}, {});
+  EXPECT_NE(b.find("block_seen2"), nullptr);
+}
+
+TEST(Belief, ASightingThatDoesNotRecurIsForgotten) {
+  const Scenario s = scene();
+  Belief b(s);  // two sightings within 0.5 s
+  auto d = all_seen(s);
+  auto flash = d;
+  flash.push_back(at("block", 0.5, 0.25));
+  b.update(0.1, flash, Spots{}, {});
+  b.update(0.7, d, Spots{}, {});
+  b.update(0.8, flash, Spots{}, {});
+  EXPECT_EQ(b.things().size(), 4u);
+}
+
+TEST(Belief, AThingThatVanishedAndShowsUpElsewhereKeepsItsName) {
+  const Scenario s = scene();
+  Belief b(s);
+  auto d = all_seen(s);
+  d[3] = at("block", 0.35, -0.2);  // b3 from r2 to r1, off the tray
+  b.update(0.1, d, Spots{}, {});
+  b.update(0.2, d, Spots{}, {});
+  ASSERT_EQ(b.things().size(), 4u);
+  EXPECT_EQ(b.placement().things.at("b3").location, "r1");
+  EXPECT_EQ(b.find("b3")->state, ThingState::Visible);
+}
+
+TEST(Belief, TheHeldThingFollowsTheToolAndIsPutDownWhereTheToolLeftIt) {
+  const Scenario s = scene();
+  Belief b(s);
+  auto d = all_seen(s);
+  b.update(0.1, d, Spots{}, {});
+  Gripper g{"b2", {0.35, 0.3, 0.15}};
+  d.erase(d.begin() + 2);
+  b.update(0.2, d, Spots{}, g);
+  EXPECT_EQ(b.placement().things.at("b2").location, "hand");
+  // Carried over r1, seen in the air under the tool: no new thing.
+  g.tool = {0.35, -0.4, 0.3};
+  auto carried = d;
+  carried.push_back(at("block", 0.35, -0.4, 0.15));
+  for (double t = 0.3; t < 1.0; t += 0.1) b.update(t, carried, Spots{}, g);
+  EXPECT_EQ(b.things().size(), 4u);
+  EXPECT_NEAR(b.find("b2")->base[1], -0.4, 1e-12);
+  // Lowered and let go: where the tool left it, covered by the arm until seen.
+  g.tool = {0.35, -0.4, 0.15};
+  b.update(1.0, d, Spots{}, g);
+  Spots cover;
+  cover.covered = {"b2"};
+  b.update(1.1, d, cover, {});
+  EXPECT_EQ(b.find("b2")->state, ThingState::Occluded);
+  EXPECT_EQ(b.placement().things.at("b2").location, "r1");
+  d.push_back(at("block", 0.35, -0.4));
+  b.update(1.2, d, Spots{}, {});
+  EXPECT_EQ(b.find("b2")->state, ThingState::Visible);
+  EXPECT_EQ(b.things().size(), 4u);
+}
+
+TEST(Belief, AContainersContentsMoveWithIt) {
+  const Scenario s = scene();
+  Belief b(s);
+  auto d = all_seen(s);
+  b.update(0.1, d, Spots{}, {});
+  // The tray moves 3 cm (tracked) with b1 hidden under a hand: b1 goes along.
+  Spots cover;
+  cover.covered = {"b1"};
+  d[0].base[1] += 0.03;
+  d.erase(d.begin() + 1);
+  b.update(0.2, d, cover, {});
+  EXPECT_NEAR(b.find("b1")->base[1], -0.27, 1e-12);
+  // Then far, to r2's corner, with b1 on it: the tray and b1 keep their names.
+  d = all_seen(s);
+  d[0].base = {0.4, 0.32, 0};
+  d[1].base = {0.4, 0.32, 0.01};
+  d.erase(d.begin() + 2, d.end());  // b2 and b3 out of view meanwhile
+  Spots away;
+  away.outside = {"b2", "b3"};
+  for (double t = 0.3; t < 0.65; t += 0.1) b.update(t, d, away, {});
+  ASSERT_EQ(b.things().size(), 4u);
+  EXPECT_EQ(b.placement().things.at("t1").location, "r2");
+  EXPECT_EQ(b.placement().things.at("b1").location, "t1");
+  EXPECT_EQ(b.find("b1")->state, ThingState::Visible);
+}
+
+TEST(Belief, BadOptionsAndTimeGoingBackAreErrors) {
+  const Scenario s = scene();
+  BeliefOptions o;
+  o.match_radius = 0;
+  EXPECT_THROW(Belief(s, o), Error);
+  o = {};
+  o.confirm_sightings = 0;
+  EXPECT_THROW(Belief(s, o), Error);
+  Belief b(s);
+  b.update(1.0, {}, Spots{}, {});
+  EXPECT_THROW(b.update(0.5, {}, Spots{}, {}), Error);
+}
+
+}  // namespace
+}  // namespace rtamp::world
