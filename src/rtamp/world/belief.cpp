@@ -20,7 +20,8 @@ const char* to_string(ThingState s) {
 
 namespace {
 
-double distance(const Vec3& a, const Vec3& b) { return std::hypot(a[0] - b[0], a[1] - b[1], a[2] - b[2]); }
+// In the table's plane: things rest on surfaces, and a partly seen thing's height is the least sure.
+double distance(const Vec3& a, const Vec3& b) { return std::hypot(a[0] - b[0], a[1] - b[1]); }
 
 bool finite_positive(double x) { return std::isfinite(x) && x > 0; }
 
@@ -95,9 +96,10 @@ void Belief::follow_gripper(const Gripper& g) {
 void Belief::match(double time, const std::vector<Detection>& seen) {
   used_.assign(seen.size(), 0);
   matched_.assign(things_.size(), 0);
-  // In the air: the held thing, seen in the gripper. Never a thing at rest.
+  // Not at rest: in the air (the held thing, seen in the gripper), or below the table (a
+  // side face taken for a top). Never a thing at rest.
   for (std::size_t j = 0; j < seen.size(); ++j)
-    if (seen[j].base[2] > options_.rest_height) used_[j] = 1;
+    if (seen[j].base[2] > options_.rest_height || seen[j].base[2] < -kBelowTolerance) used_[j] = 1;
   for (std::size_t i = 0; i < things_.size(); ++i)
     if (things_[i].state == ThingState::Held) {
       matched_[i] = 1;
@@ -177,7 +179,7 @@ void Belief::judge_unseen(double time, const Visibility& visibility) {
 void Belief::promote(double time, const std::vector<Detection>& seen) {
   std::erase_if(candidates_, [&](const Candidate& c) { return time - c.last_seen > options_.candidate_timeout; });
   for (std::size_t j = 0; j < seen.size(); ++j) {
-    if (used_[j]) continue;
+    if (used_[j] || !seen[j].complete) continue;  // a partly seen thing is no evidence of a new one
     const Detection& d = seen[j];
     // A second view of a thing already explained (a blob the arm cut in two) is no candidate.
     bool known = false;
@@ -194,7 +196,7 @@ void Belief::promote(double time, const std::vector<Detection>& seen) {
     } else if (nearest->last_seen == time) {
       continue;  // two detections of one candidate in a frame count once
     }
-    if (d.complete || nearest->sightings == 0) nearest->seen = d;
+    nearest->seen = d;
     ++nearest->sightings;
     nearest->last_seen = time;
   }

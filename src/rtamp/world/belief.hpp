@@ -7,15 +7,15 @@
 //
 // Rules (docs/perception.md "The belief", with the measurements that chose the numbers):
 //  - A detection is matched to the nearest believed thing of its class within
-//    match_radius (greedily, nearest pairs first); a complete detection sets the pose, an
-//    incomplete one only says the thing is there.
+//    match_radius in the table's plane (greedily, nearest pairs first); a complete
+//    detection sets the pose, an incomplete one only says the thing is there.
 //  - A thing is believed removed only after it has been Missing for remove_after seconds.
-//  - A detection no thing explains is a candidate; after confirm_sightings sightings
+//  - A complete detection no thing explains is a candidate; after confirm_sightings sightings
 //    (each within candidate_timeout of the last) it is a Missing thing of its class that
 //    moved there (the nearest one), or else a new thing.
 //  - A container's contents move with it; the held thing keeps the offset to the tool it
-//    had when grasped; detections above rest_height (in the air: in the gripper) only
-//    confirm the held thing and never start a candidate.
+//    had when grasped; detections not at rest (base above rest_height: in the gripper; or
+//    below the table: a side face taken for a top) only confirm the held thing.
 // The belief never reads the truth: it sees detections, a visibility model and what the
 // robot knows of its own gripper. Storage is kept between frames.
 #pragma once
@@ -70,7 +70,7 @@ struct Gripper {
 };
 
 struct BeliefOptions {
-  double match_radius = 0.05;     // m, base to base
+  double match_radius = 0.05;     // m, base to base in the table's plane
   double remove_after = 0.3;      // s Missing before a thing is believed removed
   int confirm_sightings = 2;      // sightings that make a candidate a thing
   double candidate_timeout = 0.5; // s between a candidate's sightings at most
