@@ -2,7 +2,9 @@
 // as fast as the CPU allows (sim/session.hpp), or write the generated MJCF:
 //   rtamp sim 3-block-tray --do "move o1 r3; move r3 r2" [--json] [--seed N]
 //        [--snapshot out.png] [--video out.mp4] [--operator] [--mjcf model.xml]
-//        [--camera NAME] [--depth depth.png] [--segmentation seg.png]
+//        [--camera NAME] [--depth depth.png] [--segmentation seg.png] [--perception camera]
+// With --perception camera the robot perceives through the camera (--camera, else the
+// scenario's primary one) and a belief (sim/perception.hpp); "perceived" is then the belief.
 // With --camera (or --depth / --segmentation, which use the scenario's primary
 // camera when no --camera is given), --snapshot writes that camera's RGB instead of
 // the overview picture (sim/camera_snapshot.hpp).
@@ -14,6 +16,7 @@
 #include "command.hpp"
 #include "options.hpp"
 #include "rtamp/sim/action_check.hpp"
+#include "rtamp/sim/camera_perception.hpp"
 #include "rtamp/sim/camera_snapshot.hpp"
 #include "rtamp/sim/session.hpp"
 #include "rtamp/task/validate.hpp"
@@ -29,6 +32,7 @@ struct SimArgs {
   std::string snapshot;
   std::string camera, depth, segmentation;
   std::string video;
+  std::string perception = "truth";
   bool json = false;
   bool scripted = false;
   double random_rate = 0;
@@ -60,6 +64,10 @@ rtamp::cli::Registrar reg{
                            "Random operator interventions per simulated second (relocate, add, remove)");
       rtamp::cli::add_real(sub, "--noise", a->noise, {0, 1}, "Perception: standard deviation of x, y position noise (m)");
       rtamp::cli::add_real(sub, "--miss", a->miss, {0, 1}, "Perception: probability of missing a thing");
+      sub.add_option("--perception", a->perception,
+                     "How the robot perceives: truth (the simulation's poses) or camera (RGB-D frames of --camera, "
+                     "else the primary camera, segmented and fitted from pixels and kept in a belief)")
+          ->check(CLI::IsMember({"truth", "camera"}));
       sub.add_option("--snapshot", a->snapshot, "Render the final scene to this PNG file");
       sub.add_option("--camera", a->camera,
                      "Write --snapshot from this camera of the scenario (docs/perception.md) instead of the overview");
@@ -92,6 +100,8 @@ rtamp::cli::Registrar reg{
         opt.person.rate = a->random_rate;
         opt.perception.position_sigma = a->noise;
         opt.perception.miss_probability = a->miss;
+        opt.perception.source = sim::parse_perception_source(a->perception);
+        opt.perception.camera = camera_name;
         opt.video_path = a->video;
         opt.render.width = a->width;
         opt.render.height = a->height;
@@ -136,6 +146,9 @@ rtamp::cli::Registrar reg{
             where[o.name] = {{"location", o.detected ? o.location : std::string("undetected")},
                              {"class", o.cls},
                              {"position", {o.position[0], o.position[1], o.position[2]}}};
+          if (const sim::CameraPerception* eyes = session.perception().camera())
+            for (const auto& t : eyes->belief().things()) where[t.name]["state"] = world::to_string(t.state);
+          j["perception"] = a->perception;
           j["perceived"] = where;
           j["sim_time"] = rep.sim_time;
           j["wall_time"] = rep.wall_time;

@@ -83,6 +83,11 @@ void bind_episode(py::module_& m) {
           [](EpisodeOptions& o, double p) { o.world_settings.failure_probability = p; },
           "Worlds that draw move failures (symbolic): the chance that a move fails")
       .def_property(
+          "perception", [](const EpisodeOptions& o) { return o.world_settings.perception; },
+          [](EpisodeOptions& o, const std::string& p) { o.world_settings.perception = p; },
+          "How the robot perceives in the mujoco world: 'truth' (the simulation's poses) or 'camera' (the\n"
+          "scenario's primary camera, segmented and fitted from pixels, kept in a belief)")
+      .def_property(
           "random_rate", [](const EpisodeOptions& o) { return o.person.rate; },
           [](EpisodeOptions& o, double r) { o.person.rate = r; },
           "Random interventions per second of world time, of every kind (docs/person.md)")

@@ -1,6 +1,10 @@
 #include "rtamp/episode/sim_world.hpp"
 
 #include <algorithm>
+#include <cmath>
+#include <optional>
+
+#include "rtamp/sim/camera_perception.hpp"
 
 namespace rtamp::episode {
 
@@ -14,6 +18,7 @@ void SimWorld::advance(double dt) {
   for (int k = 0; k < steps; ++k) {
     session_.controller().update();
     sim.step();
+    session_.perception().advance();
     const Eigen::Vector3d tool = sim.tool_pose().translation();
     travelled_ += (tool - last).norm();  // the tool path actually travelled
     last = tool;
@@ -60,13 +65,45 @@ void SimWorld::end(exec::MoveStatus s, const std::string& why) {
   phase_ = Phase::Done;
 }
 
+std::string SimWorld::body_of(const std::string& believed) const {
+  const sim::CameraPerception* eyes = session_.perception().camera();
+  const sim::Simulation& sim = session_.sim();
+  if (!eyes || sim.scenario().find_region(believed)) return believed;
+  const int named = sim.find(believed);
+  if (named >= 0 && sim.thing(named).present) return believed;
+  const world::BelievedThing* b = eyes->belief().find(believed);
+  if (!b) return believed;
+  std::string body = believed;
+  double best = 0.1;  // m: farther, nothing is where the thing is believed
+  for (int i = 0; i < static_cast<int>(sim.things().size()); ++i) {
+    const sim::Thing& t = sim.thing(i);
+    if (!t.present || t.name.empty() || t.cls != b->cls) continue;
+    const Eigen::Vector3d p = sim.position(i);
+    const double d = std::hypot(p.x() - b->base[0], p.y() - b->base[1]);
+    if (d < best) best = d, body = t.name;
+  }
+  return body;
+}
+
 void SimWorld::start(const exec::Move& m) {
   move_ = m;
+  move_.thing = body_of(m.thing);
+  move_.from = body_of(m.from);
+  move_.to = body_of(m.to);
+  to_ = m.to;
   taken_ = false;
   status_ = exec::MoveStatus::Running;
   why_.clear();
   phase_ = Phase::Picking;
-  if (!session_.skills().start_pick(m.thing)) end(exec::MoveStatus::Failed, session_.controller().reason());
+  // With a camera the arm goes where the thing is seen.
+  std::optional<robot::ThingPose> seen;
+  if (const sim::CameraPerception* eyes = session_.perception().camera())
+    if (const world::BelievedThing* b = eyes->belief().find(m.thing)) {
+      seen.emplace();
+      seen->position = Eigen::Vector3d(b->base[0], b->base[1], b->base[2]);
+      seen->yaw = b->yaw;
+    }
+  if (!session_.skills().start_pick(move_.thing, seen)) end(exec::MoveStatus::Failed, session_.controller().reason());
 }
 
 bool SimWorld::place_somewhere(const std::string& preferred) {
@@ -125,7 +162,7 @@ exec::MoveStatus SimWorld::poll(std::string* why) {
           break;
         }
         case Phase::Placing:
-          hand_ = move_.to;
+          hand_ = to_;
           end(exec::MoveStatus::Succeeded, {});
           break;
         case Phase::Recovering:

@@ -15,6 +15,10 @@
 //    gripper backs off;
 //  - halt() stops the arm, puts a held thing back the same way, or backs the
 //    empty gripper straight up; busy() is true until that is done.
+// With camera perception (sim/perception.hpp) the loop's names are the belief's: a move
+// picks at the thing's perceived pose, and the simulation's body it acts on is the one of
+// that class nearest where the thing is believed (a thing a person added has a name of
+// the belief's own).
 // Invariants: at most one move runs; hand() is where the last place ended.
 #pragma once
 
@@ -66,6 +70,8 @@ class SimWorld final : public exec::World, public exec::Intervenable, public exe
   enum class Phase { Idle, Picking, Placing, Recovering, Done };
 
   bool holds(const std::string& thing) const;
+  // The simulation's body a believed thing's name stands for (the name itself with truth perception).
+  std::string body_of(const std::string& believed) const;
   void note(const sim::OperatorEvent& e);
   void fail_or_recover(const std::string& why);
   // Starts placing the held thing at `preferred`, else the closest region with room; false if none.
@@ -74,7 +80,8 @@ class SimWorld final : public exec::World, public exec::Intervenable, public exe
 
   sim::Session session_;
   sim::Percept percept_;
-  exec::Move move_;
+  exec::Move move_;   // in the simulation's names
+  std::string to_;    // where the loop asked the move to go, in its names
   Phase phase_ = Phase::Idle;
   exec::MoveStatus status_ = exec::MoveStatus::Idle;
   std::string why_, failure_, hand_, placed_at_;

@@ -19,10 +19,14 @@ std::unique_ptr<exec::World> make_mujoco(const world::Scenario& s, std::uint64_t
                 ": the mujoco world's moves fail by physics alone (the option is for the symbolic world)");
   sim::SessionOptions so;
   so.seed = seed;
+  so.perception.source = sim::parse_perception_source(w.perception);
+  so.perception.camera = world::primary_camera(world::cameras_of(s)).name;
   return std::make_unique<SimWorld>(s, so);
 }
 
 std::unique_ptr<exec::World> make_symbolic(const world::Scenario& s, std::uint64_t seed, const WorldSettings& w) {
+  if (w.perception != "truth")
+    throw Error("perception '" + w.perception + "': the symbolic world perceives exactly (it has no camera)");
   exec::SymbolicWorldOptions so;
   so.seed = seed;
   so.failure_probability = w.failure_probability;

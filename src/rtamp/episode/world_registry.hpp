@@ -27,6 +27,9 @@ namespace rtamp::episode {
 // What a world is built from besides the scenario and the episode's seed.
 struct WorldSettings {
   double failure_probability = 0;  // worlds that draw move failures (symbolic): chance that a move fails
+  // How the robot perceives (mujoco): "truth" (the simulation's poses) or "camera" (the
+  // scenario's primary camera and a belief, sim/perception.hpp).
+  std::string perception = "truth";
 };
 
 // Builds the world for a scenario (throws rtamp::Error on bad settings, before anything runs).

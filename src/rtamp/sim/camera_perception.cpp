@@ -1,5 +1,7 @@
 #include "rtamp/sim/camera_perception.hpp"
 
+#include <cmath>
+
 namespace rtamp::sim {
 
 namespace {
@@ -25,9 +27,21 @@ void CameraPerception::frame() {
   detector_.detect(image_, detections_);
   visibility_.set_frame(image_);
   world::Gripper gripper;
-  if (sim_.held() >= 0) gripper.holds = sim_.thing(sim_.held()).name;
   const Eigen::Vector3d tool = sim_.tool_pose().translation();
   gripper.tool = {tool.x(), tool.y(), tool.z()};
+  if (sim_.held() != held_) {
+    // Just grasped: the believed thing of its class nearest the tool (the one the arm went for).
+    held_ = sim_.held();
+    held_name_.clear();
+    double best = INFINITY;
+    if (held_ >= 0)
+      for (const auto& t : belief_.things())
+        if (t.cls == sim_.thing(held_).cls) {
+          const double d = std::hypot(t.base[0] - tool.x(), t.base[1] - tool.y());
+          if (d < best) best = d, held_name_ = t.name;
+        }
+  }
+  gripper.holds = held_name_;
   belief_.update(sim_.time(), detections_, visibility_, gripper);
 }
 

@@ -2,7 +2,8 @@
 // the scenario's cameras is rendered headless, its things detected from pixels
 // (camera_detector.hpp), the frame's depth tells where the camera could see
 // (depth_visibility.hpp), and both are folded into the belief (world/belief.hpp) together
-// with what the robot knows of its own gripper (what it grasped, where its tool is).
+// with what the robot knows of its own gripper (that it grasped something, where its tool
+// is): the thing grasped is the believed thing of its class nearest the tool.
 //
 // Invariants: reads the simulation only through the rendered RGB and depth images and
 // the arm's own state, never the things' poses; the same seed gives the same frames.
@@ -45,6 +46,8 @@ class CameraPerception {
   world::Belief belief_;
   CameraImage image_;
   std::vector<world::Detection> detections_;
+  int held_ = -1;          // the simulation's thing in the gripper at the last frame
+  std::string held_name_;  // its name in the belief
 };
 
 }  // namespace rtamp::sim

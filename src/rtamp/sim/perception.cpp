@@ -2,6 +2,9 @@
 
 #include <algorithm>
 
+#include "rtamp/sim/camera_perception.hpp"
+#include "rtamp/util/error.hpp"
+
 namespace rtamp::sim {
 
 world::Placement Percept::placement() const {
@@ -17,8 +20,34 @@ const Observation* Percept::find(const std::string& name) const {
   return nullptr;
 }
 
+const char* to_string(PerceptionSource s) { return s == PerceptionSource::Camera ? "camera" : "truth"; }
+
+PerceptionSource parse_perception_source(const std::string& word) {
+  if (word == "truth") return PerceptionSource::Truth;
+  if (word == "camera") return PerceptionSource::Camera;
+  throw Error("unknown perception '" + word + "' (truth or camera)");
+}
+
 Perception::Perception(const Simulation& sim, PerceptionOptions options)
-    : sim_(sim), options_(options), rng_(options.seed), geometry_(sim.scenario().regions, {}) {}
+    : sim_(sim), options_(options), rng_(options.seed), geometry_(sim.scenario().regions, {}) {
+  if (options_.source != PerceptionSource::Camera) return;
+  if (options_.position_sigma != 0 || options_.miss_probability != 0)
+    throw Error("position noise and misses are for truth perception; a camera's errors are its own");
+  camera_ = std::make_unique<CameraPerception>(
+      sim, CameraPerceptionOptions{.camera = options_.camera, .belief = options_.belief, .seed = options_.seed});
+  for (const auto& c : world::cameras_of(sim.scenario()))
+    if (c.name == options_.camera) frame_period_ = 1.0 / c.rate;
+  next_frame_ = sim.time();
+}
+
+Perception::~Perception() = default;
+Perception::Perception(Perception&&) noexcept = default;
+
+void Perception::advance() {
+  if (!camera_ || sim_.time() + 1e-9 < next_frame_) return;
+  camera_->frame();
+  while (next_frame_ <= sim_.time() + 1e-9) next_frame_ += frame_period_;
+}
 
 Percept Perception::observe() {
   Percept p;
@@ -29,6 +58,21 @@ Percept Perception::observe() {
 void Perception::observe(Percept& out) {
   out.time = sim_.time();
   out.things.clear();
+  if (camera_) {
+    advance();
+    const world::Placement p = camera_->belief().placement();
+    for (const world::BelievedThing& t : camera_->belief().things()) {
+      Observation o;
+      o.name = t.name;
+      o.cls = t.cls;
+      o.container = t.container;
+      o.position = t.base;
+      o.location = p.things.at(t.name).location;
+      if (o.location == "hand") o.location = kInHand;
+      out.things.push_back(std::move(o));
+    }
+    return;
+  }
   const bool noisy = options_.position_sigma > 0 || options_.miss_probability > 0;
   std::normal_distribution<double> noise(0.0, options_.position_sigma > 0 ? options_.position_sigma : 1.0);
   std::uniform_real_distribution<double> unit(0.0, 1.0);

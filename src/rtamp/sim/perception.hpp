@@ -1,10 +1,14 @@
-// Perception: what the robot believes is where. Reads body poses from the simulation
-// and maps them to symbolic locations with world::Geometry — the same geometric
-// abstraction the planner uses to read a scenario (paper Section II's partition of the
-// workspace into regions; Section V's camera + segmentation replaced by ground truth
-// plus optional noise).
+// Perception: what the robot believes is where, from one of two sources. `Truth` reads
+// body poses from the simulation and maps them to symbolic locations with
+// world::Geometry — the same geometric abstraction the planner uses to read a scenario
+// (paper Section II's partition of the workspace into regions) — with optional noise.
+// `Camera` sees as the paper's robot did (Section V): one of the scenario's cameras,
+// rendered at its rate of world time (advance()), segmented and fitted from pixels, and
+// kept in a world::Belief (camera_perception.hpp); a percept then lists the believed
+// things at their believed poses, under the belief's names (a thing a person added is
+// named by the belief, e.g. "block_seen1").
 //
-// Rules: an object's observed point is the centre of its base (body origin minus half
+// Truth's rules: an object's observed point is the centre of its base (body origin minus half
 // its height along world z); a held object is "in hand" (location kInHand); a
 // container's location is the region under its position; containers are located with
 // their CURRENT poses (moved, added, removed trays are tracked). With noise on, each
@@ -14,11 +18,13 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <random>
 #include <string>
 #include <vector>
 
 #include "rtamp/sim/simulation.hpp"
+#include "rtamp/world/belief.hpp"
 #include "rtamp/world/geometry.hpp"
 #include "rtamp/world/placement.hpp"
 
@@ -26,11 +32,21 @@ namespace rtamp::sim {
 
 inline constexpr const char* kInHand = "hand";
 
+enum class PerceptionSource { Truth, Camera };
+// "truth" / "camera"; parse throws rtamp::Error naming the word.
+const char* to_string(PerceptionSource s);
+PerceptionSource parse_perception_source(const std::string& word);
+
 struct PerceptionOptions {
-  double position_sigma = 0;    // m, standard deviation of x and y noise
-  double miss_probability = 0;  // chance a present thing is not detected
+  PerceptionSource source = PerceptionSource::Truth;
+  double position_sigma = 0;    // Truth: m, standard deviation of x and y noise
+  double miss_probability = 0;  // Truth: chance a present thing is not detected
   std::uint64_t seed = 1;
+  std::string camera = "overhead";  // Camera: which of world::cameras_of(scenario)
+  world::BeliefOptions belief;      // Camera
 };
+
+class CameraPerception;
 
 struct Observation {
   std::string name;
@@ -51,11 +67,20 @@ struct Percept {
 
 class Perception {
  public:
+  // Throws rtamp::Error on an unknown camera, noise asked of the camera source, or (camera)
+  // when offscreen rendering is unavailable.
   explicit Perception(const Simulation& sim, PerceptionOptions options = {});
+  ~Perception();
+  Perception(Perception&&) noexcept;
   Percept observe();
   // The same into `out`, reusing its storage.
   void observe(Percept& out);
+  // Camera: takes a frame when one is due at the simulation's time; call it after each
+  // step. Truth: nothing.
+  void advance();
   const PerceptionOptions& options() const { return options_; }
+  // The camera pipeline (nullptr for Truth).
+  const CameraPerception* camera() const { return camera_.get(); }
 
  private:
   const Simulation& sim_;
@@ -63,6 +88,8 @@ class Perception {
   std::mt19937_64 rng_;
   world::Geometry geometry_;
   std::vector<std::string> known_containers_;
+  std::unique_ptr<CameraPerception> camera_;
+  double frame_period_ = 0, next_frame_ = 0;
 };
 
 }  // namespace rtamp::sim

@@ -122,6 +122,7 @@ Session::~Session() = default;
 world::Placement Session::true_placement() { return truth_.observe().placement(); }
 
 void Session::after_step() {
+  perception_.advance();
   if (person_.next_time() <= sim_.time())
     while (auto iv = person_.due(sim_.time(), true_placement())) events_.push_back(operator_.apply(*iv));
   if (video_ && sim_.time() >= next_frame_) {

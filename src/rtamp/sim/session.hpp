@@ -81,6 +81,7 @@ class Session {
   Controller& controller() { return controller_; }
   SkillRunner& skills() { return runner_; }
   Perception& perception() { return perception_; }
+  const Perception& perception() const { return perception_; }
   Operator& op() { return operator_; }
   // Every present thing where it truly is (noise-free perception; held: "hand").
   world::Placement true_placement();

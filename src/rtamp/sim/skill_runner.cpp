@@ -60,7 +60,7 @@ std::optional<world::Vec3> SkillRunner::place_spot(int i, const std::string& loc
   return free_spot(sim_, location, {t.size, t.container}, exclude, options_.place_gap, keep_clear);
 }
 
-bool SkillRunner::start_pick(const std::string& object) {
+bool SkillRunner::start_pick(const std::string& object, const std::optional<robot::ThingPose>& seen) {
   const int i = sim_.find(object);
   if (i < 0 || !sim_.thing(i).present) {
     controller_.fail("'" + object + "' is not in the scene");
@@ -74,7 +74,7 @@ bool SkillRunner::start_pick(const std::string& object) {
   if (sim_.thing(i).container) carried_ = contents_of(sim_, i);
   const robot::Grasp g = grasp_for(i);
   SimCollisionChecker checker(sim_, carried_);
-  robot::SkillPlan p = robot::plan_pick(arm_, sim_.arm_q(), thing_pose(sim_, i), g, options_.skill,
+  robot::SkillPlan p = robot::plan_pick(arm_, sim_.arm_q(), seen ? *seen : thing_pose(sim_, i), g, options_.skill,
                                         options_.collision_checking ? &checker : nullptr);
   if (!p.ok) {
     controller_.fail("cannot pick '" + object + "': " + p.why);

@@ -13,6 +13,7 @@
 #pragma once
 
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -65,8 +66,10 @@ class SkillRunner {
   // The grasp used for a thing (blocks: around the middle; trays: a long rim).
   robot::Grasp grasp_for(int thing) const;
 
-  // Plan and start a pick of `object`. False (controller in FAILURE) if planning failed.
-  bool start_pick(const std::string& object);
+  // Plan and start a pick of `object` where it is, or where the robot `seen` it (its
+  // perceived base and yaw: a pose that is off makes the grasp miss, as on a real robot).
+  // False (controller in FAILURE) if planning failed.
+  bool start_pick(const std::string& object, const std::optional<robot::ThingPose>& seen = {});
   // Plan and start placing the held object into `location` (region or container). False
   // (controller in FAILURE) if the rule book refuses it there ("cannot place o3: r2 has no
   // room (capacity 2)", sim::space_refusal), there is no free spot or no plan.

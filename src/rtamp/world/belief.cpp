@@ -34,6 +34,8 @@ Belief::Belief(const Scenario& s, BeliefOptions options) : options_(options), ge
   if (options.confirm_sightings < 1 || options.confirm_sightings > 1000)
     throw Error("belief: confirm_sightings must be in 1..1000");
   if (!finite_positive(options.candidate_timeout)) throw Error("belief: candidate_timeout must be a positive number of seconds");
+  if (!std::isfinite(options.reidentify_within) || options.reidentify_within < 0)
+    throw Error("belief: reidentify_within must be a number of seconds >= 0");
   if (!finite_positive(options.rest_height)) throw Error("belief: rest_height must be a positive number of metres");
   auto note_class = [&](const std::string& cls, bool container, const Vec3& size) {
     for (const auto& c : classes_)
@@ -96,26 +98,29 @@ void Belief::follow_gripper(const Gripper& g) {
 void Belief::match(double time, const std::vector<Detection>& seen) {
   used_.assign(seen.size(), 0);
   matched_.assign(things_.size(), 0);
-  // Not at rest: in the air (the held thing, seen in the gripper), or below the table (a
-  // side face taken for a top). Never a thing at rest.
+  // Below the table: a side face taken for a top; no thing's pose.
   for (std::size_t j = 0; j < seen.size(); ++j)
-    if (seen[j].base[2] > options_.rest_height || seen[j].base[2] < -kBelowTolerance) used_[j] = 1;
+    if (seen[j].base[2] < -kBelowTolerance) used_[j] = 1;
   for (std::size_t i = 0; i < things_.size(); ++i)
     if (things_[i].state == ThingState::Held) {
       matched_[i] = 1;
       for (std::size_t j = 0; j < seen.size(); ++j)
-        if (seen[j].cls == things_[i].cls && distance(seen[j].base, things_[i].base) <= options_.match_radius) {
+        if (!used_[j] && seen[j].cls == things_[i].cls && distance(seen[j].base, things_[i].base) <= options_.match_radius) {
           used_[j] = 1;
           things_[i].last_seen = time;
         }
     }
   // Containers first: their contents move with them before the objects are matched.
+  // A detection in the air matches only a thing believed in the air (carried in a held
+  // container), one at rest only a thing at rest.
+  const auto in_air = [&](const Vec3& base) { return base[2] > options_.rest_height; };
   for (const bool containers : {true, false}) {
+    if (!containers) carry_contents(before_);
     pairs_.clear();
     for (std::size_t i = 0; i < things_.size(); ++i) {
       if (matched_[i] || things_[i].container != containers) continue;
       for (std::size_t j = 0; j < seen.size(); ++j) {
-        if (used_[j] || seen[j].cls != things_[i].cls) continue;
+        if (used_[j] || seen[j].cls != things_[i].cls || in_air(seen[j].base) != in_air(things_[i].base)) continue;
         const double d = distance(seen[j].base, things_[i].base);
         if (d <= options_.match_radius) pairs_.push_back({d, {i, j}});
       }
@@ -131,8 +136,10 @@ void Belief::match(double time, const std::vector<Detection>& seen) {
       t.missing_since = -1;
       if (seen[j].complete) t.base = seen[j].base, t.yaw = seen[j].yaw;
     }
-    if (containers) carry_contents(before_);
   }
+  // Whatever else is in the air is in the gripper: never a new thing.
+  for (std::size_t j = 0; j < seen.size(); ++j)
+    if (in_air(seen[j].base)) used_[j] = 1;
 }
 
 void Belief::carry_contents(const std::vector<Vec3>& before) {
@@ -172,8 +179,12 @@ void Belief::judge_unseen(double time, const Visibility& visibility) {
     return t.state == ThingState::Missing && time - t.missing_since >= options_.remove_after;
   };
   for (const auto& t : things_)
-    if (gone(t) && t.container) geometry_.remove_container(t.name);
+    if (gone(t)) {
+      if (t.container) geometry_.remove_container(t.name);
+      removed_.push_back({t, time});
+    }
   std::erase_if(things_, gone);
+  std::erase_if(removed_, [&](const Removed& r) { return time - r.time > options_.reidentify_within; });
 }
 
 void Belief::promote(double time, const std::vector<Detection>& seen) {
@@ -222,6 +233,17 @@ void Belief::promote(double time, const std::vector<Detection>& seen) {
         if (t.cls == c.seen.cls && t.state == ThingState::Missing &&
             (!moved || distance(t.base, c.seen.base) < distance(moved->base, c.seen.base)))
           moved = &t;
+      if (!moved) {  // removed a moment ago: it was moved where the camera could not see it
+        const Removed* last = nullptr;
+        for (const auto& r : removed_)
+          if (r.thing.cls == c.seen.cls && (!last || r.time >= last->time)) last = &r;
+        if (last) {
+          things_.push_back(last->thing);
+          removed_.erase(removed_.begin() + (last - removed_.data()));
+          moved = &things_.back();
+          if (container) geometry_.add_container({moved->name, moved->cls, c.seen.base, moved->size, 4, {}});
+        }
+      }
       if (!moved) {
         BelievedThing t;
         t.name = fresh_name(c.seen.cls);

@@ -12,10 +12,13 @@
 //  - A thing is believed removed only after it has been Missing for remove_after seconds.
 //  - A complete detection no thing explains is a candidate; after confirm_sightings sightings
 //    (each within candidate_timeout of the last) it is a Missing thing of its class that
-//    moved there (the nearest one), or else a new thing.
-//  - A container's contents move with it; the held thing keeps the offset to the tool it
-//    had when grasped; detections not at rest (base above rest_height: in the gripper; or
-//    below the table: a side face taken for a top) only confirm the held thing.
+//    moved there (the nearest one), or else the one of its class believed removed last
+//    within reidentify_within seconds (moved where the camera could not see), or else a
+//    new thing.
+//  - A container's contents move with it (carried in the gripper too); the held thing
+//    keeps the offset to the tool it had when grasped. A detection in the air (base above
+//    rest_height) matches only a thing believed in the air, and never starts a candidate;
+//    one below the table (a side face taken for a top) is no evidence at all.
 // The belief never reads the truth: it sees detections, a visibility model and what the
 // robot knows of its own gripper. Storage is kept between frames.
 #pragma once
@@ -75,6 +78,7 @@ struct BeliefOptions {
   int confirm_sightings = 2;      // sightings that make a candidate a thing
   double candidate_timeout = 0.5; // s between a candidate's sightings at most
   double rest_height = 0.05;      // m: a base higher than this is in the air
+  double reidentify_within = 5;   // s: a thing removed this recently may turn up again
 };
 
 class Belief {
@@ -110,6 +114,11 @@ class Belief {
   Geometry geometry_;
   std::vector<BelievedThing> things_;
   std::vector<Candidate> candidates_;
+  struct Removed {
+    BelievedThing thing;
+    double time = 0;
+  };
+  std::vector<Removed> removed_;  // within reidentify_within
   struct ClassInfo {
     std::string cls;
     bool container = false;
