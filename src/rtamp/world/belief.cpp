@@ -25,6 +25,9 @@ double distance(const Vec3& a, const Vec3& b) { return std::hypot(a[0] - b[0], a
 
 bool finite_positive(double x) { return std::isfinite(x) && x > 0; }
 
+// How far from a thing a partly seen view of it may lie: its footprint's half diagonal.
+double reach(const BelievedThing& t, double radius) { return std::max(radius, std::hypot(t.size[0], t.size[1]) / 2); }
+
 }  // namespace
 
 Belief::Belief(const Scenario& s, BeliefOptions options) : options_(options), geometry_(s) {
@@ -122,7 +125,8 @@ void Belief::match(double time, const std::vector<Detection>& seen) {
       for (std::size_t j = 0; j < seen.size(); ++j) {
         if (used_[j] || seen[j].cls != things_[i].cls || in_air(seen[j].base) != in_air(things_[i].base)) continue;
         const double d = distance(seen[j].base, things_[i].base);
-        if (d <= options_.match_radius) pairs_.push_back({d, {i, j}});
+        if (d <= (seen[j].complete ? options_.match_radius : reach(things_[i], options_.match_radius)))
+          pairs_.push_back({d, {i, j}});
       }
     }
     std::sort(pairs_.begin(), pairs_.end());
@@ -190,11 +194,13 @@ void Belief::judge_unseen(double time, const Visibility& visibility) {
 void Belief::promote(double time, const std::vector<Detection>& seen) {
   std::erase_if(candidates_, [&](const Candidate& c) { return time - c.last_seen > options_.candidate_timeout; });
   for (std::size_t j = 0; j < seen.size(); ++j) {
-    if (used_[j] || !seen[j].complete) continue;  // a partly seen thing is no evidence of a new one
+    if (used_[j]) continue;
     const Detection& d = seen[j];
     // A second view of a thing already explained (a blob the arm cut in two) is no candidate.
     bool known = false;
-    for (const auto& t : things_) known = known || (t.cls == d.cls && distance(t.base, d.base) <= options_.match_radius);
+    for (const auto& t : things_)
+      known = known || (t.cls == d.cls && distance(t.base, d.base) <= (d.complete ? options_.match_radius
+                                                                                  : reach(t, options_.match_radius)));
     if (known) continue;
     Candidate* nearest = nullptr;
     for (auto& c : candidates_)
@@ -207,7 +213,7 @@ void Belief::promote(double time, const std::vector<Detection>& seen) {
     } else if (nearest->last_seen == time) {
       continue;  // two detections of one candidate in a frame count once
     }
-    nearest->seen = d;
+    if (d.complete || !nearest->seen.complete) nearest->seen = d;  // the last complete pose, if any
     ++nearest->sightings;
     nearest->last_seen = time;
   }

@@ -8,9 +8,11 @@
 // Rules (docs/perception.md "The belief", with the measurements that chose the numbers):
 //  - A detection is matched to the nearest believed thing of its class within
 //    match_radius in the table's plane (greedily, nearest pairs first); a complete
-//    detection sets the pose, an incomplete one only says the thing is there.
+//    detection sets the pose, an incomplete one (within the thing's half diagonal) only
+//    says the thing is there.
 //  - A thing is believed removed only after it has been Missing for remove_after seconds.
-//  - A complete detection no thing explains is a candidate; after confirm_sightings sightings
+//  - A detection no thing explains is a candidate (at its last complete pose, if any); after
+//    confirm_sightings sightings
 //    (each within candidate_timeout of the last) it is a Missing thing of its class that
 //    moved there (the nearest one), or else the one of its class believed removed last
 //    within reidentify_within seconds (moved where the camera could not see), or else a
