@@ -25,8 +25,9 @@ double distance(const Vec3& a, const Vec3& b) { return std::hypot(a[0] - b[0], a
 
 bool finite_positive(double x) { return std::isfinite(x) && x > 0; }
 
-// How far from a thing a partly seen view of it may lie: its footprint's half diagonal.
-double reach(const BelievedThing& t, double radius) { return std::max(radius, std::hypot(t.size[0], t.size[1]) / 2); }
+// How far from a thing a partly seen view of it may lie: its footprint's diagonal (the box
+// fitted to a part is anchored at the part's far edge).
+double reach(const BelievedThing& t, double radius) { return std::max(radius, std::hypot(t.size[0], t.size[1])); }
 
 }  // namespace
 
@@ -57,6 +58,13 @@ Belief::Belief(const Scenario& s, BeliefOptions options) : options_(options), ge
     t.name = o.name, t.cls = o.cls, t.size = o.size, t.base = o.position;
     things_.push_back(std::move(t));
   }
+  // Classes only a person brings, and the default ones, at the default sizes.
+  for (const auto& i : s.interventions) {
+    if (i.kind == Change::Kind::AddContainer) note_class(i.cls.empty() ? "tray" : i.cls, true, Container{}.size);
+    if (i.kind == Change::Kind::Add) note_class(i.cls.empty() ? "block" : i.cls, false, Object{}.size);
+  }
+  note_class("tray", true, Container{}.size);
+  note_class("block", false, Object{}.size);
   locate_all();
 }
 
@@ -255,7 +263,7 @@ void Belief::promote(double time, const std::vector<Detection>& seen) {
         t.name = fresh_name(c.seen.cls);
         t.cls = c.seen.cls;
         t.container = container;
-        t.size = info ? info->size : Vec3{0.04, 0.04, 0.04};
+        t.size = info ? info->size : Object{}.size;
         t.base = c.seen.base;
         things_.push_back(std::move(t));
         moved = &things_.back();
