@@ -35,7 +35,7 @@ using namespace rtamp;
 using Clock = std::chrono::steady_clock;
 
 struct BatchArgs {
-  std::string scenario, world = "mujoco";
+  std::string scenario, world = "mujoco", perception = "truth";
   std::vector<std::string> merge;
   int trials = 30;
   std::vector<std::string> changes;
@@ -147,6 +147,9 @@ int run_batch(const BatchArgs& a) {
   opt.log_dir = a.log_dir;
   opt.mcap = a.mcap;
   opt.episode = batch::batch_episode_defaults(a.world);
+  opt.episode.world_settings.perception = a.perception;
+  if (a.perception != "truth" && a.world != "mujoco")
+    throw Error("--perception " + a.perception + ": only the mujoco world has a camera (--world " + a.world + ")");
   opt.episode.loop.max_time = a.max_time;
   opt.episode.loop.planner.cost = a.cost;
   opt.episode.randomize_initial = !a.no_randomize;
@@ -290,6 +293,8 @@ rtamp::cli::Registrar reg{
                    "Also write each episode as MCAP into --log-dir, beside its log (the same name, .mcap; zstd; "
                    "docs/formats.md)");
       rtamp::cli::add_choice(sub, "--world", a->world, rtamp::cli::world_choices(), "World:");
+      rtamp::cli::add_choice(sub, "--perception", a->perception, rtamp::cli::perception_choices(),
+                             "How the robot perceives:");
       sub.add_flag("--scripted", a->scripted, "Also apply the scenario's own operator script in every episode");
       sub.add_flag("--no-randomize", a->no_randomize, "Keep the scenario's initial object positions");
       sub.add_flag("--quiet,-q", a->quiet, "No progress on standard error");

@@ -12,6 +12,12 @@ std::vector<Choice> world_choices() {
   return out;
 }
 
+std::vector<Choice> perception_choices() {
+  return {{"truth", "the simulation's poses"},
+          {"camera", "RGB-D frames of the scenario's primary camera, segmented and fitted from pixels, kept in a "
+                     "belief (mujoco; docs/perception.md)"}};
+}
+
 void add_episode_options(CLI::App& app, EpisodeArgs& a, const std::string& log_help) {
   episode::EpisodeOptions& o = a.episode;
   exec::LoopOptions& loop = o.loop;
@@ -44,11 +50,7 @@ void add_episode_options(CLI::App& app, EpisodeArgs& a, const std::string& log_h
            "Random interventions per second of world time, of every kind (docs/person.md)");
   add_real(app, "--failures", o.world_settings.failure_probability, {0, 1},
            "Symbolic world: probability that a move fails");
-  add_choice(app, "--perception", o.world_settings.perception,
-             {{"truth", "the simulation's poses"},
-              {"camera", "RGB-D frames of the scenario's primary camera, segmented and fitted from pixels, kept in "
-                         "a belief (mujoco; docs/perception.md)"}},
-             "How the robot perceives:");
+  add_choice(app, "--perception", o.world_settings.perception, perception_choices(), "How the robot perceives:");
   add_integer(app, "--cycles", loop.cycles, 0, 1000000,
               "Recurring tasks (plans that cycle through moves): succeed after K completed cycles "
               "(0: run until --max-time)");

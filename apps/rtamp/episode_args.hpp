@@ -33,5 +33,7 @@ episode::EpisodeOptions episode_options(const EpisodeArgs& args);
 
 // The registered worlds as choices.
 std::vector<Choice> world_choices();
+// truth / camera, for --perception.
+std::vector<Choice> perception_choices();
 
 }  // namespace rtamp::cli
