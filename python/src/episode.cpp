@@ -12,6 +12,7 @@
 #include "choices.hpp"
 #include "rtamp/episode/episode.hpp"
 #include "rtamp/plan/registry.hpp"
+#include "rtamp/sim/perception.hpp"
 #include "rtamp/world/suggest.hpp"
 
 namespace rtamp::python {
@@ -84,7 +85,10 @@ void bind_episode(py::module_& m) {
           "Worlds that draw move failures (symbolic): the chance that a move fails")
       .def_property(
           "perception", [](const EpisodeOptions& o) { return o.world_settings.perception; },
-          [](EpisodeOptions& o, const std::string& p) { o.world_settings.perception = p; },
+          [](EpisodeOptions& o, const std::string& p) {
+            sim::parse_perception_source(p);  // one of the two, or the error naming it
+            o.world_settings.perception = p;
+          },
           "How the robot perceives in the mujoco world: 'truth' (the simulation's poses) or 'camera' (the\n"
           "scenario's primary camera, segmented and fitted from pixels, kept in a belief)")
       .def_property(
