@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include <opencv2/core.hpp>
+
 #include "rtamp/sim/blob_points.hpp"
 #include "rtamp/sim/box_fit.hpp"
 
@@ -27,6 +29,35 @@ CameraDetector::CameraDetector(const world::Scenario& s, world::DepthNoise noise
   }
 }
 
+// Things of one colour that touch show one top face of k footprints (k from its points
+// against one footprint's at this distance). Its points are then cut into k clusters
+// (OpenCV's k-means, a fixed seed), each fitted.
+bool CameraDetector::split_touching(const std::vector<Eigen::Vector3d>& points, const world::Vec3& size,
+                                    const Eigen::Vector3d& eye, double fx, const std::string& cls,
+                                    std::vector<world::Detection>& out) {
+  const double pixel = (points.front() - eye).norm() / fx;  // a pixel's footprint on the face
+  const double per_thing = size[0] * size[1] / (pixel * pixel);
+  const int k = static_cast<int>(std::lround(static_cast<double>(points.size()) / per_thing));
+  if (k < 2 || k > 8) return false;
+  cv::Mat xy(static_cast<int>(points.size()), 2, CV_32F);
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    xy.at<float>(static_cast<int>(i), 0) = static_cast<float>(points[i].x());
+    xy.at<float>(static_cast<int>(i), 1) = static_cast<float>(points[i].y());
+  }
+  cv::Mat labels;
+  cv::theRNG().state = 0x5eed;
+  cv::kmeans(xy, k, labels, cv::TermCriteria(cv::TermCriteria::EPS + cv::TermCriteria::COUNT, 20, 1e-5), 3,
+             cv::KMEANS_PP_CENTERS);
+  bands_.assign(static_cast<std::size_t>(k), {});
+  for (std::size_t i = 0; i < points.size(); ++i)
+    bands_[static_cast<std::size_t>(labels.at<int>(static_cast<int>(i)))].push_back(points[i]);
+  for (const auto& band : bands_) {
+    const BoxFit f = fit_box(band, size, false, eye);
+    out.push_back({cls, {f.base.x(), f.base.y(), f.base.z()}, f.yaw, f.complete});
+  }
+  return true;
+}
+
 void CameraDetector::detect(const CameraImage& image, std::vector<world::Detection>& out) {
   out.clear();
   segmenter_.segment(image.rgb.data(), image.width, image.height, segmentation_);
@@ -45,8 +76,10 @@ void CameraDetector::detect(const CameraImage& image, std::vector<world::Detecti
         parts[blob.colour].push_back(std::move(pts));
         continue;
       }
+      const std::string& cls = segmenter_.colours()[blob.colour].label;
       const BoxFit f = fit_box(pts, info.size, false, eye);
-      out.push_back({segmenter_.colours()[blob.colour].label, {f.base.x(), f.base.y(), f.base.z()}, f.yaw, f.complete});
+      if (!f.complete && split_touching(pts, info.size, eye, image.intrinsics.fx, cls, out)) continue;
+      out.push_back({cls, {f.base.x(), f.base.y(), f.base.z()}, f.yaw, f.complete});
     }
   }
   for (std::size_t c = 0; c < parts.size(); ++c) {

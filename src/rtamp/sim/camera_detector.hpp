@@ -1,7 +1,8 @@
 // Detections from one camera frame, the paper's way (Section V): the RGB image segmented
 // by the scene's known colours, each blob's top faces found with the depth image, and a
 // box of its class's known size fitted to each face (an object) or to a container's rims
-// (its parts, cut apart by the things on it, joined again). A detection names a class,
+// (its parts, cut apart by the things on it, joined again). Objects of one colour that
+// touch show one top face of k footprints: it is cut into k (k-means). A detection names a class,
 // never a thing: identity is the belief's (world/belief.hpp).
 //
 // Invariants: uses only the RGB and depth images and the camera's calibration (never the
@@ -40,7 +41,10 @@ class CameraDetector {
   world::DepthNoise noise_;
   CameraDetectorOptions options_;
   std::vector<ClassInfo> class_of_colour_;  // by the segmenter's colour index
+  bool split_touching(const std::vector<Eigen::Vector3d>& points, const world::Vec3& size, const Eigen::Vector3d& eye,
+                      double fx, const std::string& cls, std::vector<world::Detection>& out);
   ColourSegmentation segmentation_;
+  std::vector<std::vector<Eigen::Vector3d>> bands_;
 };
 
 }  // namespace rtamp::sim

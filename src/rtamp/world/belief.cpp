@@ -40,6 +40,9 @@ Belief::Belief(const Scenario& s, BeliefOptions options) : options_(options), ge
   if (!finite_positive(options.candidate_timeout)) throw Error("belief: candidate_timeout must be a positive number of seconds");
   if (!std::isfinite(options.reidentify_within) || options.reidentify_within < 0)
     throw Error("belief: reidentify_within must be a number of seconds >= 0");
+  if (!finite_positive(options.first_sight_radius)) throw Error("belief: first_sight_radius must be a positive number of metres");
+  if (!std::isfinite(options.hidden_wait) || options.hidden_wait < 0)
+    throw Error("belief: hidden_wait must be a number of seconds >= 0");
   if (!finite_positive(options.rest_height)) throw Error("belief: rest_height must be a positive number of metres");
   auto note_class = [&](const std::string& cls, bool container, const Vec3& size) {
     for (const auto& c : classes_)
@@ -133,8 +136,10 @@ void Belief::match(double time, const std::vector<Detection>& seen) {
       for (std::size_t j = 0; j < seen.size(); ++j) {
         if (used_[j] || seen[j].cls != things_[i].cls || in_air(seen[j].base) != in_air(things_[i].base)) continue;
         const double d = distance(seen[j].base, things_[i].base);
-        if (d <= (seen[j].complete ? options_.match_radius : reach(things_[i], options_.match_radius)))
-          pairs_.push_back({d, {i, j}});
+        const double gate = things_[i].last_seen < 0 ? options_.first_sight_radius
+                            : seen[j].complete       ? options_.match_radius
+                                                     : reach(things_[i], options_.match_radius);
+        if (d <= gate) pairs_.push_back({d, {i, j}});
       }
     }
     std::sort(pairs_.begin(), pairs_.end());
@@ -216,7 +221,7 @@ void Belief::promote(double time, const std::vector<Detection>& seen) {
           (!nearest || distance(c.seen.base, d.base) < distance(nearest->seen.base, d.base)))
         nearest = &c;
     if (!nearest) {
-      candidates_.push_back({d, 0, time});
+      candidates_.push_back({d, 0, time, time});
       nearest = &candidates_.back();
     } else if (nearest->last_seen == time) {
       continue;  // two detections of one candidate in a frame count once
@@ -241,7 +246,8 @@ void Belief::promote(double time, const std::vector<Detection>& seen) {
       bool known = false;  // explained meanwhile (carried with its container)
       for (const auto& t : things_) known = known || (t.cls == c.seen.cls && distance(t.base, c.seen.base) <= options_.match_radius);
       if (known) continue;
-      // A Missing thing of the class moved here (the nearest), or else a new thing.
+      // A Missing thing of the class moved here (the nearest); or one removed a moment ago;
+      // or, once no hidden thing of the class may be it, a new thing.
       BelievedThing* moved = nullptr;
       for (auto& t : things_)
         if (t.cls == c.seen.cls && t.state == ThingState::Missing &&
@@ -256,6 +262,16 @@ void Belief::promote(double time, const std::vector<Detection>& seen) {
           removed_.erase(removed_.begin() + (last - removed_.data()));
           moved = &things_.back();
           if (container) geometry_.add_container({moved->name, moved->cls, c.seen.base, moved->size, 4, {}});
+        }
+      }
+      // Not yet new while a thing of its class is hidden: that one may have moved here.
+      if (!moved && time - c.first_seen < options_.hidden_wait) {
+        bool hidden = false;
+        for (const auto& t : things_) hidden = hidden || (t.cls == c.seen.cls && t.state == ThingState::Occluded);
+        if (hidden) {
+          candidates_.insert(candidates_.begin() + static_cast<std::ptrdiff_t>(k), c);
+          ++k;
+          continue;
         }
       }
       if (!moved) {

@@ -15,8 +15,10 @@
 //    confirm_sightings sightings
 //    (each within candidate_timeout of the last) it is a Missing thing of its class that
 //    moved there (the nearest one), or else the one of its class believed removed last
-//    within reidentify_within seconds (moved where the camera could not see), or else a
-//    new thing.
+//    within reidentify_within seconds (moved where the camera could not see), or else —
+//    after waiting up to hidden_wait while a thing of its class is occluded (it may be
+//    that one, moved) — a new thing. A thing not seen yet matches within
+//    first_sight_radius of where the scenario declares it.
 //  - A container's contents move with it (carried in the gripper too); the held thing
 //    keeps the offset to the tool it had when grasped. A detection in the air (base above
 //    rest_height) matches only a thing believed in the air, and never starts a candidate;
@@ -81,6 +83,8 @@ struct BeliefOptions {
   double candidate_timeout = 0.5; // s between a candidate's sightings at most
   double rest_height = 0.05;      // m: a base higher than this is in the air
   double reidentify_within = 5;   // s: a thing removed this recently may turn up again
+  double hidden_wait = 2;         // s a confirmed candidate waits while a thing of its class is occluded
+  double first_sight_radius = 0.3;  // m: a thing never seen yet matches this far from where it was declared
 };
 
 class Belief {
@@ -103,6 +107,7 @@ class Belief {
     Detection seen;
     int sightings = 0;
     double last_seen = 0;
+    double first_seen = 0;
   };
   void follow_gripper(const Gripper& g);
   void match(double time, const std::vector<Detection>& seen);
