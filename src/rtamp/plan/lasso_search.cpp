@@ -22,7 +22,7 @@ void LassoSearch::initialize(ProductGraph& g, Experience& x, const std::vector<N
   status_ = SearchStatus::InProgress;
   best_ = kInf;
   best_m_ = kManyMoves;
-  early_ = false;
+  early_ = Early::Waiting;
   best_node_ = kNoNode;
   best_solved_ = false;
   SearchSpace& S = prefix_;
@@ -112,7 +112,7 @@ SearchStatus LassoSearch::early_candidate(const SearchItem& it, SearchStats& sta
   if (best_ >= kInf) {  // none below the bound (the table keeps it): wait again, keyed by it
     cand_.push_back({it.g + bound, it.g, it.n, it.m});
     std::push_heap(cand_.begin(), cand_.end(), after);
-    early_ = false;  // perhaps there is no lasso: no more searches before one,
+    early_ = Early::Off;  // perhaps there is no lasso: no more searches before one,
     cycles_.classify_pending(stats);  // and what is on no accepting cycle is found at once
   }
   return status_;
@@ -129,7 +129,7 @@ SearchStatus LassoSearch::step(SearchStats& stats) {
     std::pop_heap(cand_.begin(), cand_.end(), after);
     cand_.pop_back();
   }
-  if (!cand_.empty() && (S.heap.empty() || ((best_ < kInf || early_) && after(S.heap.front(), cand_.front())))) {
+  if (!cand_.empty() && (S.heap.empty() || ((best_ < kInf || early_ == Early::On) && after(S.heap.front(), cand_.front())))) {
     std::pop_heap(cand_.begin(), cand_.end(), after);
     const SearchItem it = cand_.back();
     cand_.pop_back();
@@ -154,7 +154,11 @@ SearchStatus LassoSearch::step(SearchStats& stats) {
   ProductGraph& g = *g_;
   if (g.accepting(n)) {
     if (!try_cycle(n, stats)) return stop(SearchStatus::Stopped);
-    early_ = true;
+    if (early_ == Early::Waiting) {
+      // Early searches need a lower bound on the cycle itself to set theirs.
+      early_ = best_ >= kInf && config_.cycle_heuristic && h_->cycle_bound(g, n) > 0 ? Early::On : Early::Off;
+      if (early_ == Early::Off) cycles_.classify_pending(stats);
+    }
   } else if (g.on_accepting_cycle(g.ba_state(n))) {
     // A join candidate: its cycle costs at least what the table knows and at
     // least the way to acceptance (h).

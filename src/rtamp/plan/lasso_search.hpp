@@ -90,11 +90,14 @@ class LassoSearch {
   CycleSearch cycles_;
   SearchSpace prefix_;
   // Join candidates may be searched before the first lasso (early_candidate)
-  // once an accepting node has had its cycle search (had it found no cycle
-  // at all it may have classified every node it reached, so in a query
-  // without a lasso the candidates' table entries already say so), until an
-  // early search finds nothing below its bound (perhaps there is no lasso).
-  bool early_ = false;
+  // once the first accepting node has had its cycle search, if that found
+  // none and the heuristic bounds the cycle at that node from below (the
+  // chain bound), until an early search finds nothing below its bound
+  // (perhaps there is no lasso). Where they end or never start, a
+  // classification the cycle search put off runs, so a query without a
+  // lasso still learns at once which nodes lie on no accepting cycle.
+  enum class Early { Waiting, On, Off };
+  Early early_ = Early::Waiting;
   std::vector<SearchItem> cand_;  // join candidates, a heap keyed by g + a cycle lower bound
   std::vector<NodeId> closed_list_;
   std::vector<std::pair<NodeId, double>> closed_costs_;  // the write-back into the experience
