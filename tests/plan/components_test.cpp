@@ -104,8 +104,9 @@ struct RandomStart {
 // best lasso from (s, q) on random patrols (conjunctions of G F, with and
 // without F G and F parts), every model, random states and hands.
 TEST(GuardHeuristic, JoinBoundAdmissibleOnPatrols) {
-  const std::vector<std::string> formulas = {"G F a & G F b", "G F a & G F b & G F c", "G F a & G F b & F G c",
-                                             "F a & G F b & G F c", "G F (a & b) & G F c"};
+  const std::vector<std::string> formulas = {"G F a & G F b", "G F a & G F b & G F c",
+                                             "G F a & G F b & F G c", "F a & G F b & G F c",
+                                             "G F (a & b) & G F c"};
   std::mt19937 rng(24);
   int checked = 0, tight = 0;
   for (int trial = 0; trial < 150; ++trial) {

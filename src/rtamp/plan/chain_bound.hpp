@@ -85,7 +85,8 @@ class ChainBound {
   // (docs/planning.md "The join's stretch"; plan/chain_join.cpp). Returns
   // max(floor, that), stopping once it is known to be at most floor; `first`
   // as for bound().
-  double join_bound(const task::State& s, std::uint32_t q, const std::vector<double>& first, double floor) const;
+  double join_bound(const task::State& s, std::uint32_t q, const std::vector<double>& first,
+                    double floor) const;
 
  private:
   struct Arc {

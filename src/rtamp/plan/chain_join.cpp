@@ -140,13 +140,15 @@ void ChainBound::build_join() {
           const auto c = static_cast<std::uint32_t>(st.forcing);
           first[c] = std::min(first[c], val[node(st.dst, c)]);
         }
-      for (std::size_t k = 0; k < pair.size(); ++k) pair[k] = std::min(pair[k], cyc[std::size_t{u} * F * F + k]);
+      for (std::size_t k = 0; k < pair.size(); ++k)
+        pair[k] = std::min(pair[k], cyc[std::size_t{u} * F * F + k]);
     }
     for (std::uint32_t c = 0; c < F; ++c)
       if (first[c] < kInf) join_first_[q].push_back({c, first[c]});
     for (std::uint32_t g1 = 0; g1 < F; ++g1)
       for (std::uint32_t gk = 0; gk < F; ++gk)
-        if (pair[std::size_t{g1} * F + gk] < kInf) join_pairs_[q].push_back({g1, gk, pair[std::size_t{g1} * F + gk]});
+        if (pair[std::size_t{g1} * F + gk] < kInf)
+          join_pairs_[q].push_back({g1, gk, pair[std::size_t{g1} * F + gk]});
     std::sort(join_pairs_[q].begin(), join_pairs_[q].end(),
               [](const JoinPair& x, const JoinPair& y) { return x.cycle < y.cycle; });
   }

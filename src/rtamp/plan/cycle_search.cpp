@@ -180,8 +180,10 @@ PathCost CycleSearch::cheapest(NodeId n, PathCost bound, SearchStats& stats) {
   // home): the search then cost a few stays, and a classification would
   // visit the whole graph for this one node; it waits (classify_pending).
   if (bound.c >= kInf) {
-    if (moved_) (void)on_accepting_cycle(n, stats);
-    else if (pending_ == kNoNode) pending_ = n;
+    if (moved_)
+      (void)on_accepting_cycle(n, stats);
+    else if (pending_ == kNoNode)
+      pending_ = n;
   }
   return kNoPathCost;
 }

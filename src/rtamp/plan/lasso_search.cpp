@@ -112,8 +112,10 @@ SearchStatus LassoSearch::early_candidate(const SearchItem& it, SearchStats& sta
   if (best_ >= kInf) {  // none below the bound (the table keeps it): wait again, keyed by it
     cand_.push_back({it.g + bound, it.g, it.n, it.m});
     std::push_heap(cand_.begin(), cand_.end(), after);
-    early_ = Early::Off;  // perhaps there is no lasso: no more searches before one,
-    cycles_.classify_pending(stats);  // and what is on no accepting cycle is found at once
+    // Perhaps there is no lasso: no more searches before one, and what lies on
+    // no accepting cycle is found at once.
+    early_ = Early::Off;
+    cycles_.classify_pending(stats);
   }
   return status_;
 }
@@ -129,7 +131,8 @@ SearchStatus LassoSearch::step(SearchStats& stats) {
     std::pop_heap(cand_.begin(), cand_.end(), after);
     cand_.pop_back();
   }
-  if (!cand_.empty() && (S.heap.empty() || ((best_ < kInf || early_ == Early::On) && after(S.heap.front(), cand_.front())))) {
+  if (!cand_.empty() &&
+      (S.heap.empty() || ((best_ < kInf || early_ == Early::On) && after(S.heap.front(), cand_.front())))) {
     std::pop_heap(cand_.begin(), cand_.end(), after);
     const SearchItem it = cand_.back();
     cand_.pop_back();

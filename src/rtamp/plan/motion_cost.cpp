@@ -181,10 +181,12 @@ struct Flexible {
 double least_crossings(const Counts& base, const std::vector<Flexible>& groups) {
   long combos = 1;
   std::size_t exact = 0;
-  while (exact < groups.size() && combos * (groups[exact].count + 1) <= 4096) combos *= groups[exact++].count + 1;
+  while (exact < groups.size() && combos * (groups[exact].count + 1) <= 4096)
+    combos *= groups[exact++].count + 1;
   Counts floor = base;
   for (std::size_t g = exact; g < groups.size(); ++g)
-    for (int k = 0; k < 4; ++k) floor[k] += groups[g].count * std::min(groups[g].side[0][k], groups[g].side[1][k]);
+    for (int k = 0; k < 4; ++k)
+      floor[k] += groups[g].count * std::min(groups[g].side[0][k], groups[g].side[1][k]);
   int best = std::numeric_limits<int>::max();
   auto rec = [&](auto&& self, std::size_t g, const Counts& acc) -> void {
     if (g == exact) {
@@ -263,10 +265,14 @@ double EuclidCost::join_set_bound(const JoinPoints* p, std::size_t n) const {
           for (int k = 0; k < 4; ++k) base[k] += v.side[left_le ? 0 : 1][k];
           continue;
         }
-        auto same = [&](const Flexible& g) { return std::equal(&g.side[0][0], &g.side[0][0] + 8, &v.side[0][0]); };
+        auto same = [&](const Flexible& g) {
+          return std::equal(&g.side[0][0], &g.side[0][0] + 8, &v.side[0][0]);
+        };
         auto it = std::find_if(flexible.begin(), flexible.end(), same);
-        if (it == flexible.end()) flexible.push_back(v);
-        else ++it->count;
+        if (it == flexible.end())
+          flexible.push_back(v);
+        else
+          ++it->count;
       }
       total += (xs[j] - xs[j - 1]) * least_crossings(base, flexible);
     }
