@@ -218,6 +218,16 @@ ChainBound::ChainBound(const task::System& ts, const task::Labeling& lab, const 
       if (best_tail[c].path < kInf) entries_[q].push_back({c, best_tail[c]});
   }
   enabled_ = true;
+  build_join();
+}
+
+std::uint32_t ChainBound::least_open(const std::vector<double>& dist, const std::vector<std::uint8_t>& done,
+                                     double below) {
+  const auto n = static_cast<std::uint32_t>(dist.size());
+  std::uint32_t u = n;
+  for (std::uint32_t v = 0; v < n; ++v)
+    if (!done[v] && dist[v] < below && (u == n || dist[v] < dist[u])) u = v;
+  return u;
 }
 
 void ChainBound::dijkstra(std::uint32_t src, bool skip_src) {
@@ -233,9 +243,7 @@ void ChainBound::dijkstra(std::uint32_t src, bool skip_src) {
   if (skip_src) relax(src, 0);
   else dist_[src] = 0;
   for (;;) {
-    std::uint32_t u = n;
-    for (std::uint32_t v = 0; v < n; ++v)
-      if (!done_[v] && dist_[v] < kInf && (u == n || dist_[v] < dist_[u])) u = v;
+    const std::uint32_t u = least_open(dist_, done_);
     if (u == n) return;
     done_[u] = 1;
     if (skip_src && u == src) continue;  // back at the source: the cycle is closed
@@ -293,9 +301,7 @@ double ChainBound::path_bound(const task::State& s, std::uint32_t q, const task:
   };
   relax(q, F, accepted || accepting_[q] ? 1 : 0, 0);
   for (;;) {
-    std::uint32_t u = n;
-    for (std::uint32_t v = 0; v < n; ++v)
-      if (!done[v] && dist[v] < best && (u == n || dist[v] < dist[u])) u = v;
+    const std::uint32_t u = least_open(dist, done, best);
     if (u == n) break;
     done[u] = 1;
     relax(u / 2 / (F + 1), (u / 2) % (F + 1), u % 2, dist[u]);

@@ -78,6 +78,15 @@ class ChainBound {
   // search's heuristic back to its join node.
   double path_bound(const task::State& s, std::uint32_t q, const task::State& target, std::uint32_t target_q,
                     bool accepted) const;
+  // No lasso from (s, q) costs less than the D-sum along prefix and cycle
+  // together: the chain up to the prefix's last forcing guard, the stretch
+  // through the join to the cycle's first one and the cycle's last stretch
+  // back to the join (the model's join_set_bound), the cycle's chain between
+  // (docs/planning.md "The join's stretch"; plan/chain_join.cpp). Returns
+  // max(floor, that), stopping once it is known to be at most floor; `first`
+  // as for bound().
+  double join_bound(const task::State& s, std::uint32_t q, const std::vector<double>& first,
+                    double floor) const;
 
  private:
   struct Arc {
@@ -90,6 +99,13 @@ class ChainBound {
   std::uint32_t node(std::uint32_t q, std::uint32_t l) const { return q * (n_forcing_ + 1) + l; }
   // Dijkstra on G from `src` into dist_; with skip_src, paths of at least one arc.
   void dijkstra(std::uint32_t src, bool skip_src);
+  // The open node (not done) of least distance below `below`, or dist.size().
+  static std::uint32_t least_open(const std::vector<double>& dist, const std::vector<std::uint8_t>& done,
+                                  double below = kInf);
+  // The state-independent part of join_bound (plan/chain_join.cpp).
+  void build_join();
+  // join_set_bound for things at `a` (-1: unknown), then forced by guards g1 and gk.
+  double join_between(const std::vector<int>& a, std::uint32_t g1, std::uint32_t gk) const;
 
   struct Step {
     std::uint32_t src, dst;
@@ -112,6 +128,17 @@ class ChainBound {
     double path, kappa;
   };
   std::vector<std::vector<std::pair<std::uint32_t, Tail>>> entries_;  // per state: (forcing c, tail(c))
+  // join_bound's tables, per automaton state q: the prefix's first forcing
+  // guard c with the least rest of the bound after it; the (first, last)
+  // forcing guards of accepting cycles through a state reached from q
+  // without one, by their least chain between; whether such a cycle reads none.
+  std::vector<std::vector<std::pair<std::uint32_t, double>>> join_first_;
+  struct JoinPair {
+    std::uint32_t g1, gk;
+    double cycle;
+  };
+  std::vector<std::vector<JoinPair>> join_pairs_;  // ascending cycle
+  std::vector<std::uint8_t> join_free_;
   std::vector<double> dist_;                // Dijkstra work space
   std::vector<std::uint8_t> done_;
 };

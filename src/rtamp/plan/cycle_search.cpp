@@ -9,6 +9,7 @@ void CycleSearch::begin(ProductGraph& g, Experience& x, Heuristic* h, Budget& bu
   x_ = &x;
   h_ = h;
   budget_ = &budget;
+  pending_ = kNoNode;
   if (++scc_gen_ == 0) {  // wrapped: clear the stamps once
     std::fill(scc_stamp_.begin(), scc_stamp_.end(), 0);
     scc_gen_ = 1;
@@ -111,7 +112,15 @@ void CycleSearch::relax(NodeId from, std::uint32_t e) {
   }
   S.reach(m, ng, nm, from, e);
   const double f = ng + S.h[m];
-  if (f < kInf && lex_less(f, nm, best_.c, best_.m)) S.push({f, ng, m, nm});
+  if (f < kInf && lex_less(f, nm, best_.c, best_.m)) {
+    S.push({f, ng, m, nm});
+    moved_ = moved_ || nm > 0;
+  }
+}
+
+void CycleSearch::classify_pending(SearchStats& stats) {
+  if (pending_ != kNoNode) (void)on_accepting_cycle(pending_, stats);
+  pending_ = kNoNode;
 }
 
 PathCost CycleSearch::cheapest(NodeId n, PathCost bound, SearchStats& stats) {
@@ -121,6 +130,7 @@ PathCost CycleSearch::cheapest(NodeId n, PathCost bound, SearchStats& stats) {
     return lex_less(known.lower, known.moves, bound.c, bound.m) ? PathCost{known.lower, known.moves} : kNoPathCost;
   if (!lex_less(known.lower, known.moves, bound.c, bound.m)) return kNoPathCost;
   ++stats.cycle_searches;
+  moved_ = false;
   target_ = n;
   target_state_ = g.state(n);
   target_q_ = g.ba_state(n);
@@ -165,8 +175,16 @@ PathCost CycleSearch::cheapest(NodeId n, PathCost bound, SearchStats& stats) {
   }
   x_->set_cycle(n, {bound.c, bound.m, false});  // bound is above `known` (checked on entry)
   // No cycle at all through n (no incumbent bounded the search): classify
-  // everything reachable from n at once.
-  if (bound.c >= kInf) (void)on_accepting_cycle(n, stats);
+  // everything reachable from n at once — unless the heuristic ruled out
+  // every way back that moves something (e.g. to a node with the hand at
+  // home): the search then cost a few stays, and a classification would
+  // visit the whole graph for this one node; it waits (classify_pending).
+  if (bound.c >= kInf) {
+    if (moved_)
+      (void)on_accepting_cycle(n, stats);
+    else if (pending_ == kNoNode)
+      pending_ = n;
+  }
   return kNoPathCost;
 }
 

@@ -29,6 +29,9 @@ class CycleSearch {
   // The cheapest such cycle through n below `bound`, or kNoPathCost (none below
   // it, or the budget ran out). When found, its path is in the experience.
   PathCost cheapest(NodeId n, PathCost bound, SearchStats& stats);
+  // Classifies what is reachable from the first node whose unbounded search
+  // found nothing without moving anything (its classification was put off).
+  void classify_pending(SearchStats& stats);
   std::size_t bytes() const { return space_.bytes(); }
 
  private:
@@ -52,6 +55,8 @@ class CycleSearch {
   std::uint32_t target_q_ = 0;
   PathCost best_ = kNoPathCost;
   bool found_ = false;
+  bool moved_ = false;  // the search opened a path that moves something
+  NodeId pending_ = kNoNode;
   // on_accepting_cycle: per-node DFS index and lowlink (valid where
   // scc_stamp_ == scc_gen_), SCC state (0 open, 1 on the stack, 2 no accepting
   // cycle, 3 on one), the DFS frames (node, next edge) and the SCC stack.

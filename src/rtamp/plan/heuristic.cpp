@@ -65,6 +65,7 @@ double GuardHeuristic::evaluate(const task::State& s, std::uint32_t q) {
     for (std::size_t i = 0; i < cubes.size(); ++i)
       chain_first_[i] = std::max(cube_bound(s, cubes[i]), chain_->from_state(s, static_cast<std::uint32_t>(i)));
     h = std::max(h, chain_->bound(q, chain_first_));
+    h = chain_->join_bound(s, q, chain_first_, h);
   }
   return h;
 }

@@ -22,6 +22,7 @@ void LassoSearch::initialize(ProductGraph& g, Experience& x, const std::vector<N
   status_ = SearchStatus::InProgress;
   best_ = kInf;
   best_m_ = kManyMoves;
+  early_ = Early::Waiting;
   best_node_ = kNoNode;
   best_solved_ = false;
   SearchSpace& S = prefix_;
@@ -59,7 +60,11 @@ void LassoSearch::offer_solved(NodeId m, double gm, std::uint32_t mm) {
 // accepting node, below what would beat the incumbent. False if the budget ran out.
 bool LassoSearch::try_cycle(NodeId n, SearchStats& stats) {
   const SearchSpace& S = prefix_;
-  const PathCost bound{best_ - S.g[n], best_m_ > S.m[n] ? best_m_ - S.m[n] : 0};
+  return try_cycle(n, {best_ - S.g[n], best_m_ > S.m[n] ? best_m_ - S.m[n] : 0}, stats);
+}
+
+bool LassoSearch::try_cycle(NodeId n, PathCost bound, SearchStats& stats) {
+  const SearchSpace& S = prefix_;
   const PathCost c = cycles_.cheapest(n, bound, stats);
   if (c.c < kInf && lex_less(S.g[n] + c.c, S.m[n] + c.m, best_, best_m_)) {
     best_ = S.g[n] + c.c;
@@ -99,6 +104,22 @@ void LassoSearch::expand(NodeId n, SearchStats& stats) {
 
 SearchStatus LassoSearch::stop(SearchStatus s) { return status_ = s; }
 
+SearchStatus LassoSearch::early_candidate(const SearchItem& it, SearchStats& stats) {
+  const double lower = it.f - it.g;  // the key's bound on the candidate's cycle
+  if (!(lower > 0)) return try_cycle(it.n, stats) ? status_ : stop(SearchStatus::Stopped);  // unbounded
+  const double bound = 2 * lower;
+  if (!try_cycle(it.n, {bound, kManyMoves}, stats)) return stop(SearchStatus::Stopped);
+  if (best_ >= kInf) {  // none below the bound (the table keeps it): wait again, keyed by it
+    cand_.push_back({it.g + bound, it.g, it.n, it.m});
+    std::push_heap(cand_.begin(), cand_.end(), after);
+    // Perhaps there is no lasso: no more searches before one, and what lies on
+    // no accepting cycle is found at once.
+    early_ = Early::Off;
+    cycles_.classify_pending(stats);
+  }
+  return status_;
+}
+
 SearchStatus LassoSearch::step(SearchStats& stats) {
   if (status_ != SearchStatus::InProgress) return status_;
   SearchSpace& S = prefix_;
@@ -110,10 +131,12 @@ SearchStatus LassoSearch::step(SearchStats& stats) {
     std::pop_heap(cand_.begin(), cand_.end(), after);
     cand_.pop_back();
   }
-  if (!cand_.empty() && (S.heap.empty() || (best_ < kInf && after(S.heap.front(), cand_.front())))) {
+  if (!cand_.empty() &&
+      (S.heap.empty() || ((best_ < kInf || early_ == Early::On) && after(S.heap.front(), cand_.front())))) {
     std::pop_heap(cand_.begin(), cand_.end(), after);
     const SearchItem it = cand_.back();
     cand_.pop_back();
+    if (best_ >= kInf && !S.heap.empty()) return early_candidate(it, stats);
     if (it.f > best_ + kCostEps) return stop(SearchStatus::Finished);
     if (!lex_less(it.f, it.m, best_, best_m_)) return status_;
     return try_cycle(it.n, stats) ? status_ : stop(SearchStatus::Stopped);
@@ -134,6 +157,11 @@ SearchStatus LassoSearch::step(SearchStats& stats) {
   ProductGraph& g = *g_;
   if (g.accepting(n)) {
     if (!try_cycle(n, stats)) return stop(SearchStatus::Stopped);
+    if (early_ == Early::Waiting) {
+      // Early searches need a lower bound on the cycle itself to set theirs.
+      early_ = best_ >= kInf && config_.cycle_heuristic && h_->cycle_bound(g, n) > 0 ? Early::On : Early::Off;
+      if (early_ == Early::Off) cycles_.classify_pending(stats);
+    }
   } else if (g.on_accepting_cycle(g.ba_state(n))) {
     // A join candidate: its cycle costs at least what the table knows and at
     // least the way to acceptance (h).

@@ -71,7 +71,13 @@ class LassoSearch {
 
  private:
   void offer_solved(NodeId m, double gm, std::uint32_t mm);
+  // n's cheapest cycle below the incumbent (or `bound`); false when the budget ran out.
   bool try_cycle(NodeId n, SearchStats& stats);
+  bool try_cycle(NodeId n, PathCost bound, SearchStats& stats);
+  // Before the first lasso (see early_), a join candidate whose key is the least open one:
+  // a cycle search bounded by twice its cycle's lower bound, and if none is
+  // found below, the candidate waits again keyed by that bound.
+  SearchStatus early_candidate(const SearchItem& it, SearchStats& stats);
   void expand(NodeId n, SearchStats& stats);
   SearchStatus stop(SearchStatus s);
   void drop_loops(NodeId from, std::vector<std::uint32_t>& edges);
@@ -83,6 +89,15 @@ class LassoSearch {
   Budget budget_;
   CycleSearch cycles_;
   SearchSpace prefix_;
+  // Join candidates may be searched before the first lasso (early_candidate)
+  // once the first accepting node has had its cycle search, if that found
+  // none and the heuristic bounds the cycle at that node from below (the
+  // chain bound), until an early search finds nothing below its bound
+  // (perhaps there is no lasso). Where they end or never start, a
+  // classification the cycle search put off runs, so a query without a
+  // lasso still learns at once which nodes lie on no accepting cycle.
+  enum class Early { Waiting, On, Off };
+  Early early_ = Early::Waiting;
   std::vector<SearchItem> cand_;  // join candidates, a heap keyed by g + a cycle lower bound
   std::vector<NodeId> closed_list_;
   std::vector<std::pair<NodeId, double>> closed_costs_;  // the write-back into the experience

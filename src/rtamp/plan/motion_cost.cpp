@@ -1,6 +1,7 @@
 #include "rtamp/plan/motion_cost.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 
@@ -139,6 +140,141 @@ double EuclidCost::carry_set_bound(const world::Vec3* from, const world::Vec3* t
         total += (ev[j].x - ev[j - 1].x) * std::max(f + bk, 2 * std::max(f, bk) - 1);
       f += ev[j].df;
       bk += ev[j].db;
+    }
+    best = std::max(best, total);
+  }
+  return best;
+}
+
+double MotionCostModel::join_set_bound(const JoinPoints* p, std::size_t n) const {
+  double sum = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    if (!p[i].has_b) continue;
+    double d = 0;
+    if (p[i].has_a && p[i].a != p[i].b) d = carry_bound(p[i].a, p[i].b);
+    if (p[i].has_c && p[i].c != p[i].b) d = std::max(d, carry_bound(p[i].c, p[i].b));
+    sum += d;
+  }
+  return sum;
+}
+
+namespace {
+
+// Crossings of a point x that the hand makes at least in one stretch where
+// f things must pass x forward and b backward (docs/planning.md).
+int crossings(int f, int b) { return f + b == 0 ? 0 : std::max(f + b, 2 * std::max(f, b) - 1); }
+
+double project(const world::Vec3& p, const world::Vec3& u) { return p[0] * u[0] + p[1] * u[1] + p[2] * u[2]; }
+
+using Counts = std::array<int, 4>;  // forward and backward passes of x: stretch 1, stretch 2
+
+// Things alike that may put J on either side: their counts on each side.
+struct Flexible {
+  int side[2][4];
+  int count;
+};
+
+// The least crossings of x of both stretches over the sides the flexible
+// things' J may take: every split of each group is tried while there are
+// few (a group's members are interchangeable), then each count's smaller
+// side (a relaxation: crossings grow with every count).
+double least_crossings(const Counts& base, const std::vector<Flexible>& groups) {
+  long combos = 1;
+  std::size_t exact = 0;
+  while (exact < groups.size() && combos * (groups[exact].count + 1) <= 4096)
+    combos *= groups[exact++].count + 1;
+  Counts floor = base;
+  for (std::size_t g = exact; g < groups.size(); ++g)
+    for (int k = 0; k < 4; ++k)
+      floor[k] += groups[g].count * std::min(groups[g].side[0][k], groups[g].side[1][k]);
+  int best = std::numeric_limits<int>::max();
+  auto rec = [&](auto&& self, std::size_t g, const Counts& acc) -> void {
+    if (g == exact) {
+      best = std::min(best, crossings(acc[0], acc[1]) + crossings(acc[2], acc[3]));
+      return;
+    }
+    for (int left = 0; left <= groups[g].count; ++left) {
+      Counts next = acc;
+      for (int k = 0; k < 4; ++k)
+        next[k] += left * groups[g].side[0][k] + (groups[g].count - left) * groups[g].side[1][k];
+      self(self, g + 1, next);
+    }
+  };
+  rec(rec, 0, floor);
+  return best;
+}
+
+}  // namespace
+
+double EuclidCost::join_set_bound(const JoinPoints* p, std::size_t n) const {
+  double best = MotionCostModel::join_set_bound(p, n);
+  std::vector<world::Vec3> axes;
+  auto add_axis = [&](const world::Vec3& from, const world::Vec3& to) {
+    const double d = distance(from, to);
+    if (d <= 0 || axes.size() >= 8) return;
+    const world::Vec3 u{(to[0] - from[0]) / d, (to[1] - from[1]) / d, (to[2] - from[2]) / d};
+    for (const auto& a : axes)
+      if (std::abs(std::abs(project(a, u)) - 1) < 1e-12) return;
+    axes.push_back(u);
+  };
+  for (std::size_t i = 0; i < n; ++i) {
+    if (p[i].has_a && p[i].has_b) add_axis(p[i].a, p[i].b);
+    if (p[i].has_c && p[i].has_b) add_axis(p[i].c, p[i].b);
+    if (p[i].has_a && p[i].has_c) add_axis(p[i].a, p[i].c);
+  }
+  std::vector<double> xs;
+  struct Proj {
+    double a, b, c;
+  };
+  std::vector<Proj> pr(n);
+  std::vector<Flexible> flexible;
+  for (const auto& u : axes) {
+    xs.clear();
+    for (std::size_t i = 0; i < n; ++i) {
+      pr[i] = {project(p[i].a, u), project(p[i].b, u), project(p[i].c, u)};
+      if (p[i].has_a) xs.push_back(pr[i].a);
+      if (p[i].has_b) xs.push_back(pr[i].b);
+      if (p[i].has_c) xs.push_back(pr[i].c);
+    }
+    std::sort(xs.begin(), xs.end());
+    double total = 0;
+    for (std::size_t j = 1; j < xs.size(); ++j) {
+      if (xs[j] <= xs[j - 1]) continue;
+      const double x = 0.5 * (xs[j] + xs[j - 1]);
+      Counts base{};
+      flexible.clear();
+      for (std::size_t i = 0; i < n; ++i) {
+        // Counts (f1, b1, f2, b2) for J_i left (side 0) or right (side 1) of
+        // x; an unknown point takes J_i's side (it costs nothing there).
+        Flexible v{};
+        v.count = 1;
+        for (int side = 0; side < 2; ++side) {
+          const int a = p[i].has_a ? (pr[i].a > x) : side;
+          const int b = p[i].has_b ? (pr[i].b > x) : side;
+          const int c = p[i].has_c ? (pr[i].c > x) : side;
+          if (a != side) ++v.side[side][side > a ? 0 : 1];
+          if (b != side) ++v.side[side][b > side ? 0 : 1];
+          if (c != side) ++v.side[side][side > c ? 2 : 3];
+        }
+        bool left_le = true, right_le = true;
+        for (int k = 0; k < 4; ++k) {
+          left_le = left_le && v.side[0][k] <= v.side[1][k];
+          right_le = right_le && v.side[1][k] <= v.side[0][k];
+        }
+        if (left_le || right_le) {  // a side no worse in every count
+          for (int k = 0; k < 4; ++k) base[k] += v.side[left_le ? 0 : 1][k];
+          continue;
+        }
+        auto same = [&](const Flexible& g) {
+          return std::equal(&g.side[0][0], &g.side[0][0] + 8, &v.side[0][0]);
+        };
+        auto it = std::find_if(flexible.begin(), flexible.end(), same);
+        if (it == flexible.end())
+          flexible.push_back(v);
+        else
+          ++it->count;
+      }
+      total += (xs[j] - xs[j - 1]) * least_crossings(base, flexible);
     }
     best = std::max(best, total);
   }

@@ -83,6 +83,13 @@ struct TransportQuery {
   std::vector<double>* scratch = nullptr;  // work space (n entries), owned by the caller
 };
 
+// One thing of MotionCostModel::join_set_bound: its points a, b, c, each
+// known or not (an unknown one constrains nothing).
+struct JoinPoints {
+  world::Vec3 a{}, b{}, c{};
+  bool has_a = false, has_b = false, has_c = false;
+};
+
 // Sum of the k smallest values of v (reorders v).
 double sum_smallest(std::vector<double>& v, std::size_t k);
 // k-th smallest value of v, 1-based (reorders v); +inf if v has fewer.
@@ -112,6 +119,14 @@ class MotionCostModel {
   // starts and whatever detours the things take (plan/chain_bound.hpp). The
   // sum of carry_bound is always correct (and the default).
   virtual double carry_set_bound(const world::Vec3* from, const world::Vec3* to, std::size_t n) const;
+  // Lower bound on the total cost of two disjoint stretches of moves, each
+  // move carrying one thing: in the first, thing i goes from p[i].a to some
+  // place J_i and on to p[i].b; in the second, from p[i].c to the same J_i;
+  // any J (plan/chain_bound.hpp: the stretch through a lasso's join and its
+  // cycle's last one). The default: the sum over things of
+  // max(carry_bound(a, b), carry_bound(c, b)) (a -> J -> b, and c -> J with
+  // J -> b, each move the thing from one point to the other).
+  virtual double join_set_bound(const JoinPoints* p, std::size_t n) const;
   // Costs of this model are expensive enough to be worth caching (the
   // planner's experience cache is used only then). Models are assumed
   // expensive unless they say otherwise; the closed-form ones below are
@@ -143,6 +158,9 @@ class EuclidCost final : public MotionCostModel {
   // forward (backward): the integral over x, on the moves' own directions
   // (docs/planning.md, "The hand's way back").
   double carry_set_bound(const world::Vec3* from, const world::Vec3* to, std::size_t n) const override;
+  // The same count of crossings, for each stretch, minimised over the side
+  // of x each J_i lies on (docs/planning.md, "The join's stretch").
+  double join_set_bound(const JoinPoints* p, std::size_t n) const override;
 };
 
 class RegionCost final : public MotionCostModel {
