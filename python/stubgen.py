@@ -44,6 +44,7 @@ def clean(sig, module):
     sig = sig.replace(module + ".", "")
     sig = re.sub(r"\b(pybind11_builtins|typing)\.", "", sig)
     sig = re.sub(r"\b(?:\w+::)+(\w+)", r"\1", sig)  # a C++ name pybind11 could not map: its last part
+    sig = re.sub(r"numpy\.ndarray\[(?:[^\[\]]|\[[^\[\]]*\])*\]", "Any", sig)  # arrays: dtype and shape dropped
     for k, v in RENAMES.items():  # in type positions only (a parameter name is followed by ':')
         sig = re.sub(rf"(?<![\w.*]){re.escape(k)}(?![\w.:])", v, sig)
     # Defaults: `= <...>` reprs and anything else that is not a literal become `...`.

@@ -29,6 +29,7 @@ void bind_plan(py::module_& m);
 void bind_bt(py::module_& m);
 void bind_loop(py::module_& m);
 void bind_worlds(py::module_& m);
+void bind_camera(py::module_& m);
 void bind_episode(py::module_& m);
 void bind_batch(py::module_& m);
 

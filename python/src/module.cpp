@@ -22,6 +22,7 @@ PYBIND11_MODULE(_rtamp, m) {
   bind_bt(m);
   bind_loop(m);
   bind_worlds(m);
+  bind_camera(m);
   bind_episode(m);
   bind_batch(m);
   // Importing rtamp changes nothing process-wide; these are the CLI's two calls, on request.

@@ -175,6 +175,19 @@ void bind_scenario(py::module_& m) {
           },
           "The LTL task over proposition names, e.g. 'F G all_in_r2'.")
       .def_readwrite("interventions", &Scenario::interventions, "The scripted operator, sorted by time.")
+      .def_property(
+          "colours",
+          [](const Scenario& s) {
+            py::dict d;
+            for (const ClassColour& c : s.colours) d[py::str(c.cls)] = py::make_tuple(c.rgb[0], c.rgb[1], c.rgb[2]);
+            return d;
+          },
+          [](Scenario& s, const std::map<std::string, Vec3>& colours) {
+            s.colours.clear();
+            for (const auto& [cls, rgb] : colours) s.colours.push_back({cls, rgb, {}});
+          },
+          "The colours of classes, {class: (r, g, b)} with channels in [0, 1] (a copy; assign a dict to\n"
+          "change them). Classes not listed take a palette colour by name (docs/scenario.md 'Colours').")
       .def_readonly("source", &Scenario::source, "The file it was loaded from ('' if generated).")
       .def("to_yaml", &to_yaml, "The scenario as YAML (parse_scenario() reads it back).")
       .def("validate", [](const Scenario& s) { validate(s); }, "Checks every invariant; raises rtamp.Error naming the first problem.")

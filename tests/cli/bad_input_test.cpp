@@ -536,6 +536,31 @@ void camera_cases(std::vector<Case>& t) {
                "--perception camera", "only the mujoco world has a camera", {"p3.csv"}});
 }
 
+// Colours of classes (line 15, after `colours:`): malformed, unknown, and (with the
+// camera) two classes the colour segmentation cannot tell apart.
+void colour_cases(std::vector<Case>& t) {
+  auto add = [&](const std::string& entry, const std::string& word, const std::string& what,
+                 std::vector<std::string> args = {"plan"}) {
+    const std::string text = scenario("F G all_in_r2", "colours:\n" + entry + "\n");
+    const std::string p = file(text);
+    std::vector<std::string> not_created;
+    if (args.size() > 1) not_created.push_back(args.back());
+    args.insert(args.begin() + 1, p);
+    t.push_back({"colours", args, at(p, text, kTaskLine + 2, word), what, not_created});
+  };
+  add("  cup: [1, 0, 0]", "cup", "colours: unknown class 'cup'");
+  add("  block: [1.5, 0, 0]", "1.5", "each channel lies in [0, 1]");
+  add("  block: [1, 0]", "[1, 0]", "must be a list [r, g, b]");
+  add("  block: red", "red", "must be a list [r, g, b]");
+  // The blocks painted the trays' wood: refused before anything runs, with the camera only.
+  add("  block: [0.56, 0.37, 0.2]", "block", "look alike to the camera",
+      {"sim", "--perception", "camera", "--snapshot", "k.png"});
+  add("  tray: [0.8, 0.1, 0.1]", "tray", "look alike to the camera",
+      {"run", "--perception", "camera", "--log", "k.jsonl"});
+  add("  block: [0.5, 0.5, 0.52]", "block", "too grey for the camera",
+      {"sim", "--perception", "camera", "--snapshot", "k.png"});
+}
+
 void serve_cases(std::vector<Case>& t) {
   auto add = [&](std::vector<std::string> args, const std::string& where, const std::string& what) {
     args.insert(args.begin(), {"serve", "3-block-tray", "--world", "symbolic", "--log", "sv.jsonl"});
@@ -681,6 +706,7 @@ std::vector<Case> table() {
   std::vector<Case> t;
   bt_cases(t);
   yaml_cases(t);
+  colour_cases(t);
   task_cases(t);
   change_cases(t);
   sim_cases(t);

@@ -71,6 +71,16 @@ TEST(CameraEpisode, TrayScenarioRelocationIsPerceivedUnderItsName) {
   EXPECT_LE(seen - moved, 1.0);
   const auto& end = r.log.back().at("placement");
   for (const char* b : {"o1", "o2", "o3"}) EXPECT_EQ(end.at(b), "r2") << b;
+  // A `camera` record per frame, 10 a second of world time, naming only what was perceived.
+  int frames = 0;
+  const std::set<std::string> perceived = names_ever_perceived(r.log);
+  for (const auto& j : r.log)
+    if (j.at("ev") == "camera") {
+      ++frames;
+      EXPECT_EQ(j.at("camera"), "overhead");
+      for (const auto& th : j.at("things")) EXPECT_TRUE(perceived.count(th.at("name"))) << th;
+    }
+  EXPECT_NEAR(frames, 10 * r.log.back().at("t").get<double>(), 2);
 }
 
 TEST(CameraEpisode, AHandedOverTrayIsSeenAndUsed) {

@@ -170,6 +170,23 @@ TEST_F(ReplayCheck, BrokenLogsAreRefusedWithTheirLine) {
   edited("plan_nowhere.jsonl", run, "plan", [](json& p) { p["actions"][0] = "move(o1, r9)"; },
          "no location 'r9' exists here");
   edited("type.jsonl", run, "tree", [](json& t) { t["applied"] = "yes"; }, "\"applied\" must be true or false");
+  {  // a camera record (MuJoCo with --perception camera): its belief's own names pass, a state not
+     // of the belief and a position of two numbers do not
+    auto ls = run;
+    json cam = json::parse(
+        R"({"ev":"camera","camera":"overhead","detections":[{"class":"block","at":[0.4,0.32,0],"yaw":0,"complete":true}],)"
+        R"("things":[{"name":"block_seen1","class":"block","state":"visible","at":[0.4,0.32,0]}]})");
+    cam["t"] = json::parse(ls[1])["t"];
+    ls.insert(ls.begin() + 2, cam.dump());
+    EXPECT_EQ(refusal("camera.jsonl", ls), "");
+    cam["things"][0]["state"] = "gone";
+    ls[2] = cam.dump();
+    expect_refused("camera_state.jsonl", ls, 3, "is not a belief state");
+    cam["things"][0]["state"] = "occluded";
+    cam["detections"][0]["at"] = {0.4, 0.32};
+    ls[2] = cam.dump();
+    expect_refused("camera_at.jsonl", ls, 3, "\"at\" must be 3 numbers");
+  }
   {  // an unknown kind, out of time order
     auto ls = run;
     ls[2] = R"({"ev":"teleport","t":0})";

@@ -2,13 +2,17 @@
 // truth of which body a pixel shows, which the segmenter never sees): in generated
 // scenes (2-5 regions, 1-8 blocks, 0-2 trays with blocks on them) seen by the default
 // overhead camera, a pixel is labelled with a thing class exactly when it shows a thing
-// of that class. Also: a wrong palette or option is refused.
+// of that class — also for classes coloured by the scenario and a thing added during the
+// run (a spare body repainted). Also: a wrong palette or option is refused, and so are
+// classes whose colours the segmentation cannot tell apart.
 #include <gtest/gtest.h>
 
 #include <cstdio>
+#include <functional>
 
 #include "rtamp/sim/camera_rig.hpp"
 #include "rtamp/sim/colour_segmentation.hpp"
+#include "rtamp/sim/scene_style.hpp"
 #include "rtamp/util/error.hpp"
 #include "test_scenarios.hpp"
 
@@ -19,8 +23,9 @@ struct Score {
   long pixels = 0, thing_pixels = 0, missed = 0, phantom = 0, confused = 0;
 };
 
-Score score_scene(const world::Scenario& s) {
+Score score_scene(const world::Scenario& s, const std::function<void(Simulation&)>& before = {}) {
   Simulation sim(s);
+  if (before) before(sim);
   sim.step(50);
   CameraRig rig(sim, world::cameras_of(s));
   CameraImage im;
@@ -69,6 +74,80 @@ TEST(ColourSegmentation, AgreesWithTheSegmentationPassPixelByPixel) {
               "phantom %ld (%.3f %%), confused %ld\n",
               total.pixels, total.thing_pixels, total.missed, 100.0 * total.missed / total.thing_pixels, total.phantom,
               100.0 * total.phantom / total.thing_pixels, total.confused);
+}
+
+world::Scenario with_classes(std::vector<std::pair<std::string, world::Vec3>> colours,
+                             const std::vector<std::string>& added_classes) {
+  world::Scenario s = testing::camera_scene(1);  // 3 regions, blocks in r1, a tray in r3, r2 empty
+  for (auto& [cls, rgb] : colours) s.colours.push_back({cls, rgb, {"c.yaml", 20, 3}});
+  int k = 0;
+  for (const std::string& cls : added_classes) {
+    world::Intervention iv;
+    iv.kind = world::Change::Kind::Add;
+    iv.subject = "x" + std::to_string(++k);
+    iv.cls = cls;
+    iv.location = "r2";
+    iv.time = 100;
+    iv.where = {"c.yaml", 30 + k, 5};
+    s.interventions.push_back(iv);
+  }
+  return s;
+}
+
+TEST(ColourSegmentation, ClassesOfTheirOwnColourAndAddedThingsAreFound) {
+  const world::Scenario s = with_classes({{"cup", {0.1, 0.7, 0.65}}, {"bowl", {0.55, 0.2, 0.7}}}, {"cup", "bowl"});
+  EXPECT_NO_THROW(check_scene_colours(s));
+  // A spare body (built red, as a block) added as a cup and a bowl must show their colours.
+  const world::Vec3 r2 = s.find_region("r2")->center;
+  const Score sc = score_scene(s, [&](Simulation& sim) {
+    Eigen::Isometry3d p = Eigen::Isometry3d::Identity();
+    p.translation() = Eigen::Vector3d(r2[0] - 0.05, r2[1], 0.02);
+    sim.add("x1", "cup", false, p, {0.04, 0.04, 0.04});
+    p.translation() = Eigen::Vector3d(r2[0] + 0.05, r2[1], 0.02);
+    sim.add("x2", "bowl", false, p, {0.04, 0.04, 0.04});
+  });
+  EXPECT_GT(sc.thing_pixels, 100);
+  EXPECT_EQ(sc.confused, 0);
+  EXPECT_EQ(sc.phantom, 0);
+  EXPECT_LE(sc.missed, sc.thing_pixels / 50);
+}
+
+TEST(ColourSegmentation, ClassesTheCameraCannotTellApartAreRefused) {
+  // Every palette hue is told apart from the default classes' red and wood.
+  for (int i = 0; i < 40; ++i)
+    EXPECT_NO_THROW(check_scene_colours(with_classes({}, {"class" + std::to_string(i)}))) << i;
+  // Two classes of the same palette hue (names hash to one of five): refused, naming both,
+  // until one is given a colour of its own.
+  std::string a, b;
+  for (int i = 0; i < 40 && b.empty(); ++i)
+    for (int j = 0; j < i && b.empty(); ++j) {
+      const world::Scenario one = with_classes({}, {"k" + std::to_string(j)});
+      const world::Scenario two = with_classes({}, {"k" + std::to_string(i)});
+      if (class_colour(one, "k" + std::to_string(j)) == class_colour(two, "k" + std::to_string(i)))
+        a = "k" + std::to_string(j), b = "k" + std::to_string(i);
+    }
+  ASSERT_FALSE(b.empty());
+  try {
+    check_scene_colours(with_classes({}, {a, b}));
+    ADD_FAILURE() << a << " and " << b << " were not refused";
+  } catch (const Error& e) {
+    const std::string m = e.what();
+    EXPECT_NE(m.find("'" + a + "'"), std::string::npos) << m;
+    EXPECT_NE(m.find("'" + b + "'"), std::string::npos) << m;
+    EXPECT_NE(m.find("0.0° apart"), std::string::npos) << m;
+    EXPECT_EQ(e.where().line, 32) << m;  // the later one's operator action
+  }
+  EXPECT_NO_THROW(check_scene_colours(with_classes({{b, {0.85, 0.2, 0.55}}}, {a, b})));
+  // A colour of one's own near another class's hue (orange by the trays' wood), or grey.
+  try {
+    check_scene_colours(with_classes({{"cup", {0.9, 0.45, 0.1}}}, {"cup"}));
+    ADD_FAILURE() << "orange was not refused beside wood";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("'tray'"), std::string::npos) << e.what();
+    EXPECT_EQ(e.where().line, 20);  // at the colours entry
+  }
+  EXPECT_THROW(check_scene_colours(with_classes({{"cup", {0.5, 0.5, 0.55}}}, {"cup"})), Error);
+  EXPECT_THROW(check_scene_colours(with_classes({{"block", {0.6, 0.4, 0.22}}}, {})), Error);
 }
 
 TEST(ColourSegmentation, ABadPaletteOrOptionIsRefused) {

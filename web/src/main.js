@@ -154,8 +154,8 @@ function onLog(r) {
       app.drops.splice(i, 1);
     }
   }
-  // Ticks (50 a second with MuJoCo), percepts and frame records change no panel.
-  if (r.ev !== 'tick' && r.ev !== 'perceived' && r.ev !== 'frame') app.pending.log = true;
+  // Ticks (50 a second with MuJoCo), percepts, frame and camera records change no panel.
+  if (r.ev !== 'tick' && r.ev !== 'perceived' && r.ev !== 'frame' && r.ev !== 'camera') app.pending.log = true;
 }
 
 function onMessage(m) {

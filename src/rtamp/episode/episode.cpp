@@ -5,6 +5,7 @@
 #include <memory>
 #include <random>
 
+#include "rtamp/episode/camera_record.hpp"
 #include "rtamp/episode/sim_world.hpp"
 #include "rtamp/episode/video_recorder.hpp"
 #include "rtamp/episode/episode_mcap.hpp"
@@ -106,8 +107,13 @@ Episode::Episode(const world::Scenario& input, const EpisodeOptions& opt, const 
     video_ = std::make_unique<VideoRecorder>(sim_world_->session().sim(), out.video);
   if (out.timeline) timeline_ = std::make_unique<exec::Timeline>(out.timeline);
   if (log_) {
-    if (SimWorld* sw = sim_world_)
+    if (SimWorld* sw = sim_world_) {
       log_->add_end_field("mujoco_warnings", [sw] { return static_cast<double>(sw->session().sim().warnings().total()); });
+      // Camera perception: a `camera` record per frame (what it detected and believes).
+      sw->session().perception().add_frame_observer([log = log_.get(), sw](const sim::CameraPerception& frame) {
+        log->record(sw->session().sim().time(), camera_record(frame));
+      });
+    }
     loop_->add_observer(*log_);
   }
   if (mcap_ && sim_world_) {

@@ -66,7 +66,8 @@ void numbers(const json& a, const std::string& ev, const char* name, std::size_t
 }
 
 const std::set<std::string> kKinds = {"episode", "run",    "plan",   "tree",  "replan", "things",  "intervention",
-                                      "perceived", "handled_by_tree", "action", "cycle", "tick", "frame", "end"};
+                                      "perceived", "handled_by_tree", "action", "cycle", "tick", "frame", "camera", "end"};
+const std::set<std::string> kBeliefStates = {"visible", "occluded", "held", "out-of-view", "missing"};
 const std::set<std::string> kInterventions = {"relocate",         "add", "remove", "add-container",
                                               "remove-container", "take-from-gripper"};
 const std::set<std::string> kActionWhat = {"start", "finished", "failed", "halted"};
@@ -208,6 +209,21 @@ void LogCheck::record(const json& j) {
       if (const json* quat = field(th, "quat")) numbers(*quat, ev, "quat", 4);
       if (const json* size = field(th, "size")) numbers(*size, ev, "size", 3);
       if (const json* at = field(th, "at")) location(*at, "`frame` record: \"at\"");
+    }
+  } else if (ev == "camera") {
+    // Belief names (a thing first seen is "<class>_seen<n>") need not be the scenario's.
+    need(j, ev, "camera", &J::is_string, "a string");
+    for (const json& d : need(j, ev, "detections", &J::is_array, "an array")) {
+      if (!d.is_object()) bad(ev, "detections", "must be objects");
+      need(d, ev, "class", &J::is_string, "a string");
+      numbers(need(d, ev, "at", &J::is_array, "an array"), ev, "at", 3);
+    }
+    for (const json& th : need(j, ev, "things", &J::is_array, "an array")) {
+      if (!th.is_object()) bad(ev, "things", "must be objects");
+      need(th, ev, "name", &J::is_string, "a string");
+      const json& state = need(th, ev, "state", &J::is_string, "a string");
+      if (!kBeliefStates.count(state.get<std::string>())) bad(ev, "state", "is not a belief state");
+      numbers(need(th, ev, "at", &J::is_array, "an array"), ev, "at", 3);
     }
   } else if (ev == "end") {
     need(j, ev, "success", &J::is_boolean, "true or false");

@@ -30,7 +30,7 @@ json vec(const world::Vec3& v) { return json::array({v[0], v[1], v[2]}); }
 
 }  // namespace
 
-std::string class_colour_hex(const std::string& cls) { return hex(sim::class_colour(cls)); }
+std::string class_colour_hex(const world::Scenario& s, const std::string& cls) { return hex(sim::class_colour(s, cls)); }
 
 std::string hello_fields(const world::Scenario& s, const automata::Automaton& ba, const std::string& mode,
                          const std::string& world_name, std::optional<double> replay_duration) {
@@ -54,18 +54,18 @@ std::string hello_fields(const world::Scenario& s, const automata::Automaton& ba
   std::set<std::string> seen_classes;
   auto add_class = [&](const std::string& cls, bool container) {
     if (seen_classes.insert(cls).second)
-      classes.push_back({{"name", cls}, {"color", class_colour_hex(cls)}, {"kind", container ? "container" : "object"}});
+      classes.push_back({{"name", cls}, {"color", class_colour_hex(s, cls)}, {"kind", container ? "container" : "object"}});
   };
   for (const auto& c : s.containers) {
     things.push_back({{"name", c.name}, {"class", c.cls}, {"kind", "container"}, {"size", vec(c.size)},
                       {"pos", vec(c.position)}, {"capacity", c.capacity}, {"at", *initial.location_of(c.name)},
-                      {"color", class_colour_hex(c.cls)}});
+                      {"color", class_colour_hex(s, c.cls)}});
     add_class(c.cls, true);
   }
   for (const auto& o : s.objects) {
     things.push_back({{"name", o.name}, {"class", o.cls}, {"kind", "object"}, {"size", vec(o.size)},
                       {"pos", vec(o.position)}, {"at", *initial.location_of(o.name)},
-                      {"color", class_colour_hex(o.cls)}});
+                      {"color", class_colour_hex(s, o.cls)}});
     add_class(o.cls, false);
   }
   for (const auto& iv : s.interventions) {

@@ -20,6 +20,6 @@ std::string hello_fields(const world::Scenario& scenario, const automata::Automa
                          const std::string& world_name, std::optional<double> replay_duration = std::nullopt);
 
 // "#rrggbb" of a class (sim::class_colour).
-std::string class_colour_hex(const std::string& cls);
+std::string class_colour_hex(const world::Scenario& s, const std::string& cls);
 
 }  // namespace rtamp::serve

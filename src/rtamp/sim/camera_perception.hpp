@@ -36,6 +36,7 @@ class CameraPerception {
   const world::Belief& belief() const { return belief_; }
   const CameraImage& image() const { return image_; }
   const std::vector<world::Detection>& detections() const { return detections_; }
+  const std::string& camera_name() const { return rig_.cameras()[camera_].name; }
 
  private:
   const Simulation& sim_;

@@ -41,7 +41,7 @@ void write_camera_snapshot(CameraRig& rig, std::size_t camera, const Simulation&
   }
   if (!files.segmentation.empty()) {
     std::map<int, std::array<std::uint8_t, 3>> colour{{0, {70, 70, 70}}};  // the world body: table, regions
-    for (const Thing& t : sim.things()) colour[t.body] = bytes(class_colour(t.cls));
+    for (const Thing& t : sim.things()) colour[t.body] = bytes(class_colour(sim.scenario(), t.cls));
     std::vector<std::uint8_t> rgb(image.body.size() * 3, 0);
     for (std::size_t i = 0; i < image.body.size(); ++i) {
       const int b = image.body[i];

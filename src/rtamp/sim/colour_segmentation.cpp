@@ -1,6 +1,7 @@
 #include "rtamp/sim/colour_segmentation.hpp"
 
 #include <algorithm>
+#include <cstdio>
 #include <cmath>
 #include <numbers>
 #include <set>
@@ -32,8 +33,10 @@ ColourSegmenter::ColourSegmenter(std::vector<KnownColour> colours, ColourSegment
   if (colours_.size() > 32767) throw Error("colour segmentation: more than 32767 known colours");
   if (!(options_.max_angle_deg > 0 && options_.max_angle_deg < 90))
     throw Error("colour segmentation: max_angle_deg must lie in (0, 90)");
-  if (options_.min_chroma < 0 || options_.min_chroma > 255 || options_.min_blob_pixels < 1 || options_.opening_radius < 0)
-    throw Error("colour segmentation: min_chroma in [0, 255], min_blob_pixels >= 1, opening_radius >= 0");
+  if (options_.min_chroma < 0 || options_.min_chroma > 255 || options_.min_blob_pixels < 1 || options_.opening_radius < 0 ||
+      !(options_.min_saturation >= 0 && options_.min_saturation < 1))
+    throw Error("colour segmentation: min_chroma in [0, 255], min_saturation in [0, 1), min_blob_pixels >= 1, "
+                "opening_radius >= 0");
   // A surface's pixel is roughly a * albedo + b * white (diffuse light, plus ambient and
   // specular light and clipping that whiten it): its chroma vector, the colour minus its
   // smallest channel, keeps the albedo's direction (its hue) whatever a and b are.
@@ -53,7 +56,8 @@ ColourSegmenter::ColourSegmenter(std::vector<KnownColour> colours, ColourSegment
         const double half = 0.5 * (1 << kShift);
         const std::array<double, 3> c{(r << kShift) + half, (g << kShift) + half, (b << kShift) + half};
         const double lo = std::min({c[0], c[1], c[2]});
-        if (std::max({c[0], c[1], c[2]}) - lo < options_.min_chroma) continue;
+        const double hi = std::max({c[0], c[1], c[2]});
+        if (hi - lo < options_.min_chroma || hi - lo < options_.min_saturation * hi) continue;
         const auto u = unit({c[0] - lo, c[1] - lo, c[2] - lo});
         double best = min_cos;
         int label = -1;
@@ -111,6 +115,67 @@ void ColourSegmenter::segment(const std::uint8_t* rgb, int width, int height, Co
   }
 }
 
+namespace {
+
+double chroma_span(const std::array<double, 3>& c) {
+  return std::max({c[0], c[1], c[2]}) - std::min({c[0], c[1], c[2]});
+}
+
+std::array<double, 3> hue_direction(const std::array<double, 3>& c) {
+  const double lo = std::min({c[0], c[1], c[2]});
+  return unit({c[0] - lo, c[1] - lo, c[2] - lo});
+}
+
+SourceLocation where_class(const world::Scenario& s, const std::string& cls) {
+  if (const auto* c = s.find_colour(cls)) return c->where;
+  for (const auto& o : s.objects)
+    if (o.cls == cls) return o.where;
+  for (const auto& c : s.containers)
+    if (c.cls == cls) return c.where;
+  for (const auto& i : s.interventions)
+    if (i.cls == cls) return i.where;
+  return SourceLocation{s.source, 0, 0};
+}
+
+std::string colour_text(const std::array<double, 3>& c) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "[%.3g, %.3g, %.3g]", c[0], c[1], c[2]);
+  return buf;
+}
+
+}  // namespace
+
+void check_scene_colours(const world::Scenario& s, const ColourSegmentationOptions& options) {
+  std::vector<KnownColour> things;
+  for (KnownColour& k : scene_colours(s))
+    if (k.thing) things.push_back(std::move(k));
+  const double needed = 2 * options.max_angle_deg;
+  for (std::size_t i = 0; i < things.size(); ++i) {
+    const KnownColour& a = things[i];
+    if (chroma_span(a.rgb) < 0.1)
+      throw Error("class '" + a.label + "': its colour " + colour_text(a.rgb) +
+                      " is too grey for the camera to find by its hue (channels differ by less than 0.1)",
+                  where_class(s, a.label));
+    for (std::size_t j = 0; j < i; ++j) {
+      const KnownColour& b = things[j];
+      const auto u = hue_direction(a.rgb), v = hue_direction(b.rgb);
+      const double cs = std::clamp(u[0] * v[0] + u[1] * v[1] + u[2] * v[2], -1.0, 1.0);
+      const double angle = std::acos(cs) * 180 / std::numbers::pi;
+      if (angle < needed) {
+        char buf[32];
+        std::snprintf(buf, sizeof buf, "%.1f", angle);
+        // Blame the class defined later in the file (the one a user most likely just wrote).
+        const SourceLocation wa = where_class(s, a.label), wb = where_class(s, b.label);
+        const bool a_later = wa.line > wb.line || (wa.line == wb.line && wa.column >= wb.column);
+        throw Error("classes '" + b.label + "' " + colour_text(b.rgb) + " and '" + a.label + "' " + colour_text(a.rgb) +
+                        " look alike to the camera: their hues are " + buf + "° apart, and it tells classes apart at " +
+                        std::to_string(static_cast<int>(needed)) + "° or more (give one a colour of its own in colours:)",
+                    a_later ? wa : wb);
+      }
+    }
+  }
+}
+
 std::vector<KnownColour> scene_colours(const world::Scenario& s) {
   std::set<std::string> classes;
   for (const auto& o : s.objects) classes.insert(o.cls);
@@ -120,7 +185,7 @@ std::vector<KnownColour> scene_colours(const world::Scenario& s) {
   classes.insert("block");
   classes.insert("tray");
   std::vector<KnownColour> out;
-  for (const std::string& c : classes) out.push_back({c, class_colour(c), true});
+  for (const std::string& c : classes) out.push_back({c, class_colour(s, c), true});
   for (std::size_t i = 0; i < s.regions.size(); ++i) {
     const auto c = region_colour(i);
     out.push_back({"region " + s.regions[i].name, c, false});

@@ -30,6 +30,8 @@ struct KnownColour {
 struct ColourSegmentationOptions {
   double max_angle_deg = 6.0;  // farther from every known colour: none
   int min_chroma = 24;         // a pixel whose channels differ by less (grey, dark): none
+  double min_saturation = 0.2;  // a pixel whose chroma is less than this part of its largest channel
+                                // (washed out: a pale surface clipped at 255 turns its hue): none
   int min_blob_pixels = 12;    // smaller blobs are dropped
   int opening_radius = 1;      // of the square opening applied to each thing colour's mask (0: none)
 };
@@ -58,6 +60,12 @@ class ColourSegmenter {
   ColourSegmentationOptions options_;
   std::vector<std::int16_t> table_;  // 64^3 entries
 };
+
+// Refuses, as rtamp::Error at the class's `colours:` entry (else its first thing or the
+// operator action that adds it), a thing class of `s` (scene_colours) whose colour has no
+// hue to find it by, or whose hue lies within 2 max_angle_deg of another thing class's:
+// their acceptance cones meet, so shading or noise could give one's pixels to the other.
+void check_scene_colours(const world::Scenario& s, const ColourSegmentationOptions& options = {});
 
 // The colours a MuJoCo model built from `s` shows (mjcf_builder.hpp): each thing class,
 // each region's fill and outline, the table, the floor, the arm and the gripper.

@@ -112,14 +112,15 @@ std::string gripper_mjcf(const MjcfOptions& opt) {
 }  // namespace
 
 // A colour per class name: a small palette indexed by a stable hash of the name.
-std::array<double, 3> class_colour(const std::string& cls) {
+std::array<double, 3> class_colour(const world::Scenario& s, const std::string& cls) {
+  if (const world::ClassColour* c = s.find_colour(cls)) return c->rgb;
   static const std::array<std::array<double, 3>, 6> palette{{
       {0.85, 0.15, 0.12},  // red
       {0.15, 0.35, 0.85},  // blue
       {0.95, 0.75, 0.10},  // yellow
       {0.55, 0.20, 0.70},  // purple
       {0.10, 0.70, 0.65},  // teal
-      {0.90, 0.45, 0.10},  // orange
+      {0.25, 0.70, 0.20},  // green (not orange: one degree of hue from the trays' wood)
   }};
   if (cls == "block") return palette[0];
   if (cls == "tray") return {0.55, 0.36, 0.20};  // wood
@@ -177,7 +178,7 @@ std::string build_mjcf(const world::Scenario& s, const MjcfOptions& opt) {
   int offwidth = 640, offheight = 480;
   for (const world::Camera& c : cameras) offwidth = std::max(offwidth, c.width), offheight = std::max(offheight, c.height);
   x << "  <visual><global offwidth=\"" << offwidth << "\" offheight=\"" << offheight << "\"/>"
-       "<quality shadowsize=\"2048\"/><headlight ambient=\"0.3 0.3 0.3\" diffuse=\"0.4 0.4 0.4\"/>"
+       "<quality shadowsize=\"2048\"/><headlight ambient=\"0.25 0.25 0.25\" diffuse=\"0.2 0.2 0.2\" specular=\"0.1 0.1 0.1\"/>"
        "<map znear=\"0.01\"/></visual>\n";
   x << "  <default>\n"
        "    <geom contype=\"1\" conaffinity=\"3\" friction=\""
@@ -187,7 +188,7 @@ std::string build_mjcf(const world::Scenario& s, const MjcfOptions& opt) {
        "    <default class=\"visual\"><geom contype=\"0\" conaffinity=\"0\" group=\"1\"/></default>\n"
     << model_section(ur5, "default") << "  </default>\n";
   x << "  <worldbody>\n";
-  x << "    <light name=\"sun\" pos=\"" << v3(cx, cy, 3) << "\" dir=\"0 0.2 -1\" directional=\"true\" castshadow=\"false\"/>\n";
+  x << "    <light name=\"sun\" pos=\"" << v3(cx, cy, 3) << "\" dir=\"0 0.2 -1\" directional=\"true\" castshadow=\"false\" diffuse=\"0.5 0.5 0.5\" specular=\"0.1 0.1 0.1\"/>\n";
   x << "    <geom name=\"floor\" type=\"plane\" size=\"5 5 0.1\" pos=\"0 0 -0.75\" rgba=\"0.82 0.83 0.85 1\" class=\"visual\"/>\n";
   x << "    <geom name=\"table\" type=\"box\" size=\"" << v3((xmax - xmin) / 2, (ymax - ymin) / 2, 0.025)
     << "\" pos=\"" << v3(cx, cy, -0.025) << "\" rgba=\"0.93 0.91 0.86 1\"/>\n";
@@ -281,22 +282,22 @@ std::string build_mjcf(const world::Scenario& s, const MjcfOptions& opt) {
   };
   std::vector<std::string> movable;
   for (const auto& c : s.containers) {
-    tray_body("ctr:" + c.name, c.position, c.size, class_colour(c.cls), false);
+    tray_body("ctr:" + c.name, c.position, c.size, class_colour(s, c.cls), false);
     movable.push_back("ctr:" + c.name);
   }
   for (const auto& o : s.objects) {
-    block_body("obj:" + o.name, {o.position[0], o.position[1], object_base_z(s, o)}, o.size, class_colour(o.cls),
+    block_body("obj:" + o.name, {o.position[0], o.position[1], object_base_z(s, o)}, o.size, class_colour(s, o.cls),
                false);
     movable.push_back("obj:" + o.name);
   }
   int park = 0;
   for (int k = 0; k < opt.spare_blocks; ++k) {
     block_body("spare_block:" + std::to_string(k), parking_position(park++), opt.spare_block_size,
-               class_colour("block"), true);
+               class_colour(s, "block"), true);
     movable.push_back("spare_block:" + std::to_string(k));
   }
   for (int k = 0; k < opt.spare_trays; ++k) {
-    tray_body("spare_tray:" + std::to_string(k), parking_position(park++), opt.spare_tray_size, class_colour("tray"),
+    tray_body("spare_tray:" + std::to_string(k), parking_position(park++), opt.spare_tray_size, class_colour(s, "tray"),
               true);
     movable.push_back("spare_tray:" + std::to_string(k));
   }

@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "rtamp/sim/camera_perception.hpp"
+#include "rtamp/sim/colour_segmentation.hpp"
 #include "rtamp/util/error.hpp"
 
 namespace rtamp::sim {
@@ -33,6 +34,7 @@ Perception::Perception(const Simulation& sim, PerceptionOptions options)
   if (options_.source != PerceptionSource::Camera) return;
   if (options_.position_sigma != 0 || options_.miss_probability != 0)
     throw Error("position noise and misses are for truth perception; a camera's errors are its own");
+  check_scene_colours(sim.scenario());
   camera_ = std::make_unique<CameraPerception>(
       sim, CameraPerceptionOptions{.camera = options_.camera, .belief = options_.belief, .seed = options_.seed});
   for (const auto& c : world::cameras_of(sim.scenario()))
@@ -46,6 +48,7 @@ Perception::Perception(Perception&&) noexcept = default;
 void Perception::advance() {
   if (!camera_ || sim_.time() + 1e-9 < next_frame_) return;
   camera_->frame();
+  for (const FrameObserver& f : frame_observers_) f(*camera_);
   while (next_frame_ <= sim_.time() + 1e-9) next_frame_ += frame_period_;
 }
 

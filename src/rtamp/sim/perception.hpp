@@ -18,6 +18,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <random>
 #include <string>
@@ -81,6 +82,9 @@ class Perception {
   const PerceptionOptions& options() const { return options_; }
   // The camera pipeline (nullptr for Truth).
   const CameraPerception* camera() const { return camera_.get(); }
+  // Camera: `f` is called after each frame, with the pipeline (its detections and belief).
+  using FrameObserver = std::function<void(const CameraPerception&)>;
+  void add_frame_observer(FrameObserver f) { frame_observers_.push_back(std::move(f)); }
 
  private:
   const Simulation& sim_;
@@ -89,6 +93,7 @@ class Perception {
   world::Geometry geometry_;
   std::vector<std::string> known_containers_;
   std::unique_ptr<CameraPerception> camera_;
+  std::vector<FrameObserver> frame_observers_;
   double frame_period_ = 0, next_frame_ = 0;
 };
 

@@ -1,7 +1,9 @@
 // How the generated MuJoCo model (mjcf_builder.hpp) looks, for anything that
 // draws the same scene (the page of `rtamp serve`): the colour of things of a
-// class — a stable palette by name, "block" red, "tray" wood — and of the i-th
-// region's outline (the table top's extent is world/table.hpp).
+// class — the scenario's `colours:` where it lists the class, else a stable palette
+// by name ("block" red, "tray" wood, others one of five hues, each at least 30° of
+// hue from red, wood and each other) — and of the i-th region's outline (the table
+// top's extent is world/table.hpp).
 #pragma once
 
 #include <array>
@@ -12,7 +14,7 @@
 
 namespace rtamp::sim {
 
-std::array<double, 3> class_colour(const std::string& cls);  // RGB in [0, 1]
+std::array<double, 3> class_colour(const world::Scenario& s, const std::string& cls);  // RGB in [0, 1]
 std::array<double, 3> region_colour(std::size_t i);
 
 

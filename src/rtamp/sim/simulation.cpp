@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstring>
 
+#include "rtamp/sim/scene_style.hpp"
 #include "rtamp/util/error.hpp"
 
 namespace rtamp::sim {
@@ -288,6 +289,9 @@ int Simulation::add(const std::string& name, const std::string& cls, bool contai
     if (!t.spare || !t.name.empty() || t.container != container) continue;
     t.name = name;
     t.cls = cls;
+    const auto rgb = class_colour(scenario_, cls);  // spares are built in the default class's colour
+    for (int g = t.geom_begin; g < t.geom_begin + t.geom_count; ++g)
+      for (int k = 0; k < 3; ++k) m_->geom_rgba[4 * g + k] = static_cast<float>(rgb[static_cast<std::size_t>(k)]);
     if (!container) {
       // Resize the box (collision and visual); keep mass and inertia.
       const int g = t.geom_begin;

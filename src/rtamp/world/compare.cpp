@@ -105,6 +105,11 @@ std::string first_difference(const Scenario& a, const Scenario& b) {
       d.field(idx("operator", i) + ".to", x.location, y.location);
       d.field(idx("operator", i) + ".position", x.position, y.position);
     }
+  if (d.count("colours", a.colours.size(), b.colours.size()))
+    for (std::size_t i = 0; i < a.colours.size(); ++i) {
+      d.field(idx("colours", i) + ".class", a.colours[i].cls, b.colours[i].cls);
+      d.field(idx("colours", i) + ".rgb", a.colours[i].rgb, b.colours[i].rgb);
+    }
   if (d.count("cameras", a.cameras.size(), b.cameras.size()))
     for (std::size_t i = 0; i < a.cameras.size(); ++i) {
       const Camera &x = a.cameras[i], &y = b.cameras[i];

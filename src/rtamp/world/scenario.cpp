@@ -15,5 +15,10 @@ const Region* Scenario::find_region(const std::string& n) const { return find_na
 const Container* Scenario::find_container(const std::string& n) const { return find_named(containers, n); }
 const Object* Scenario::find_object(const std::string& n) const { return find_named(objects, n); }
 const Proposition* Scenario::find_proposition(const std::string& n) const { return find_named(propositions, n); }
+const ClassColour* Scenario::find_colour(const std::string& cls) const {
+  for (const ClassColour& c : colours)
+    if (c.cls == cls) return &c;
+  return nullptr;
+}
 
 }  // namespace rtamp::world

@@ -55,6 +55,15 @@ struct Object {
   SourceLocation where;
 };
 
+// `colours:` — the colour things of a class are drawn in, and, with camera perception,
+// recognised by (sim/colour_segmentation.hpp). Classes not listed take a stable palette
+// colour by name (sim/scene_style.hpp).
+struct ClassColour {
+  std::string cls;
+  Vec3 rgb{0, 0, 0};     // each channel in [0, 1]
+  SourceLocation where;  // of the class's key
+};
+
 struct Robot {
   std::string model = "ur5";
   Vec3 base{0, 0, 0};
@@ -166,12 +175,14 @@ struct Scenario {
   TextLayout task_layout;     // of a block scalar task (| or >) in its file; empty otherwise
   std::vector<Intervention> interventions;  // sorted by time
   std::vector<Camera> cameras;              // as listed (world/camera.hpp: cameras_of() adds defaults)
+  std::vector<ClassColour> colours;         // as listed
   std::string source;                       // file it was loaded from ("" if generated)
 
   const Region* find_region(const std::string& n) const;
   const Container* find_container(const std::string& n) const;
   const Object* find_object(const std::string& n) const;
   const Proposition* find_proposition(const std::string& n) const;
+  const ClassColour* find_colour(const std::string& cls) const;
 };
 
 }  // namespace rtamp::world

@@ -61,7 +61,7 @@ bool valid_utf8(std::string_view s) {
 
 const std::vector<std::string> kRootKeys = {"name",    "description", "robot",        "regions", "containers",
                                             "objects", "propositions", "task",        "operator",
-                                            "cameras"};
+                                            "cameras", "colours"};
 const std::vector<std::string> kRegionKeys = {"name", "center", "size", "capacity"};
 const std::vector<std::string> kContainerKeys = {"name", "class", "position", "size", "capacity"};
 const std::vector<std::string> kObjectKeys = {"name", "class", "position", "size"};
@@ -135,6 +135,7 @@ class Reader {
       for_each_item(*o, "operator", [&](const YAML::Node& n) { s.interventions.push_back(read_intervention(n)); });
     if (auto c = optional(root, "cameras"))
       for_each_item(*c, "cameras", [&](const YAML::Node& n) { s.cameras.push_back(read_camera(n)); });
+    if (auto c = optional(root, "colours")) read_colours(*c, s.colours);
     std::stable_sort(s.interventions.begin(), s.interventions.end(),
                      [](const Intervention& a, const Intervention& b) { return a.time < b.time; });
 
@@ -516,6 +517,26 @@ class Reader {
     return c;
   }
 
+  void read_colours(const YAML::Node& n, std::vector<ClassColour>& out) {
+    if (!n.IsMap()) fail(n, "colours must be a mapping of class: [r, g, b] (each in [0, 1]), found " + describe(n));
+    std::set<std::string> seen;
+    for (auto it = n.begin(); it != n.end(); ++it) {
+      const YAML::Node key = it->first, value = it->second;  // copies: it-> yields a temporary
+      ClassColour c;
+      c.cls = word(key, "colours: a class");
+      c.where = loc(key);
+      if (!seen.insert(c.cls).second) fail(key, "duplicate class " + quoted(c.cls) + " in colours");
+      const std::string what = "colours: " + quoted(c.cls);
+      if (!value.IsSequence() || value.size() != 3)
+        fail(value, what + " must be a list [r, g, b] of three numbers in [0, 1], found " + describe(value));
+      for (std::size_t i = 0; i < 3; ++i) {
+        c.rgb[i] = number(value[i], what);
+        if (c.rgb[i] < 0 || c.rgb[i] > 1) fail(value[i], what + ": each channel lies in [0, 1], found " + describe(value[i]));
+      }
+      out.push_back(std::move(c));
+    }
+  }
+
   void read_propositions(const YAML::Node& n, std::vector<Proposition>& out) {
     if (!n.IsMap())
       fail(n, "propositions must be a mapping of name: \"expression\" (e.g. all_in_r2: \"all block in r2\"), found " +
@@ -738,6 +759,10 @@ std::string to_yaml(const Scenario& s) {
       if (iv.position) out << ", position: " << vec(*iv.position);
       out << "}\n";
     }
+  }
+  if (!s.colours.empty()) {
+    out << "colours:\n";
+    for (const ClassColour& c : s.colours) out << "  " << str(c.cls) << ": " << vec(c.rgb) << "\n";
   }
   if (!s.cameras.empty()) {
     out << "cameras:\n";

@@ -54,6 +54,7 @@ class Validator {
       fail(s_.task_where, "the task is empty (write an LTL formula over the propositions, e.g. \"F G all_in_r2\")");
     check_interventions();
     check_cameras();
+    check_colours();
   }
 
  private:
@@ -320,6 +321,24 @@ class Validator {
       check_intervention(iv, s_, w, InterventionSyntax::Scenario, owner,
                          [&](std::string_view field) { return field.empty() ? iv.where : at(iv.where, field); });
       note_intervention(iv, w);
+    }
+  }
+
+  // A colour is for a class the scenario has (its things, what the operator adds, or the
+  // default classes block and tray): a listed class nothing has is a typo.
+  void check_colours() const {
+    std::set<std::string> known = {"block", "tray"};
+    known.insert(object_classes_.begin(), object_classes_.end());
+    known.insert(container_classes_.begin(), container_classes_.end());
+    for (const Intervention& iv : s_.interventions)
+      if (!iv.cls.empty()) known.insert(iv.cls);
+    for (const ClassColour& c : s_.colours) {
+      for (double x : c.rgb)
+        if (!(x >= 0 && x <= 1))
+          fail(c.where, "colours: " + quote(c.cls) + ": " + fmt(c.rgb) + " has a channel outside [0, 1]");
+      if (!known.count(c.cls))
+        fail(c.where, "colours: unknown class " + quote(c.cls) +
+                          suggestion(c.cls, std::vector<std::string>(known.begin(), known.end())));
     }
   }
 
