@@ -40,6 +40,7 @@ struct TranslateOptions {
   bool reduce = true;       // post-translation reductions (useless states, simulation, merging)
   bool shortcuts = true;    // direct constructions for Boolean / G p / F p / G F p / F G p
   bool wdba = true;         // minimal WDBA when no larger and checked equivalent
+  bool checked_merge = true;  // merge a state into one simulating it when checked against A_!f
   Construction construction = Construction::Smallest;
 };
 
