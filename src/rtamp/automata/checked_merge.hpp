@@ -21,8 +21,9 @@ namespace rtamp::automata {
 // `negation()` gives an automaton of the complement of L(a) over the same
 // atoms (or nullptr: nothing is merged); it is called only when a candidate
 // pair exists. Tries the pairs (q, r) with r simulating q but not the
-// converse, at most `attempts` failed checks; returns true when states were
+// converse, at most `attempts` failed checks (each is a product and an
+// emptiness check: the translator allows one); returns true when states were
 // merged.
-bool merge_checked(Automaton& a, const std::function<const Automaton*()>& negation, int attempts = 8);
+bool merge_checked(Automaton& a, const std::function<const Automaton*()>& negation, int attempts = 1);
 
 }  // namespace rtamp::automata

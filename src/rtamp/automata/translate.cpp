@@ -69,8 +69,10 @@ class Negation {
 };
 
 // Checked merges (checked_merge.hpp) then the reductions again if any.
-void merge_and_reduce(Automaton& a, Negation* neg) {
-  if (neg && merge_checked(a, [neg] { return neg->get(); })) reduce_all(a, false);
+bool merge_and_reduce(Automaton& a, Negation& neg) {
+  if (!merge_checked(a, [&neg] { return neg.get(); })) return false;
+  reduce_all(a, false);
+  return true;
 }
 
 // Letters of `a` (over a sorted subset of `atoms`) renumbered over `atoms`.
@@ -94,7 +96,8 @@ void remap_atoms(Automaton& a, const std::vector<std::string>& atoms) {
 
 // TGBA -> final automaton (reductions, degeneralisation) as described in
 // docs/translation.md.
-Automaton pipeline(Automaton a, const TranslateOptions& opt, Negation* neg) {
+// `tgba` receives the reduced TGBA the state-based result was made from.
+Automaton pipeline(Automaton a, const TranslateOptions& opt, Automaton* tgba) {
   if (!opt.state_based) {
     if (opt.reduce) {
       // Saturated marks sometimes let simulation merge more, sometimes
@@ -105,7 +108,6 @@ Automaton pipeline(Automaton a, const TranslateOptions& opt, Negation* neg) {
       if (sat.num_states() < a.num_states() ||
           (sat.num_states() == a.num_states() && sat.num_edges() < a.num_edges()))
         a = std::move(sat);
-      merge_and_reduce(a, neg);
     } else {
       remove_useless(a);
     }
@@ -119,12 +121,24 @@ Automaton pipeline(Automaton a, const TranslateOptions& opt, Negation* neg) {
     // state, which costs accepting copies in degeneralisation: reduce the
     // TGBA without saturation, degeneralise, reduce the BA.
     reduce_all(a, false);
-    merge_and_reduce(a, neg);
+    *tgba = a;
     a = degeneralize(a);
     reduce_all(a, false);
-    merge_and_reduce(a, neg);
   }
   return a;
+}
+
+// Checked merges on the result of the pipeline: on the TGBA (then
+// degeneralised again, kept if no larger) and on the result.
+void merge_checked_states(Automaton& a, Automaton tgba, const TranslateOptions& opt, Negation& neg) {
+  if (opt.state_based && merge_and_reduce(tgba, neg)) {
+    Automaton b = degeneralize(tgba);
+    reduce_all(b, false);
+    if (b.num_states() < a.num_states() ||
+        (b.num_states() == a.num_states() && b.num_edges() <= a.num_edges()))
+      a = std::move(b);
+  }
+  merge_and_reduce(a, neg);
 }
 
 // Replaces `a` (the automaton of `input`, over its atoms) by its minimal WDBA
@@ -160,8 +174,8 @@ Automaton translate(const ltl::Formula& input, const TranslateOptions& opt) {
   // simplified away; they stay so that letters mean the same to every caller).
   const std::vector<std::string> atoms = detail::atoms_of(input);
   Negation negation(input, opt);
-  Negation* neg = opt.checked_merge && opt.reduce ? &negation : nullptr;
-  Automaton a;
+  const bool merge = opt.reduce && opt.checked_merge;
+  Automaton a, tgba;
   bool done = false;
   if (opt.shortcuts) done = detail::try_shortcut(nnf, opt.state_based, a);
   if (!done) {
@@ -170,12 +184,14 @@ Automaton translate(const ltl::Formula& input, const TranslateOptions& opt) {
     if (opt.construction == C::MergedDestinations) {
       Automaton m = *detail::build_tgba_merged(v);
       remap_atoms(m, atoms);
-      a = pipeline(std::move(m), opt, neg);
+      a = pipeline(std::move(m), opt, &tgba);
+      if (merge) merge_checked_states(a, std::move(tgba), opt, negation);
     } else {
       Automaton go = detail::build_tgba(v);
       const std::size_t go_states = go.num_states();
       remap_atoms(go, atoms);
-      a = pipeline(std::move(go), opt, neg);
+      a = pipeline(std::move(go), opt, &tgba);
+      if (merge) merge_checked_states(a, std::move(tgba), opt, negation);
       if (opt.construction == C::Smallest && v.atoms.size() <= detail::kMaxMergedAtoms) {
         // The merged-destination construction is smaller on some formulas
         // (F r -> (!p U r): 3 states instead of 4), larger on others: keep
@@ -183,7 +199,9 @@ Automaton translate(const ltl::Formula& input, const TranslateOptions& opt) {
         // Gastin–Oddoux automaton (it is a partial subset construction).
         if (auto merged = detail::build_tgba_merged(v, 2 * go_states + 8)) {
           remap_atoms(*merged, atoms);
-          Automaton m = pipeline(std::move(*merged), opt, neg);
+          Automaton mt;
+          Automaton m = pipeline(std::move(*merged), opt, &mt);
+          if (merge) merge_checked_states(m, std::move(mt), opt, negation);
           if (m.num_states() < a.num_states() ||
               (m.num_states() == a.num_states() && m.num_edges() < a.num_edges()))
             a = std::move(m);
