@@ -129,6 +129,40 @@ TEST(LtlSimplify, Rules) {
   expect("!(a U b)", "!a R !b");
   expect("!G F a", "F G !a");
   expect("G(a -> F b)", "G(!a | F b)");
+  // An invariant of the left operand inside an until's goal is a weak until.
+  expect("a U (b | G a)", "a W b");
+  expect("a W (b | G a)", "a W b");
+  expect("a R (b & F a)", "a M b");
+  expect("a M (b & F a)", "a M b");
+  expect("(a | X c) U (b | G(a | X c))", "(a | X c) W b");
+  expect("a U G a", "G a");
+}
+
+// The absorption rules above, checked on the lasso oracle with operands that
+// are not atoms (the rule holds for any a, b).
+TEST(LtlSimplify, AbsorbedInvariantSound) {
+  std::mt19937_64 rng(20261205);
+  RandomFormulaOptions opt;
+  opt.atoms = {"a", "b", "c"};
+  int rewritten = 0;
+  for (int k = 0; k < 600 / kScale; ++k) {
+    opt.size = 1 + uniform(rng, 0, 6);
+    const Formula a = random_formula(rng, opt);
+    const Formula b = random_formula(rng, opt);
+    const Formula cases[] = {
+        Formula::U(a, Formula::Or({b, Formula::G(a)})), Formula::W(a, Formula::Or({b, Formula::G(a)})),
+        Formula::R(a, Formula::And({b, Formula::F(a)})), Formula::M(a, Formula::And({b, Formula::F(a)}))};
+    for (const Formula& f : cases) {
+      const Formula s = simplify(f);
+      rewritten += s.size() < f.size();
+      for (int t = 0; t < 8; ++t) {
+        const LassoWord w = random_lasso(rng, opt.atoms, 3, 4);
+        ASSERT_EQ(holds(s, w), holds(f, w))
+            << to_string(f) << " -> " << to_string(s) << " on " << to_string(w);
+      }
+    }
+  }
+  EXPECT_GT(rewritten, 0);
 }
 
 TEST(LtlSimplify, Idempotent) {

@@ -62,6 +62,15 @@ Relation compute_simulation(const Automaton& a, std::uint32_t pinned = UINT32_MA
 
 }  // namespace
 
+std::vector<std::vector<bool>> direct_simulation(const Automaton& a) {
+  const std::uint32_t n = a.num_states();
+  const Relation sim = compute_simulation(a);
+  std::vector<std::vector<bool>> out(n, std::vector<bool>(n));
+  for (std::uint32_t q = 0; q < n; ++q)
+    for (std::uint32_t r = 0; r < n; ++r) out[q][r] = sim.get(q, r);
+  return out;
+}
+
 bool reduce_cosimulation(Automaton& a) {
   const std::uint32_t n = a.num_states();
   if (n < 2 || n > kMaxSimulationStates || std::uint64_t{n} * a.num_edges() > kMaxSimulationWork) return false;

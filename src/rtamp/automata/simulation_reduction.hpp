@@ -20,12 +20,17 @@
 // computation is quadratic in states; this keeps huge automata translatable).
 #pragma once
 
+#include <vector>
+
 #include "rtamp/automata/automaton.hpp"
 
 namespace rtamp::automata {
 
 constexpr std::uint32_t kMaxSimulationStates = 2048;
 constexpr std::uint64_t kMaxSimulationWork = 4'000'000;
+
+// The relation itself: out[q][r] iff r directly simulates q (q <= r).
+std::vector<std::vector<bool>> direct_simulation(const Automaton& a);
 
 // One round of quotient + pruning; returns true when the automaton changed.
 bool reduce_direct_simulation(Automaton& a);

@@ -1,6 +1,10 @@
 #include "rtamp/automata/translate.hpp"
 
+#include <optional>
+#include <string>
+#include <vector>
 
+#include "rtamp/automata/checked_merge.hpp"
 #include "rtamp/automata/degeneralize.hpp"
 #include "rtamp/automata/emptiness.hpp"
 #include "rtamp/automata/gba.hpp"
@@ -36,9 +40,64 @@ void reduce_all(Automaton& a, bool saturate) {
   }
 }
 
+// The automaton of !input (a TGBA over the atoms of input), built on first
+// use; nullptr when !input is past the resource bounds.
+class Negation {
+ public:
+  Negation(const Formula& input, const TranslateOptions& opt) : input_(input), opt_(opt) {}
+  const Automaton* get() {
+    if (!tried_) {
+      tried_ = true;
+      TranslateOptions neg = opt_;
+      neg.wdba = false;
+      neg.checked_merge = false;
+      neg.state_based = false;
+      neg.construction = Construction::GastinOddoux;
+      try {
+        automaton_ = translate(Formula::Not(input_), neg);
+      } catch (const Error&) {
+      }
+    }
+    return automaton_ ? &*automaton_ : nullptr;
+  }
+
+ private:
+  Formula input_;
+  TranslateOptions opt_;
+  bool tried_ = false;
+  std::optional<Automaton> automaton_;
+};
+
+// Checked merges (checked_merge.hpp) then the reductions again if any.
+bool merge_and_reduce(Automaton& a, Negation& neg) {
+  if (!merge_checked(a, [&neg] { return neg.get(); })) return false;
+  reduce_all(a, false);
+  return true;
+}
+
+// Letters of `a` (over a sorted subset of `atoms`) renumbered over `atoms`.
+void remap_atoms(Automaton& a, const std::vector<std::string>& atoms) {
+  if (a.atoms == atoms) return;
+  std::vector<std::uint32_t> map(a.atoms.size());
+  for (std::size_t i = 0, j = 0; i < a.atoms.size(); ++i) {
+    while (atoms[j] != a.atoms[i]) ++j;
+    map[i] = static_cast<std::uint32_t>(j);
+  }
+  auto remap = [&](Letter l) {
+    Letter r = 0;
+    for (std::size_t i = 0; i < map.size(); ++i)
+      if ((l >> i) & 1u) r |= Letter{1} << map[i];
+    return r;
+  };
+  for (auto& out : a.edges)
+    for (Edge& e : out) e.guard = Cube{remap(e.guard.pos), remap(e.guard.neg)};
+  a.atoms = atoms;
+}
+
 // TGBA -> final automaton (reductions, degeneralisation) as described in
 // docs/translation.md.
-Automaton pipeline(Automaton a, const TranslateOptions& opt) {
+// `tgba` receives the reduced TGBA the state-based result was made from.
+Automaton pipeline(Automaton a, const TranslateOptions& opt, Automaton* tgba) {
   if (!opt.state_based) {
     if (opt.reduce) {
       // Saturated marks sometimes let simulation merge more, sometimes
@@ -62,10 +121,24 @@ Automaton pipeline(Automaton a, const TranslateOptions& opt) {
     // state, which costs accepting copies in degeneralisation: reduce the
     // TGBA without saturation, degeneralise, reduce the BA.
     reduce_all(a, false);
+    *tgba = a;
     a = degeneralize(a);
     reduce_all(a, false);
   }
   return a;
+}
+
+// Checked merges on the result of the pipeline: on the TGBA (then
+// degeneralised again, kept if no larger) and on the result.
+void merge_checked_states(Automaton& a, Automaton tgba, const TranslateOptions& opt, Negation& neg) {
+  if (opt.state_based && merge_and_reduce(tgba, neg)) {
+    Automaton b = degeneralize(tgba);
+    reduce_all(b, false);
+    if (b.num_states() < a.num_states() ||
+        (b.num_states() == a.num_states() && b.num_edges() <= a.num_edges()))
+      a = std::move(b);
+  }
+  merge_and_reduce(a, neg);
 }
 
 // Replaces `a` (the automaton of `input`, over its atoms) by its minimal WDBA
@@ -73,7 +146,7 @@ Automaton pipeline(Automaton a, const TranslateOptions& opt) {
 // emptiness of a × complement(W); L(W) ⊆ L(input) holds when `obligation`
 // (the formula is a syntactic obligation: Dax et al.'s theorem) and is
 // checked otherwise by emptiness of W × A_!input.
-void try_wdba(Automaton& a, const Formula& input, bool obligation, const TranslateOptions& opt) {
+void try_wdba(Automaton& a, bool obligation, const TranslateOptions& opt, Negation& neg) {
   const std::optional<Automaton> w = minimize_wdba(a, 8 * std::size_t{a.num_states()} + 32);
   if (!w) return;
   Automaton small = *w;
@@ -82,15 +155,8 @@ void try_wdba(Automaton& a, const Formula& input, bool obligation, const Transla
   if (small.num_states() > a.num_states() || (small.num_states() == a.num_states() && is_deterministic(a))) return;
   if (!is_empty(product(a, complement_dba(*w)))) return;
   if (!obligation) {
-    TranslateOptions neg = opt;
-    neg.wdba = false;
-    neg.state_based = false;
-    neg.construction = Construction::GastinOddoux;
-    try {
-      if (!is_empty(product(small, translate(Formula::Not(input), neg)))) return;
-    } catch (const Error&) {
-      return;  // !input past the resource bounds: keep `a`
-    }
+    const Automaton* n = neg.get();
+    if (!n || !is_empty(product(small, *n))) return;  // no automaton of !input: keep `a`
   }
   if (!opt.state_based) {
     small.state_based = false;
@@ -104,25 +170,38 @@ void try_wdba(Automaton& a, const Formula& input, bool obligation, const Transla
 Automaton translate(const ltl::Formula& input, const TranslateOptions& opt) {
   const Formula f = opt.simplify ? ltl::simplify(input) : input;
   const Formula nnf = detail::to_nnf(f);
-  Automaton a;
+  // Atoms: every atom of the input formula, sorted (some may have been
+  // simplified away; they stay so that letters mean the same to every caller).
+  const std::vector<std::string> atoms = detail::atoms_of(input);
+  Negation negation(input, opt);
+  const bool merge = opt.reduce && opt.checked_merge;
+  Automaton a, tgba;
   bool done = false;
   if (opt.shortcuts) done = detail::try_shortcut(nnf, opt.state_based, a);
   if (!done) {
     detail::Vwaa v = detail::build_vwaa(nnf);
     using C = Construction;
     if (opt.construction == C::MergedDestinations) {
-      a = pipeline(*detail::build_tgba_merged(v), opt);
+      Automaton m = *detail::build_tgba_merged(v);
+      remap_atoms(m, atoms);
+      a = pipeline(std::move(m), opt, &tgba);
+      if (merge) merge_checked_states(a, std::move(tgba), opt, negation);
     } else {
       Automaton go = detail::build_tgba(v);
       const std::size_t go_states = go.num_states();
-      a = pipeline(std::move(go), opt);
+      remap_atoms(go, atoms);
+      a = pipeline(std::move(go), opt, &tgba);
+      if (merge) merge_checked_states(a, std::move(tgba), opt, negation);
       if (opt.construction == C::Smallest && v.atoms.size() <= detail::kMaxMergedAtoms) {
         // The merged-destination construction is smaller on some formulas
         // (F r -> (!p U r): 3 states instead of 4), larger on others: keep
         // the smaller result. It is abandoned when it grows well beyond the
         // Gastin–Oddoux automaton (it is a partial subset construction).
         if (auto merged = detail::build_tgba_merged(v, 2 * go_states + 8)) {
-          Automaton m = pipeline(std::move(*merged), opt);
+          remap_atoms(*merged, atoms);
+          Automaton mt;
+          Automaton m = pipeline(std::move(*merged), opt, &mt);
+          if (merge) merge_checked_states(m, std::move(mt), opt, negation);
           if (m.num_states() < a.num_states() ||
               (m.num_states() == a.num_states() && m.num_edges() < a.num_edges()))
             a = std::move(m);
@@ -130,28 +209,9 @@ Automaton translate(const ltl::Formula& input, const TranslateOptions& opt) {
       }
     }
   }
-  // Atoms: every atom of the input formula, sorted (some may have been
-  // simplified away; they stay so that letters mean the same to every caller).
-  const std::vector<std::string> atoms = detail::atoms_of(input);
-  if (a.atoms != atoms) {
-    // Remap letters: the automaton's atoms are a subset of `atoms`, both sorted.
-    std::vector<std::uint32_t> map(a.atoms.size());
-    for (std::size_t i = 0, j = 0; i < a.atoms.size(); ++i) {
-      while (atoms[j] != a.atoms[i]) ++j;
-      map[i] = static_cast<std::uint32_t>(j);
-    }
-    auto remap = [&](Letter l) {
-      Letter r = 0;
-      for (std::size_t i = 0; i < map.size(); ++i)
-        if ((l >> i) & 1u) r |= Letter{1} << map[i];
-      return r;
-    };
-    for (auto& out : a.edges)
-      for (Edge& e : out) e.guard = Cube{remap(e.guard.pos), remap(e.guard.neg)};
-    a.atoms = atoms;
-  }
+  remap_atoms(a, atoms);
   if (a.state_based) a.num_sets = 1;
-  if (opt.wdba && !done) try_wdba(a, input, ltl::is_syntactic_obligation(nnf), opt);
+  if (opt.wdba && !done) try_wdba(a, ltl::is_syntactic_obligation(nnf), opt, negation);
   a.name = ltl::to_string(input);
   return a;
 }

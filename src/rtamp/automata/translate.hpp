@@ -9,7 +9,9 @@
 // (useless states, SCC-based acceptance canonicalisation, direct-simulation
 // quotient with little-brother pruning, cosimulation, parallel-edge merging)
 // -> optionally SCC-aware degeneralisation to a state-based Büchi automaton,
-// reduced again -> the minimal weak deterministic automaton (wdba.hpp) instead
+// reduced again -> checked merges (checked_merge.hpp: a state merged into one
+// simulating it when the result × A_!f is empty; on the TGBA, degeneralised
+// again, and on the BA) -> the minimal weak deterministic automaton (wdba.hpp) instead
 // when it is no larger and its language is checked equal (products with the
 // complement of the WDBA and with the automaton of !f are empty).
 // Shortcuts build common shapes (Boolean, G p, F p, G F p, F G p) directly.
@@ -40,6 +42,7 @@ struct TranslateOptions {
   bool reduce = true;       // post-translation reductions (useless states, simulation, merging)
   bool shortcuts = true;    // direct constructions for Boolean / G p / F p / G F p / F G p
   bool wdba = true;         // minimal WDBA when no larger and checked equivalent
+  bool checked_merge = true;  // merge a state into one simulating it when checked against A_!f
   Construction construction = Construction::Smallest;
 };
 

@@ -219,12 +219,26 @@ class Simplifier {
     return Formula::G(a);
   }
 
+  // `f` without the operand `x` of its top-level `op` (And/Or): nullopt when
+  // x is not an operand; the neutral element when f == x.
+  std::optional<Formula> without(const Formula& f, Op op, const Formula& x) {
+    if (f == x) return op == Op::Or ? Formula::ff() : Formula::tt();
+    if (!f.is(op)) return std::nullopt;
+    const auto& kids = f.children();
+    if (std::find(kids.begin(), kids.end(), x) == kids.end()) return std::nullopt;
+    std::vector<Formula> rest;
+    for (const Formula& c : kids)
+      if (c != x) rest.push_back(c);
+    return op == Op::Or ? mkOr(std::move(rest)) : mkAnd(std::move(rest));
+  }
+
   Formula mkU(const Formula& a, const Formula& b) {
     if (b.is_constant() || a.is(Op::False) || a == b) return b;
     if (a.is(Op::True)) return mkF(b);
     if (b.is_eventual()) return b;
     if (a.is(Op::Next) && b.is(Op::Next)) return mkX(mkU(a[0], b[0]));
     if (implies_budget(a, b)) return b;
+    if (auto rest = without(b, Op::Or, mkG(a))) return mkW(a, *rest);  // a U (b | G a) = a W b
     return Formula::U(a, b);
   }
 
@@ -234,6 +248,7 @@ class Simplifier {
     if (b.is_universal()) return b;
     if (a.is(Op::Next) && b.is(Op::Next)) return mkX(mkR(a[0], b[0]));
     if (implies_budget(b, a)) return b;
+    if (auto rest = without(b, Op::And, mkF(a))) return mkM(a, *rest);  // a R (b & F a) = a M b
     return Formula::R(a, b);
   }
 
@@ -243,6 +258,7 @@ class Simplifier {
     if (a.is(Op::False) || a == b) return b;
     if (a.is(Op::Next) && b.is(Op::Next)) return mkX(mkW(a[0], b[0]));
     if (implies_budget(a, b)) return b;
+    if (auto rest = without(b, Op::Or, mkG(a))) return mkW(a, *rest);  // a W (b | G a) = a W b
     return Formula::W(a, b);
   }
 
@@ -252,6 +268,7 @@ class Simplifier {
     if (a.is(Op::True) || a == b) return b;
     if (a.is(Op::Next) && b.is(Op::Next)) return mkX(mkM(a[0], b[0]));
     if (implies_budget(b, a)) return b;
+    if (auto rest = without(b, Op::And, mkF(a))) return mkM(a, *rest);  // a M (b & F a) = a M b
     return Formula::M(a, b);
   }
 
