@@ -12,6 +12,7 @@
 #include <utility>
 #include <vector>
 
+#include "rtamp/plan/accepting_distance.hpp"
 #include "rtamp/plan/experience.hpp"
 #include "rtamp/plan/heuristic.hpp"
 #include "rtamp/plan/plan.hpp"
@@ -26,6 +27,8 @@ class CycleSearch {
   // Starts a query on `g` with experience `x` and the cycles' heuristic `h`
   // (null: none); the budget is the query's.
   void begin(ProductGraph& g, Experience& x, Heuristic* h, Budget& budget);
+  // With a heuristic, also bound the way back by `d` once it is ready (null: not).
+  void use(const AcceptingDistance* d) { dist_ = d; }
   // The cheapest such cycle through n below `bound`, or kNoPathCost (none below
   // it, or the budget ran out). When found, its path is in the experience.
   PathCost cheapest(NodeId n, PathCost bound, SearchStats& stats);
@@ -45,6 +48,7 @@ class CycleSearch {
   ProductGraph* g_ = nullptr;
   Experience* x_ = nullptr;
   Heuristic* h_ = nullptr;
+  const AcceptingDistance* dist_ = nullptr;
   Budget* budget_ = nullptr;
   SearchSpace space_;
   std::vector<std::uint32_t> path_;

@@ -1,12 +1,16 @@
 #include "rtamp/plan/lasso_search.hpp"
 
 #include <algorithm>
+#include <limits>
 #include <stdexcept>
 
 namespace rtamp::plan {
 
 namespace {
 bool is_move(const ProductEdge& e) { return e.action != task::Action::stay().packed(); }
+// maybe_bound_cycles: once the expansions are this many per graph node
+// (deterministic), and the closed graph at most that many times as big.
+constexpr std::size_t kWorkPerNode = 8;
 }  // namespace
 
 void LassoSearch::initialize(ProductGraph& g, Experience& x, const std::vector<NodeId>& starts, Heuristic& h,
@@ -19,6 +23,9 @@ void LassoSearch::initialize(ProductGraph& g, Experience& x, const std::vector<N
     return g_->memory_bytes() + x_->memory_bytes() + x_->costs().bytes() + memory_bytes();
   });
   cycles_.begin(g, x, config.cycle_heuristic ? &h : nullptr, budget_);
+  dist_.clear();
+  dist_tried_ = false;
+  join_searches_ = 0;
   status_ = SearchStatus::InProgress;
   best_ = kInf;
   best_m_ = kManyMoves;
@@ -104,6 +111,29 @@ void LassoSearch::expand(NodeId n, SearchStats& stats) {
 
 SearchStatus LassoSearch::stop(SearchStatus s) { return status_ = s; }
 
+void LassoSearch::maybe_bound_cycles(SearchStats& stats) {
+  ++join_searches_;
+  if (dist_tried_ || !config_.cycle_heuristic || join_searches_ < config_.accepting_bounds_after) return;
+  const std::size_t size = g_->size();
+  const bool at_once = config_.accepting_bounds_after == 0;
+  if (!at_once && stats.expanded < kWorkPerNode * size) return;
+  dist_tried_ = true;
+  // Its work stays within a multiple of what the searches already spent.
+  const std::size_t cap = at_once ? std::numeric_limits<std::size_t>::max() : kWorkPerNode * size;
+  if (dist_.build(*g_, cap, budget_, stats)) cycles_.use(&dist_);
+}
+
+bool LassoSearch::rekeyed(const SearchItem& it) {
+  if (!dist_.ready()) return false;
+  const double key = it.g + dist_.cycle_bound(it.n);
+  if (!(key > it.f + kCostEps)) return false;
+  if (key < kInf) {
+    cand_.push_back({key, it.g, it.n, it.m});
+    std::push_heap(cand_.begin(), cand_.end(), after);
+  }
+  return true;
+}
+
 SearchStatus LassoSearch::early_candidate(const SearchItem& it, SearchStats& stats) {
   const double lower = it.f - it.g;  // the key's bound on the candidate's cycle
   if (!(lower > 0)) return try_cycle(it.n, stats) ? status_ : stop(SearchStatus::Stopped);  // unbounded
@@ -136,9 +166,13 @@ SearchStatus LassoSearch::step(SearchStats& stats) {
     std::pop_heap(cand_.begin(), cand_.end(), after);
     const SearchItem it = cand_.back();
     cand_.pop_back();
+    if (rekeyed(it)) return status_;
     if (best_ >= kInf && !S.heap.empty()) return early_candidate(it, stats);
     if (it.f > best_ + kCostEps) return stop(SearchStatus::Finished);
     if (!lex_less(it.f, it.m, best_, best_m_)) return status_;
+    maybe_bound_cycles(stats);
+    if (budget_.reason() != StopReason::None) return stop(SearchStatus::Stopped);
+    if (rekeyed(it)) return status_;
     return try_cycle(it.n, stats) ? status_ : stop(SearchStatus::Stopped);
   }
   if (S.heap.empty()) return stop(SearchStatus::Finished);
@@ -169,7 +203,8 @@ SearchStatus LassoSearch::step(SearchStats& stats) {
     if (known.exact) {
       if (!try_cycle(n, stats)) return stop(SearchStatus::Stopped);  // no search: the table has it
     } else {
-      const double lb = std::max({known.lower, S.h[n], config_.cycle_heuristic ? h_->cycle_bound(g, n) : 0.0});
+      const double lb = std::max({known.lower, S.h[n], config_.cycle_heuristic ? h_->cycle_bound(g, n) : 0.0,
+                                  dist_.ready() ? dist_.cycle_bound(n) : 0.0});
       const double key = S.g[n] + lb;
       if (key < kInf) {
         cand_.push_back({key, S.g[n], n, S.m[n]});
