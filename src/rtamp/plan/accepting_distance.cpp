@@ -13,6 +13,7 @@ bool AcceptingDistance::build(ProductGraph& g, std::size_t max_nodes, Budget& bu
     if (g.expanded(v)) continue;
     g.expand(v);
     ++stats.successor_generations;
+    ++stats.expanded;
     if (g.size() > max_nodes || budget.exhausted(g, stats.expanded)) return false;
   }
   const std::size_t n = g.size();

@@ -8,9 +8,9 @@ namespace rtamp::plan {
 
 namespace {
 bool is_move(const ProductEdge& e) { return e.action != task::Action::stay().packed(); }
-// maybe_bound_cycles: once the expansions are this many per graph node
-// (deterministic), and the closed graph at most that many times as big.
-constexpr std::size_t kWorkPerNode = 8;
+// maybe_bound_cycles: once the query has expanded as many nodes as the graph
+// holds (deterministic), if the closed graph is at most this many times as big.
+constexpr std::size_t kGrowth = 8;
 }  // namespace
 
 void LassoSearch::initialize(ProductGraph& g, Experience& x, const std::vector<NodeId>& starts, Heuristic& h,
@@ -111,15 +111,16 @@ void LassoSearch::expand(NodeId n, SearchStats& stats) {
 
 SearchStatus LassoSearch::stop(SearchStatus s) { return status_ = s; }
 
-void LassoSearch::maybe_bound_cycles(SearchStats& stats) {
+void LassoSearch::maybe_bound_cycles(NodeId n, SearchStats& stats) {
   ++join_searches_;
   if (dist_tried_ || !config_.cycle_heuristic || join_searches_ < config_.accepting_bounds_after) return;
+  if (h_->cycle_bound(*g_, n) > 0) return;  // the chain bound bounds this cycle already
   const std::size_t size = g_->size();
   const bool at_once = config_.accepting_bounds_after == 0;
-  if (!at_once && stats.expanded < kWorkPerNode * size) return;
+  if (!at_once && stats.expanded < size) return;
   dist_tried_ = true;
-  // Its work stays within a multiple of what the searches already spent.
-  const std::size_t cap = at_once ? std::numeric_limits<std::size_t>::max() : kWorkPerNode * size;
+  // Closing the graph may multiply it by at most kGrowth.
+  const std::size_t cap = at_once ? std::numeric_limits<std::size_t>::max() : kGrowth * size;
   if (dist_.build(*g_, cap, budget_, stats)) cycles_.use(&dist_);
 }
 
@@ -170,7 +171,7 @@ SearchStatus LassoSearch::step(SearchStats& stats) {
     if (best_ >= kInf && !S.heap.empty()) return early_candidate(it, stats);
     if (it.f > best_ + kCostEps) return stop(SearchStatus::Finished);
     if (!lex_less(it.f, it.m, best_, best_m_)) return status_;
-    maybe_bound_cycles(stats);
+    maybe_bound_cycles(it.n, stats);
     if (budget_.reason() != StopReason::None) return stop(SearchStatus::Stopped);
     if (rekeyed(it)) return status_;
     return try_cycle(it.n, stats) ? status_ : stop(SearchStatus::Stopped);

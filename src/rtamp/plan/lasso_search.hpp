@@ -32,9 +32,9 @@ struct LassoConfig {
   bool cycle_heuristic = true;  // cycle searches use state_distance_bound and Heuristic::walk_bound (else 0)
   bool learn = false;           // use and store learned bounds and solved paths in the experience
   // Join candidates' cycle searches before the accepting-set bounds are
-  // built (once the searches have also cost a few expansions per graph
-  // node); 0: at the first, whatever they cost. Only with cycle_heuristic.
-  std::uint32_t accepting_bounds_after = 16;
+  // built (once the query has also expanded as many nodes as the graph
+  // holds); 0: at the first, whatever they cost. Only with cycle_heuristic.
+  std::uint32_t accepting_bounds_after = 1;
 };
 
 struct LassoResult {
@@ -82,10 +82,11 @@ class LassoSearch {
   // a cycle search bounded by twice its cycle's lower bound, and if none is
   // found below, the candidate waits again keyed by that bound.
   SearchStatus early_candidate(const SearchItem& it, SearchStats& stats);
-  // Where candidates' cycles have no bound (the chain bound's), once the
-  // searches have cost a few times the graph: close the graph and bound
+  // Before candidate n's search: where the heuristic bounds its cycle by 0
+  // (no chain bound), once the query has expanded as many nodes as the graph
+  // holds, close the graph (at most kGrowth times its size) and bound
   // cycles through the accepting set (plan/accepting_distance.hpp).
-  void maybe_bound_cycles(SearchStats& stats);
+  void maybe_bound_cycles(NodeId n, SearchStats& stats);
   // With those bounds, a candidate whose key was too low waits again, keyed
   // by them: true if `it` went back into the heap (or was dropped).
   bool rekeyed(const SearchItem& it);
