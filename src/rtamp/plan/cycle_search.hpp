@@ -35,6 +35,9 @@ class CycleSearch {
   // Classifies what is reachable from the first node whose unbounded search
   // found nothing without moving anything (its classification was put off).
   void classify_pending(SearchStats& stats);
+  // The last search opened a path that moves something (else the heuristic
+  // ruled out every way back that does, e.g. to a node with the hand at home).
+  bool moved() const { return moved_; }
   std::size_t bytes() const { return space_.bytes(); }
 
  private:

@@ -143,6 +143,9 @@ SearchStatus LassoSearch::early_candidate(const SearchItem& it, SearchStats& sta
   if (best_ >= kInf) {  // none below the bound (the table keeps it): wait again, keyed by it
     cand_.push_back({it.g + bound, it.g, it.n, it.m});
     std::push_heap(cand_.begin(), cand_.end(), after);
+    // A search that could not move anything (the heuristic ruled out every
+    // way back, e.g. to the hand at home) says nothing of the others.
+    if (!cycles_.moved()) return status_;
     // Perhaps there is no lasso: no more searches before one, and what lies on
     // no accepting cycle is found at once.
     early_ = Early::Off;
