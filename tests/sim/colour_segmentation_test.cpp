@@ -157,6 +157,28 @@ TEST(ColourSegmentation, ABadPaletteOrOptionIsRefused) {
   EXPECT_THROW(ColourSegmenter({{"red", {1, 0, 0}, true}}, {.min_blob_pixels = 0}), Error);
 }
 
+TEST(ColourSegmentation, WashedOutPixelsAreNothing) {
+  // A pale blue surface clipped at 255 reads (228, 255, 255): the hue of teal, but a
+  // chroma of a tenth of its brightness. The saturation floor drops it; without it, teal.
+  const std::vector<KnownColour> palette{{"cup", {0.1, 0.7, 0.65}, true}};
+  auto patch = [](std::uint8_t r, std::uint8_t g, std::uint8_t b) {  // 8x8 pixels of one colour
+    std::vector<std::uint8_t> v;
+    for (int i = 0; i < 64; ++i) v.insert(v.end(), {r, g, b});
+    return v;
+  };
+  const auto pale = patch(228, 255, 255), lit_teal = patch(30, 200, 185);
+  ColourSegmentation out;
+  const ColourSegmenter floor(palette);
+  floor.segment(pale.data(), 8, 8, out);
+  EXPECT_EQ(out.label[27], -1);
+  EXPECT_TRUE(out.blobs.empty());
+  floor.segment(lit_teal.data(), 8, 8, out);
+  EXPECT_EQ(out.label[27], 0);
+  const ColourSegmenter none(palette, {.min_saturation = 0});
+  none.segment(pale.data(), 8, 8, out);
+  EXPECT_EQ(out.label[27], 0);
+}
+
 TEST(ColourSegmentation, BlobsSplitThingsApartAndDropSpecks) {
   // A synthetic image: two red squares apart (one shaded darker), one red speck, a blue
   // square; grey elsewhere.

@@ -175,33 +175,33 @@ Automaton translate(const ltl::Formula& input, const TranslateOptions& opt) {
   const std::vector<std::string> atoms = detail::atoms_of(input);
   Negation negation(input, opt);
   const bool merge = opt.reduce && opt.checked_merge;
-  Automaton a, tgba;
+  // One construction's TGBA, over `atoms`, through the pipeline and the checked merges.
+  auto finish = [&](Automaton t) {
+    remap_atoms(t, atoms);
+    Automaton reduced_tgba;
+    Automaton r = pipeline(std::move(t), opt, &reduced_tgba);
+    if (merge) merge_checked_states(r, std::move(reduced_tgba), opt, negation);
+    return r;
+  };
+  Automaton a;
   bool done = false;
   if (opt.shortcuts) done = detail::try_shortcut(nnf, opt.state_based, a);
   if (!done) {
     detail::Vwaa v = detail::build_vwaa(nnf);
     using C = Construction;
     if (opt.construction == C::MergedDestinations) {
-      Automaton m = *detail::build_tgba_merged(v);
-      remap_atoms(m, atoms);
-      a = pipeline(std::move(m), opt, &tgba);
-      if (merge) merge_checked_states(a, std::move(tgba), opt, negation);
+      a = finish(*detail::build_tgba_merged(v));
     } else {
       Automaton go = detail::build_tgba(v);
       const std::size_t go_states = go.num_states();
-      remap_atoms(go, atoms);
-      a = pipeline(std::move(go), opt, &tgba);
-      if (merge) merge_checked_states(a, std::move(tgba), opt, negation);
+      a = finish(std::move(go));
       if (opt.construction == C::Smallest && v.atoms.size() <= detail::kMaxMergedAtoms) {
         // The merged-destination construction is smaller on some formulas
         // (F r -> (!p U r): 3 states instead of 4), larger on others: keep
         // the smaller result. It is abandoned when it grows well beyond the
         // Gastin–Oddoux automaton (it is a partial subset construction).
         if (auto merged = detail::build_tgba_merged(v, 2 * go_states + 8)) {
-          remap_atoms(*merged, atoms);
-          Automaton mt;
-          Automaton m = pipeline(std::move(*merged), opt, &mt);
-          if (merge) merge_checked_states(m, std::move(mt), opt, negation);
+          Automaton m = finish(std::move(*merged));
           if (m.num_states() < a.num_states() ||
               (m.num_states() == a.num_states() && m.num_edges() < a.num_edges()))
             a = std::move(m);

@@ -11,7 +11,6 @@ namespace rtamp::sim {
 
 CameraDetector::CameraDetector(const world::Scenario& s, world::DepthNoise noise, CameraDetectorOptions options)
     : segmenter_(scene_colours(s), options.segmentation), noise_(noise), options_(options) {
-  check_scene_colours(s, options.segmentation);
   for (const KnownColour& c : segmenter_.colours()) {
     ClassInfo info;
     if (c.thing) {

@@ -26,7 +26,9 @@ struct CameraDetectorOptions {
 
 class CameraDetector {
  public:
-  // `noise`: the camera's depth noise (its allowance when finding top faces).
+  // `noise`: the camera's depth noise (its allowance when finding top faces). Classes the
+  // segmentation cannot tell apart are the caller's to refuse first, with their location
+  // (check_scene_colours; Perception does, before any rendering context exists).
   CameraDetector(const world::Scenario& s, world::DepthNoise noise, CameraDetectorOptions options = {});
   void detect(const CameraImage& image, std::vector<world::Detection>& out);
   const ColourSegmenter& segmenter() const { return segmenter_; }

@@ -1,8 +1,8 @@
 #include "rtamp/sim/colour_segmentation.hpp"
 
 #include <algorithm>
-#include <cstdio>
 #include <cmath>
+#include <cstdio>
 #include <numbers>
 #include <set>
 
@@ -18,11 +18,23 @@ namespace {
 constexpr int kBits = 6;
 constexpr int kLevels = 1 << kBits;
 constexpr int kShift = 8 - kBits;
+constexpr double kMinThingChroma = 0.1;  // a thing colour's channels must differ by this much
 
 std::array<double, 3> unit(const std::array<double, 3>& c) {
   const double n = std::sqrt(c[0] * c[0] + c[1] * c[1] + c[2] * c[2]);
   if (n <= 0) return {0, 0, 0};
   return {c[0] / n, c[1] / n, c[2] / n};
+}
+
+// The chroma vector, the colour minus its smallest channel: its direction is the hue
+// (shading scales it, white light leaves it), its largest entry the chroma.
+double chroma_span(const std::array<double, 3>& c) {
+  return std::max({c[0], c[1], c[2]}) - std::min({c[0], c[1], c[2]});
+}
+
+std::array<double, 3> hue_direction(const std::array<double, 3>& c) {
+  const double lo = std::min({c[0], c[1], c[2]});
+  return unit({c[0] - lo, c[1] - lo, c[2] - lo});
 }
 
 }  // namespace
@@ -42,9 +54,8 @@ ColourSegmenter::ColourSegmenter(std::vector<KnownColour> colours, ColourSegment
   // smallest channel, keeps the albedo's direction (its hue) whatever a and b are.
   std::vector<std::array<double, 3>> dirs;
   for (const KnownColour& k : colours_) {
-    const double lo = std::min({k.rgb[0], k.rgb[1], k.rgb[2]});
-    dirs.push_back(unit({k.rgb[0] - lo, k.rgb[1] - lo, k.rgb[2] - lo}));
-    if (k.thing && std::max({k.rgb[0], k.rgb[1], k.rgb[2]}) - lo < 0.1)
+    dirs.push_back(hue_direction(k.rgb));
+    if (k.thing && chroma_span(k.rgb) < kMinThingChroma)
       throw Error("colour segmentation: the colour of '" + k.label + "' is too grey to find by its hue");
   }
   const double min_cos = std::cos(options_.max_angle_deg * std::numbers::pi / 180);
@@ -55,10 +66,9 @@ ColourSegmenter::ColourSegmenter(std::vector<KnownColour> colours, ColourSegment
         // The centre of the bin, in 8-bit units.
         const double half = 0.5 * (1 << kShift);
         const std::array<double, 3> c{(r << kShift) + half, (g << kShift) + half, (b << kShift) + half};
-        const double lo = std::min({c[0], c[1], c[2]});
-        const double hi = std::max({c[0], c[1], c[2]});
-        if (hi - lo < options_.min_chroma || hi - lo < options_.min_saturation * hi) continue;
-        const auto u = unit({c[0] - lo, c[1] - lo, c[2] - lo});
+        const double span = chroma_span(c), hi = std::max({c[0], c[1], c[2]});
+        if (span < options_.min_chroma || span < options_.min_saturation * hi) continue;
+        const auto u = hue_direction(c);
         double best = min_cos;
         int label = -1;
         for (std::size_t k = 0; k < dirs.size(); ++k) {
@@ -117,15 +127,6 @@ void ColourSegmenter::segment(const std::uint8_t* rgb, int width, int height, Co
 
 namespace {
 
-double chroma_span(const std::array<double, 3>& c) {
-  return std::max({c[0], c[1], c[2]}) - std::min({c[0], c[1], c[2]});
-}
-
-std::array<double, 3> hue_direction(const std::array<double, 3>& c) {
-  const double lo = std::min({c[0], c[1], c[2]});
-  return unit({c[0] - lo, c[1] - lo, c[2] - lo});
-}
-
 SourceLocation where_class(const world::Scenario& s, const std::string& cls) {
   if (const auto* c = s.find_colour(cls)) return c->where;
   for (const auto& o : s.objects)
@@ -152,7 +153,7 @@ void check_scene_colours(const world::Scenario& s, const ColourSegmentationOptio
   const double needed = 2 * options.max_angle_deg;
   for (std::size_t i = 0; i < things.size(); ++i) {
     const KnownColour& a = things[i];
-    if (chroma_span(a.rgb) < 0.1)
+    if (chroma_span(a.rgb) < kMinThingChroma)
       throw Error("class '" + a.label + "': its colour " + colour_text(a.rgb) +
                       " is too grey for the camera to find by its hue (channels differ by less than 0.1)",
                   where_class(s, a.label));
