@@ -12,8 +12,8 @@
 //   1 sequence  F (all_in_r3 & F G all_in_r2)       gather in r3, then settle in r2
 //   2 split     F G (half_in_r2 & half_in_r3)       ceil(n/2) blocks to r2, floor(n/2) to r3
 //   3 patrol    G F all_in_r2 & G F all_in_r3       a cycle that moves everything twice
-// Grids: n = 1..48 at M = 5 and M = 3..64 at n = 4, no trays (C = 0; the
-// trays grid goes in scaling_grid's marked line).
+// Grids: n = 1..48 at M = 5 and M = 3..64 at n = 4, no trays (C = 0), and
+// n = 1..8 at M = 5 with C = 1, 2, 3 trays (rtamp gen puts them in r2 onwards).
 // Counters: regions, objects, trays, task, generated, expanded, memory_bytes,
 // bytes_per_node, cost, limit. A plan that stops at a limit (20 s, 40 M
 // nodes) is never reported as a time: its run is an error "limit: ...", its
@@ -107,7 +107,8 @@ void scaling_grid(benchmark::internal::Benchmark* b) {
   for (int task = 0; task < 4; ++task) {
     for (int n : {1, 2, 4, 6, 8, 12, 16, 20, 24, 32, 40, 48}) b->Args({task, 5, n, 0});
     for (int m : {3, 8, 12, 16, 24, 32, 48, 64}) b->Args({task, m, 4, 0});  // M = 5 is in the row above
-    // Trays: b->Args({task, 5, n, C}) rows for C = 1..3 go here.
+    for (int c = 1; c <= 3; ++c)  // trays: objects up to where the product outgrows the limits
+      for (int n : {1, 2, 4, 6, 8}) b->Args({task, 5, n, c});
   }
 }
 BENCHMARK(BM_PlanScaling)->Apply(scaling_grid)->UseManualTime()->Unit(benchmark::kMillisecond);

@@ -12,6 +12,7 @@
 #include <atomic>
 #include <cmath>
 #include <limits>
+#include <memory>
 #include <utility>
 
 #include "rtamp/exec/person_world.hpp"
@@ -183,6 +184,40 @@ TEST(ReactiveLoop, PatrolWithoutCyclesRunsToTheTimeLimitAndSaysWhy) {
   EXPECT_EQ(m.end, EndReason::TimeLimit);
   EXPECT_NE(m.reason.find("--cycles"), std::string::npos) << m.reason;
   EXPECT_GE(m.cycles, 2);
+}
+
+// Every third move fails, so no tree of the patrol (prefix and a 4-move cycle)
+// ever runs to its end: the rounds the run closes anyway are counted, and the
+// episode ends after them with no move running.
+TEST(ReactiveLoop, APatrolCountsTheRoundsItsRunClosesAcrossReplans) {
+  const world::Scenario s = scene("G F all_in_r1 & G F all_in_r2", 2);
+  SymbolicWorldOptions wo;
+  auto started = std::make_shared<int>(0);
+  wo.fails = [started](const Move&) { return ++*started % 3 == 0; };
+  SymbolicWorld w(s, wo);
+  LoopOptions o = inline_options();
+  o.cycles = 3;
+  o.max_failures_per_move = 1000;
+  o.max_time = 3000;
+  ReactiveLoop loop(w, s, o);
+  Moves moves;
+  loop.add_observer(moves);
+  const EpisodeMetrics& m = loop.run();
+  EXPECT_EQ(m.end, EndReason::Cycles) << m.reason;
+  EXPECT_TRUE(m.success);
+  EXPECT_EQ(m.cycles, 3);
+  EXPECT_GT(m.actions_failed, 2);
+  EXPECT_GT(moves.plans.size(), 3u);  // replanned after the failures
+  EXPECT_FALSE(w.busy());
+  // Each counted round returns to a state the run had since the previous count.
+  const auto& run = loop.observed_run();
+  std::size_t from = 0;
+  for (std::size_t mark : loop.cycle_marks()) {
+    bool back = false;
+    for (std::size_t j = from; j < mark && !back; ++j) back = run[j] == run[mark];
+    EXPECT_TRUE(back) << "the round ending at step " << mark << " returns to no earlier state";
+    from = mark;
+  }
 }
 
 // The tray the arm is carrying a block to is taken away: the block is put

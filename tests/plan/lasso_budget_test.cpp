@@ -111,9 +111,10 @@ TEST(LassoBudget, Seed234ForbiddenMove) {
 }
 
 // `rtamp gen -m 5 -n objects --layout line` with task and propositions.
-world::Scenario scaling(int objects, const std::string& task, const std::vector<std::pair<std::string, std::string>>& props) {
+world::Scenario scaling(int objects, const std::string& task, const std::vector<std::pair<std::string, std::string>>& props,
+                        int regions = 5) {
   world::GeneratorOptions g;
-  g.regions = 5;
+  g.regions = regions;
   g.objects = objects;
   g.layout = world::GeneratorOptions::Layout::Line;
   g.task = task;
@@ -151,6 +152,14 @@ TEST(LassoBudget, Patrol16) {
 
 TEST(LassoBudget, Patrol24) {
   expect_effort(scaling(24, "G F all_in_r2 & G F all_in_r3", kAllInR3), {516, 5, 71.724744871391593});
+}
+
+// Many regions: an early candidate search that cannot move anything (its
+// node has the hand at home) no longer ends the early searches and has the
+// whole graph classified (26,265 expansions at M = 16, 124,961 at M = 24).
+TEST(LassoBudget, Patrol4Over16And64Regions) {
+  expect_effort(scaling(4, "G F all_in_r2 & G F all_in_r3", kAllInR3, 16), {41, 6, 14.316084380618436});
+  expect_effort(scaling(4, "G F all_in_r2 & G F all_in_r3", kAllInR3, 64), {41, 6, 26.265865025427562});
 }
 
 TEST(LassoBudget, Sequence24) {

@@ -7,9 +7,14 @@
 // search on the capacity-free TS, as the diagnosis was once made.
 #include <gtest/gtest.h>
 
+#include <iostream>
+#include <limits>
+#include <optional>
 #include <random>
 
 #include "plan_checks.hpp"
+#include "rtamp/plan/accepting_distance.hpp"
+#include "rtamp/plan/cycle_search.hpp"
 #include "rtamp/plan/lasso_exists.hpp"
 #include "rtamp/plan/registry.hpp"
 #include "rtamp/world/generator.hpp"
@@ -131,6 +136,113 @@ TEST(TraySymmetry, RandomTrayScenariosMatchBruteForce) {
   EXPECT_GT(none, 3);
   EXPECT_GT(capacity, 0);
   EXPECT_GT(grouped, 100);
+}
+
+// A planner's product graph with both symmetry groups, built here.
+struct Product {
+  Product(const plan::Planner& p, const std::string& model)
+      : ts(p.scenario(), p.placement(), p.hand()),
+        lab(ts, p.automaton().atoms, [](const std::string& s) { return world::parse_prop_expr(s); }),
+        cost_model(plan::make_cost_model(model, p.scenario())) {
+    ts.set_symmetry(lab.symmetry_groups());
+    ts.set_container_symmetry(lab.container_groups());
+    graph.emplace(ts, lab, p.automaton(), *cost_model, nullptr);
+  }
+  task::System ts;
+  task::Labeling lab;
+  std::shared_ptr<plan::MotionCostModel> cost_model;
+  std::optional<plan::ProductGraph> graph;
+};
+
+// The lasso search with the accepting-set bounds on cycles built at the
+// first join candidate's search (plan/accepting_distance.hpp; a query builds
+// them only after many such searches), against the brute force: the bounds
+// must never cost optimality. Patrols are added to the patterns, since only
+// tasks with join candidates use them.
+TEST(TraySymmetry, CyclesBoundedThroughTheAcceptingSetMatchBruteForce) {
+  auto formulas = robot_patterns();
+  for (int k = 0; k < 4; ++k) {
+    formulas.push_back("G F a & G F b");
+    formulas.push_back("G F (a & X b) & G F c");
+  }
+  std::mt19937 rng(91);
+  int found = 0, bounded = 0;
+  const char* models[] = {"euclid", "region", "unit"};
+  for (int trial = 0; trial < 240; ++trial) {
+    const world::Scenario sc = random_tray_scenario(rng, formulas);
+    const std::string model = models[trial % 3];
+    SCOPED_TRACE("trial " + std::to_string(trial) + " task " + sc.task + " model " + model);
+    plan::PlannerOptions opt;
+    opt.cost = model;
+    plan::Planner p(sc, opt);
+    const auto want = oracle::min_lasso(p.scenario(), p.placement(), p.hand(), p.automaton(), model);
+    Product pr(p, model);
+    plan::ProductGraph& g = *pr.graph;
+    const task::System& ts = pr.ts;
+    if (!g.useful(p.automaton().initial)) {
+      EXPECT_FALSE(want.has_value());
+      continue;
+    }
+    plan::Experience x;
+    plan::LassoSearch ls;
+    const auto h = plan::algorithm_info(plan::Algorithm::AStar).make_heuristic(g, x);
+    plan::SearchStats st;
+    plan::LassoConfig config;
+    config.accepting_bounds_after = 0;
+    const std::vector<plan::NodeId> starts{g.find_or_add(ts.canonical(ts.initial()), p.automaton().initial)};
+    const auto r = ls.run(g, x, starts, *h, config, plan::Termination{plan::SearchLimits{}, 0}, st);
+    ASSERT_EQ(r.found, want.has_value());
+    if (!r.found) continue;
+    ++found;
+    EXPECT_NEAR(r.prefix_cost + r.cycle_cost, *want, 1e-6);
+    // The search closed the graph when it searched a join candidate.
+    bounded += st.successor_generations == g.size() && st.cycle_searches > 1;
+  }
+  EXPECT_GT(found, 100);
+  EXPECT_GT(bounded, 30);
+}
+
+// The bound itself: on closed graphs of random tray scenarios, every node's
+// cycle bound is at most its cheapest cycle through an accepting node (a
+// cycle search without heuristic), and often equal to it.
+TEST(TraySymmetry, AcceptingSetCycleBoundBelowEveryCycle) {
+  auto formulas = robot_patterns();
+  for (int k = 0; k < 4; ++k) formulas.push_back("G F a & G F b");
+  std::mt19937 rng(19);
+  int checked = 0, tight = 0;
+  const char* models[] = {"euclid", "region", "unit"};
+  for (int trial = 0; trial < 200; ++trial) {
+    const world::Scenario sc = random_tray_scenario(rng, formulas);
+    const std::string model = models[trial % 3];
+    SCOPED_TRACE("trial " + std::to_string(trial) + " task " + sc.task + " model " + model);
+    plan::Planner p(sc);
+    Product pr(p, model);
+    plan::ProductGraph& g = *pr.graph;
+    const task::System& ts = pr.ts;
+    if (!g.useful(p.automaton().initial)) continue;
+    (void)g.find_or_add(ts.canonical(ts.initial()), p.automaton().initial);
+    const plan::Termination stop{plan::SearchLimits{}, 0};
+    plan::Budget budget;
+    budget.start(stop, [] { return std::size_t{0}; });
+    plan::SearchStats st;
+    plan::AcceptingDistance d;
+    ASSERT_TRUE(d.build(g, std::numeric_limits<std::size_t>::max(), budget, st));
+    if (g.size() > 3000) continue;
+    plan::Experience x;
+    plan::CycleSearch cycles;
+    cycles.begin(g, x, nullptr, budget);
+    for (plan::NodeId n = 0; n < g.size(); ++n) {
+      const plan::PathCost u = cycles.cheapest(n, plan::kNoPathCost, st);
+      const double b = d.cycle_bound(n);
+      if (u.c >= plan::kInf) continue;
+      ++checked;
+      EXPECT_LE(b, u.c + 1e-9) << "node " << n;
+      tight += b > 0 && b >= u.c - 1e-9;
+    }
+  }
+  std::cout << checked << " nodes with a cycle, bound tight at " << tight << "\n";
+  EXPECT_GT(checked, 5000);
+  EXPECT_GT(tight, 200);
 }
 
 // find_accepting_lasso against the full search on the capacity-free TS, also

@@ -142,10 +142,15 @@ void ReactiveLoop::record_run_step(const world::Placement& next, bool things_cha
   run_letters_.push_back(letter(symbolic_));
   progress_.at(run_letters_.back());
   for (auto* o : observers_) o->on_progress(world_.time(), symbolic_, progress_.states());
-  if (progress_.dead() || !progress_.can_still_accept())
+  if (progress_.dead() || !progress_.can_still_accept()) {
     finish(EndReason::Unsatisfiable,
            "the task can no longer be satisfied: no run of its automaton is consistent with what happened "
            "and can still be accepted" + caused_by());
+    return;
+  }
+  // A cycle counts where the run closes it, whichever plans it took (a replan
+  // after a failed move starts a new lasso, not a new round).
+  count_cycle();
 }
 
 void ReactiveLoop::apply_thing_changes(const std::vector<std::string>& added,
@@ -433,7 +438,11 @@ bool ReactiveLoop::step() {
     // While a replan is pending, no new step of the old plan starts: a running
     // move is still polled, an idle tree waits. A tree that has succeeded waits
     // for the completion check (once the arm is free), not for another pass.
-    tree_->hold(pending_.has_value());
+    tree_->hold(pending_.has_value() || cycles_done_);
+    if (cycles_done_ && runner_->current().action.empty() && !world_.busy()) {
+      finish(EndReason::Cycles, "completed " + std::to_string(metrics_.cycles) + " cycles", true);
+      return false;
+    }
     const bool wait = world_.busy() || (pending_ && runner_->current().action.empty()) || tree_done_;
     const bt::Status status = wait ? bt::Status::Running : tree_->tick();
     if (!wait && status == bt::Status::Success) tree_done_ = true;
@@ -681,21 +690,22 @@ void ReactiveLoop::on_tree_done() {
     finish(EndReason::TaskDone, "task done", true);
     return;
   }
-  if (recurring_) {
-    const std::size_t from = cycle_marks_.empty() ? 0 : cycle_marks_.back();
-    if (cycle_satisfies(from)) {
-      ++metrics_.cycles;
-      cycle_marks_.push_back(run_.size() - 1);
-      for (auto* o : observers_) o->on_cycle(world_.time(), metrics_.cycles);
-      if (options_.cycles > 0 && metrics_.cycles >= options_.cycles) {
-        finish(EndReason::Cycles, "completed " + std::to_string(metrics_.cycles) + " cycles", true);
-        return;
-      }
-      request_plan("cycle " + std::to_string(metrics_.cycles) + " completed: next round");
-      return;
-    }
+  if (recurring_ && (count_cycle() || (!cycle_marks_.empty() && cycle_marks_.back() == run_.size() - 1))) {
+    if (!cycles_done_) request_plan("cycle " + std::to_string(metrics_.cycles) + " completed: next round");
+    return;
   }
   request_plan("every step is done but the task is not");
+}
+
+bool ReactiveLoop::count_cycle() {
+  if (!recurring_ || cycles_done_) return false;
+  const std::size_t from = cycle_marks_.empty() ? 0 : cycle_marks_.back();
+  if (!cycle_satisfies(from)) return false;
+  ++metrics_.cycles;
+  cycle_marks_.push_back(run_.size() - 1);
+  for (auto* o : observers_) o->on_cycle(world_.time(), metrics_.cycles);
+  cycles_done_ = options_.cycles > 0 && metrics_.cycles >= options_.cycles;
+  return true;
 }
 
 // Some earlier visit j >= from of the current state closes a cycle

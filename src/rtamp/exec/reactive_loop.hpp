@@ -177,6 +177,10 @@ class ReactiveLoop {
   bool collect_plan();
   void install(plan::PlanResult& r, bool first, const Outcome& outcome);
   void on_tree_done();
+  // The run has closed a cycle since the last mark (cycle_satisfies): count
+  // it, and once the episode's cycles are done stop starting moves. True if
+  // a cycle was counted.
+  bool count_cycle();
   bool cycle_satisfies(std::size_t from) const;
   void wait_for_worker();
 
@@ -206,6 +210,7 @@ class ReactiveLoop {
   bool begun_ = false, recurring_ = false;
   bool disturbed_ = false;               // the world changed while the current move ran
   bool tree_done_ = false;               // the tree succeeded: the completion check is due
+  bool cycles_done_ = false;             // the last cycle is counted: the episode ends once the arm is free
   bool act_now_ = false;                 // tick again before time passes (a new tree, a due change)
   int same_time_steps_ = 0;
   static constexpr int kMaxSameTimeSteps = 100;

@@ -9,6 +9,7 @@ void CycleSearch::begin(ProductGraph& g, Experience& x, Heuristic* h, Budget& bu
   x_ = &x;
   h_ = h;
   budget_ = &budget;
+  dist_ = nullptr;
   pending_ = kNoNode;
   if (++scc_gen_ == 0) {  // wrapped: clear the stamps once
     std::fill(scc_stamp_.begin(), scc_stamp_.end(), 0);
@@ -104,9 +105,12 @@ void CycleSearch::relax(NodeId from, std::uint32_t e) {
   if (!S.seen(m)) {
     S.mark_seen(m);
     S.closed[m] = 0;
-    S.h[m] = !h_ ? 0.0
-                 : std::max({state_distance_bound(g.system(), g.model(), g.state(pe.dst), target_state_),
-                             h_->walk_bound(g, pe.dst, target_q_), h_->return_bound(g, pe.dst, target_, (m & 1) != 0)});
+    S.h[m] =
+        !h_ ? 0.0
+            : std::max({state_distance_bound(g.system(), g.model(), g.state(pe.dst), target_state_),
+                        h_->walk_bound(g, pe.dst, target_q_),
+                        h_->return_bound(g, pe.dst, target_, (m & 1) != 0),
+                        dist_ && dist_->ready() ? dist_->return_bound(pe.dst, target_, (m & 1) != 0) : 0.0});
   } else if (!lex_less(ng, nm, S.g[m], S.m[m])) {
     return;
   }

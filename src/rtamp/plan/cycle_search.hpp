@@ -12,6 +12,7 @@
 #include <utility>
 #include <vector>
 
+#include "rtamp/plan/accepting_distance.hpp"
 #include "rtamp/plan/experience.hpp"
 #include "rtamp/plan/heuristic.hpp"
 #include "rtamp/plan/plan.hpp"
@@ -26,12 +27,17 @@ class CycleSearch {
   // Starts a query on `g` with experience `x` and the cycles' heuristic `h`
   // (null: none); the budget is the query's.
   void begin(ProductGraph& g, Experience& x, Heuristic* h, Budget& budget);
+  // With a heuristic, also bound the way back by `d` once it is ready (null: not).
+  void use(const AcceptingDistance* d) { dist_ = d; }
   // The cheapest such cycle through n below `bound`, or kNoPathCost (none below
   // it, or the budget ran out). When found, its path is in the experience.
   PathCost cheapest(NodeId n, PathCost bound, SearchStats& stats);
   // Classifies what is reachable from the first node whose unbounded search
   // found nothing without moving anything (its classification was put off).
   void classify_pending(SearchStats& stats);
+  // The last search opened a path that moves something (else the heuristic
+  // ruled out every way back that does, e.g. to a node with the hand at home).
+  bool moved() const { return moved_; }
   std::size_t bytes() const { return space_.bytes(); }
 
  private:
@@ -45,6 +51,7 @@ class CycleSearch {
   ProductGraph* g_ = nullptr;
   Experience* x_ = nullptr;
   Heuristic* h_ = nullptr;
+  const AcceptingDistance* dist_ = nullptr;
   Budget* budget_ = nullptr;
   SearchSpace space_;
   std::vector<std::uint32_t> path_;

@@ -1,12 +1,16 @@
 #include "rtamp/plan/lasso_search.hpp"
 
 #include <algorithm>
+#include <limits>
 #include <stdexcept>
 
 namespace rtamp::plan {
 
 namespace {
 bool is_move(const ProductEdge& e) { return e.action != task::Action::stay().packed(); }
+// maybe_bound_cycles: once the query has expanded as many nodes as the graph
+// holds (deterministic), if the closed graph is at most this many times as big.
+constexpr std::size_t kGrowth = 8;
 }  // namespace
 
 void LassoSearch::initialize(ProductGraph& g, Experience& x, const std::vector<NodeId>& starts, Heuristic& h,
@@ -19,6 +23,9 @@ void LassoSearch::initialize(ProductGraph& g, Experience& x, const std::vector<N
     return g_->memory_bytes() + x_->memory_bytes() + x_->costs().bytes() + memory_bytes();
   });
   cycles_.begin(g, x, config.cycle_heuristic ? &h : nullptr, budget_);
+  dist_.clear();
+  dist_tried_ = false;
+  join_searches_ = 0;
   status_ = SearchStatus::InProgress;
   best_ = kInf;
   best_m_ = kManyMoves;
@@ -104,6 +111,30 @@ void LassoSearch::expand(NodeId n, SearchStats& stats) {
 
 SearchStatus LassoSearch::stop(SearchStatus s) { return status_ = s; }
 
+void LassoSearch::maybe_bound_cycles(NodeId n, SearchStats& stats) {
+  ++join_searches_;
+  if (dist_tried_ || !config_.cycle_heuristic || join_searches_ < config_.accepting_bounds_after) return;
+  if (h_->cycle_bound(*g_, n) > 0) return;  // the chain bound bounds this cycle already
+  const std::size_t size = g_->size();
+  const bool at_once = config_.accepting_bounds_after == 0;
+  if (!at_once && stats.expanded < size) return;
+  dist_tried_ = true;
+  // Closing the graph may multiply it by at most kGrowth.
+  const std::size_t cap = at_once ? std::numeric_limits<std::size_t>::max() : kGrowth * size;
+  if (dist_.build(*g_, cap, budget_, stats)) cycles_.use(&dist_);
+}
+
+bool LassoSearch::rekeyed(const SearchItem& it) {
+  if (!dist_.ready()) return false;
+  const double key = it.g + dist_.cycle_bound(it.n);
+  if (!(key > it.f + kCostEps)) return false;
+  if (key < kInf) {
+    cand_.push_back({key, it.g, it.n, it.m});
+    std::push_heap(cand_.begin(), cand_.end(), after);
+  }
+  return true;
+}
+
 SearchStatus LassoSearch::early_candidate(const SearchItem& it, SearchStats& stats) {
   const double lower = it.f - it.g;  // the key's bound on the candidate's cycle
   if (!(lower > 0)) return try_cycle(it.n, stats) ? status_ : stop(SearchStatus::Stopped);  // unbounded
@@ -112,6 +143,9 @@ SearchStatus LassoSearch::early_candidate(const SearchItem& it, SearchStats& sta
   if (best_ >= kInf) {  // none below the bound (the table keeps it): wait again, keyed by it
     cand_.push_back({it.g + bound, it.g, it.n, it.m});
     std::push_heap(cand_.begin(), cand_.end(), after);
+    // A search that could not move anything (the heuristic ruled out every
+    // way back, e.g. to the hand at home) says nothing of the others.
+    if (!cycles_.moved()) return status_;
     // Perhaps there is no lasso: no more searches before one, and what lies on
     // no accepting cycle is found at once.
     early_ = Early::Off;
@@ -136,9 +170,13 @@ SearchStatus LassoSearch::step(SearchStats& stats) {
     std::pop_heap(cand_.begin(), cand_.end(), after);
     const SearchItem it = cand_.back();
     cand_.pop_back();
+    if (rekeyed(it)) return status_;
     if (best_ >= kInf && !S.heap.empty()) return early_candidate(it, stats);
     if (it.f > best_ + kCostEps) return stop(SearchStatus::Finished);
     if (!lex_less(it.f, it.m, best_, best_m_)) return status_;
+    maybe_bound_cycles(it.n, stats);
+    if (budget_.reason() != StopReason::None) return stop(SearchStatus::Stopped);
+    if (rekeyed(it)) return status_;
     return try_cycle(it.n, stats) ? status_ : stop(SearchStatus::Stopped);
   }
   if (S.heap.empty()) return stop(SearchStatus::Finished);
@@ -169,7 +207,8 @@ SearchStatus LassoSearch::step(SearchStats& stats) {
     if (known.exact) {
       if (!try_cycle(n, stats)) return stop(SearchStatus::Stopped);  // no search: the table has it
     } else {
-      const double lb = std::max({known.lower, S.h[n], config_.cycle_heuristic ? h_->cycle_bound(g, n) : 0.0});
+      const double lb = std::max({known.lower, S.h[n], config_.cycle_heuristic ? h_->cycle_bound(g, n) : 0.0,
+                                  dist_.ready() ? dist_.cycle_bound(n) : 0.0});
       const double key = S.g[n] + lb;
       if (key < kInf) {
         cand_.push_back({key, S.g[n], n, S.m[n]});

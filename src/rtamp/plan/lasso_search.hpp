@@ -31,6 +31,10 @@ namespace rtamp::plan {
 struct LassoConfig {
   bool cycle_heuristic = true;  // cycle searches use state_distance_bound and Heuristic::walk_bound (else 0)
   bool learn = false;           // use and store learned bounds and solved paths in the experience
+  // Join candidates' cycle searches before the accepting-set bounds are
+  // built (once the query has also expanded as many nodes as the graph
+  // holds); 0: at the first, whatever they cost. Only with cycle_heuristic.
+  std::uint32_t accepting_bounds_after = 1;
 };
 
 struct LassoResult {
@@ -67,7 +71,7 @@ class LassoSearch {
                   const LassoConfig& config, const Termination& stop, SearchStats& stats);
   LassoResult run(ProductGraph& g, Experience& x, NodeId init, Heuristic& h, const LassoConfig& config,
                   const Termination& stop, SearchStats& stats);
-  std::size_t memory_bytes() const { return prefix_.bytes() + cycles_.bytes(); }
+  std::size_t memory_bytes() const { return prefix_.bytes() + cycles_.bytes() + dist_.bytes(); }
 
  private:
   void offer_solved(NodeId m, double gm, std::uint32_t mm);
@@ -78,6 +82,14 @@ class LassoSearch {
   // a cycle search bounded by twice its cycle's lower bound, and if none is
   // found below, the candidate waits again keyed by that bound.
   SearchStatus early_candidate(const SearchItem& it, SearchStats& stats);
+  // Before candidate n's search: where the heuristic bounds its cycle by 0
+  // (no chain bound), once the query has expanded as many nodes as the graph
+  // holds, close the graph (at most kGrowth times its size) and bound
+  // cycles through the accepting set (plan/accepting_distance.hpp).
+  void maybe_bound_cycles(NodeId n, SearchStats& stats);
+  // With those bounds, a candidate whose key was too low waits again, keyed
+  // by them: true if `it` went back into the heap (or was dropped).
+  bool rekeyed(const SearchItem& it);
   void expand(NodeId n, SearchStats& stats);
   SearchStatus stop(SearchStatus s);
   void drop_loops(NodeId from, std::vector<std::uint32_t>& edges);
@@ -88,6 +100,9 @@ class LassoSearch {
   LassoConfig config_;
   Budget budget_;
   CycleSearch cycles_;
+  AcceptingDistance dist_;
+  bool dist_tried_ = false;
+  std::uint32_t join_searches_ = 0;  // cycle searches of join candidates taken off their heap
   SearchSpace prefix_;
   // Join candidates may be searched before the first lasso (early_candidate)
   // once the first accepting node has had its cycle search, if that found
