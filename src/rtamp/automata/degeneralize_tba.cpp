@@ -78,4 +78,27 @@ Automaton degeneralize_tba(const Automaton& in) {
   return best;
 }
 
+Automaton state_based_form(const Automaton& a) {
+  if (a.state_based) return a;
+  Automaton out;
+  out.atoms = a.atoms;
+  out.name = a.name;
+  out.state_based = true;
+  out.num_sets = 1;
+  const std::uint32_t n = a.num_states();
+  for (std::uint32_t q = 0; q < n; ++q) out.add_state(false);
+  out.initial = a.initial;
+  std::vector<std::uint32_t> copy(n, UINT32_MAX);
+  for (std::uint32_t q = 0; q < n; ++q)
+    for (const Edge& e : a.edges[q])
+      if (a.accepting_edge(e) && copy[e.dst] == UINT32_MAX) copy[e.dst] = out.add_state(true);
+  for (std::uint32_t q = 0; q < n; ++q)
+    for (const Edge& e : a.edges[q]) {
+      const std::uint32_t d = a.accepting_edge(e) ? copy[e.dst] : e.dst;
+      out.add_edge(q, d, e.guard);
+      if (copy[q] != UINT32_MAX) out.add_edge(copy[q], d, e.guard);
+    }
+  return out;
+}
+
 }  // namespace rtamp::automata

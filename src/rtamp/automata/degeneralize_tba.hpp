@@ -21,4 +21,11 @@ namespace rtamp::automata {
 
 Automaton degeneralize_tba(const Automaton& a);
 
+// The state-based form of a one-set transition-based automaton: states
+// 0..n-1 are a's states, non-accepting, with their ids kept; each state that
+// an accepting edge enters gets an accepting copy (ids n, n+1, ...), which
+// every accepting edge enters instead. Same language; a state-based input is
+// returned as it is.
+Automaton state_based_form(const Automaton& a);
+
 }  // namespace rtamp::automata

@@ -193,7 +193,11 @@ SearchStatus LassoSearch::step(SearchStats& stats) {
   if (config_.learn && x_->solved(n)) return status_;
   ++stats.expanded;
   ProductGraph& g = *g_;
-  if (g.accepting(n)) {
+  if (g.transition_based() && !g.expanded(n)) {  // accepting_anchor reads n's edges
+    g.expand(n);
+    ++stats.successor_generations;
+  }
+  if (g.accepting_anchor(n)) {
     if (!try_cycle(n, stats)) return stop(SearchStatus::Stopped);
     if (early_ == Early::Waiting) {
       // Early searches need a lower bound on the cycle itself to set theirs.
