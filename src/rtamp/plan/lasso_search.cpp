@@ -218,6 +218,12 @@ SearchStatus LassoSearch::step(SearchStats& stats) {
         cand_.push_back({key, S.g[n], n, S.m[n]});
         std::push_heap(cand_.begin(), cand_.end(), after);
       }
+      // Transition-based: no start node is accepting, whose search would
+      // decide the early searches (a state-based start often is); the first
+      // candidate whose cycle the heuristic bounds from below starts them.
+      if (early_ == Early::Waiting && g.transition_based() && config_.cycle_heuristic &&
+          h_->cycle_bound(g, n) > 0)
+        early_ = Early::On;
     }
   }
   expand(n, stats);
