@@ -201,9 +201,15 @@ inline double check_plan(plan::Planner& planner, const plan::PlanResult& r, cons
       << "the cycle does not return to its start (up to interchangeable objects)";
   if (!r.plan.cycle.empty()) {
     EXPECT_EQ(r.plan.cycle.back().ba_to, r.plan.cycle.front().ba_from);
-    // The prefix joins the cycle anywhere: the cycle passes an accepting state.
-    EXPECT_TRUE(std::any_of(r.plan.cycle.begin(), r.plan.cycle.end(),
-                            [&](const plan::Step& st) { return ba.is_accepting_state(st.ba_from); }));
+    // The prefix joins the cycle anywhere: the cycle passes an accepting state
+    // (transition-based: takes an accepting edge).
+    auto accepts = [&](const plan::Step& st) {
+      if (ba.state_based) return ba.is_accepting_state(st.ba_from);
+      for (const auto& e : ba.edges[st.ba_from])
+        if (e.dst == st.ba_to && e.guard.matches(st.label) && ba.accepting_edge(e)) return true;
+      return false;
+    };
+    EXPECT_TRUE(std::any_of(r.plan.cycle.begin(), r.plan.cycle.end(), accepts));
     // The plan starts at one of the planner's automaton states, and the
     // automaton started there accepts its word.
     const std::uint32_t q0 = r.plan.prefix.empty() ? r.plan.cycle.front().ba_from : r.plan.prefix.front().ba_from;
