@@ -110,9 +110,8 @@ TEST(HoaReader, SpotTransitionBasedGeneralizedBuchi) {
   expect_language(a, {"a", "b"}, gfa_and_gfb);
 }
 
-// One set on edges (Spot's `ltl2tgba -D 'GFa & GFb'` after `autfilt --tba`
-// style, and rtamp ltl2ba --tba): transition-based with one set; trans-acc
-// keeps even an automaton without marks transition-based.
+// One set on edges (the form of rtamp ltl2ba --tba): transition-based with
+// one set; trans-acc keeps even an automaton without marks transition-based.
 TEST(HoaReader, TransitionBasedBuchi) {
   const char* tba =
       "HOA: v1\nStates: 2\nStart: 0\nAP: 2 \"a\" \"b\"\nacc-name: Buchi\nAcceptance: 1 Inf(0)\n"
