@@ -59,10 +59,11 @@ class Heuristic {
   // an accepting node). 0 is always correct.
   virtual double walk_bound(const ProductGraph&, NodeId, std::uint32_t /*target*/) { return 0; }
   // Lower bound on the cost of every cycle (>= 1 step) through node n that
-  // contains an accepting node (the cycle of a lasso joined at n). 0 is always correct.
+  // takes an accepting edge (passes an accepting node; the cycle of a lasso
+  // joined at n). 0 is always correct.
   virtual double cycle_bound(const ProductGraph&, NodeId) { return 0; }
   // Lower bound on the cost of a path of at least one step from node n to
-  // node `target` that passes an accepting node unless `accepted` (the rest
+  // node `target` that takes an accepting edge unless `accepted` (the rest
   // of a cycle search's cycle back to its join node). 0 is always correct.
   virtual double return_bound(const ProductGraph&, NodeId, NodeId /*target*/, bool /*accepted*/) { return 0; }
 };
