@@ -158,6 +158,34 @@ inline bool product_lasso(const automata::Automaton& ba, std::uint32_t q0, const
   return false;
 }
 
+// Puts the planner in a random state: every thing somewhere legal, the hand
+// anywhere (or at home). Returns the placement and the hand.
+inline std::pair<world::Placement, std::string> place_randomly(std::mt19937& rng, plan::Planner& p) {
+  const world::Scenario& sc = p.scenario();
+  world::Placement pl = p.placement();
+  std::vector<std::string> regions, locs;
+  for (const auto& r : sc.regions) regions.push_back(r.name);
+  locs = regions;
+  for (const auto& c : sc.containers) locs.push_back(c.name);
+  for (auto& [name, thing] : pl.things) thing.location = thing.container ? regions[rng() % regions.size()] : locs[rng() % locs.size()];
+  const std::string hand = rng() % 3 ? locs[rng() % locs.size()] : "";
+  p.set_placement(pl, hand);
+  return {pl, hand};
+}
+
+// h.cycle_bound at node (s, q) of g is at most u, the brute force's cheapest
+// accepting cycle through it (+inf: none, nothing checked); counts the checks
+// and the positive bounds.
+inline void expect_cycle_bound(plan::Heuristic& h, plan::ProductGraph& g, const task::State& s, std::uint32_t q,
+                               double u, const std::string& what, int& checked, int& positive) {
+  const plan::NodeId node = g.find_or_add(g.system().canonical(s), q);
+  if (u == INFINITY || node == plan::kNoNode) return;
+  const double cb = h.cycle_bound(g, node);
+  EXPECT_LE(cb, u + 1e-9) << what << " q=" << q << " (cycle bound)";
+  ++checked;
+  positive += cb > 0;
+}
+
 // Checks r.plan independently; returns the recomputed cost.
 inline double check_plan(plan::Planner& planner, const plan::PlanResult& r, const std::string& model) {
   const auto& sc = planner.scenario();

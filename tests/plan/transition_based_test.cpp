@@ -9,6 +9,8 @@
 
 #include "plan_checks.hpp"
 #include "rtamp/automata/degeneralize_tba.hpp"
+#include "rtamp/plan/heuristic.hpp"
+#include "rtamp/plan/registry.hpp"
 
 namespace {
 
@@ -77,6 +79,71 @@ TEST(TransitionBased, CostsEqualStateBasedAndBruteForce) {
   EXPECT_GT(found, 300);
   EXPECT_GT(none, 3);
   EXPECT_GT(trays, 100);
+}
+
+// The heuristic's bounds on a transition-based automaton, from random states
+// (hand anywhere or at home) and every useful automaton state q, against the
+// brute force on the automaton's state-based form (q keeps its number there,
+// as its non-accepting copy): h(s, q) <= the best lasso from (s, q), and
+// cycle_bound <= the cheapest cycle through (s, q) that takes an accepting
+// edge (one returning to (s, q) or to its accepting copy, whose edges are
+// the same). Half the scenarios without a tray are patrols whose atoms force
+// every block (where the chain bound's cycle bound is positive).
+TEST(TransitionBased, HeuristicAdmissibleAgainstBruteForce) {
+  std::mt19937 rng(7);
+  int checked = 0, positive = 0, cycle_positive = 0;
+  for (int trial = 0; trial < 150; ++trial) {
+    world::Scenario sc = random_scenario(rng, kFamilies);
+    if (trial % 2 && sc.containers.empty()) {
+      // A patrol whose atoms force every block somewhere (the chain bound's
+      // case): "all block in r_i", a different region each while there are some.
+      sc.task = trial % 4 == 1 ? "G F a & G F b" : "G F a & G F b & G F c";
+      sc.propositions.clear();
+      for (std::size_t i = 0; i < 3; ++i)
+        sc.propositions.push_back(proposition(std::string(1, static_cast<char>('a' + i)),
+                                              "all block in r" + std::to_string(1 + (i + 1) % sc.regions.size())));
+    }
+    for (const char* model : {"euclid", "region", "unit"}) {
+      plan::PlannerOptions opt;
+      opt.cost = model;
+      opt.transition_based = true;
+      plan::Planner p(sc, opt);
+      const auto [pl, hand] = place_randomly(rng, p);
+      const task::State s = p.state();
+      const auto cost = plan::make_cost_model(model);
+      plan::ProductGraph g(p.system(), p.labeling(), p.automaton(), *cost, nullptr);
+      plan::GuardHeuristic h(g);
+      const automata::Automaton form = automata::state_based_form(p.automaton());
+      for (std::uint32_t q = 0; q < p.automaton().num_states(); ++q) {
+        if (!g.useful(q)) continue;
+        automata::Automaton ba = form;
+        ba.initial = q;
+        const auto lasso = oracle::min_lasso(p.scenario(), pl, hand, ba, model);
+        if (!lasso) continue;
+        const double est = h.evaluate(s, q);
+        EXPECT_LE(est, *lasso + 1e-9) << sc.task << " q=" << q << " model " << model;
+        ++checked;
+        positive += est > 0;
+        // q itself, and the accepting copies with q's edges.
+        auto is_q = [&](std::uint32_t c) { return c == q || (ba.state_accepting[c] && ba.edges[c] == ba.edges[q]); };
+        const oracle::Product prod(p.scenario(), pl, hand, ba, model);
+        const auto d0 = prod.dijkstra(0, false);
+        double u = INFINITY;
+        for (std::size_t n = 0; n < prod.nodes.size(); ++n) {
+          if (!ba.is_accepting_state(prod.nodes[n].q) || d0[n] >= u) continue;
+          const auto back = prod.dijkstra(static_cast<int>(n), false);
+          for (std::size_t m = 0; m < prod.nodes.size(); ++m)
+            if (prod.nodes[m].s.loc == prod.nodes[0].s.loc && prod.nodes[m].s.hand == prod.nodes[0].s.hand &&
+                is_q(prod.nodes[m].q))
+              u = std::min(u, d0[n] + back[m]);
+        }
+        expect_cycle_bound(h, g, s, q, u, sc.task + " model " + model, checked, cycle_positive);
+      }
+    }
+  }
+  EXPECT_GT(checked, 500);
+  EXPECT_GT(positive, 200);       // the bounds are not trivially 0
+  EXPECT_GT(cycle_positive, 30);  // nor the chain bound's cycle bound
 }
 
 // Replans on one transition-based planner (experience kept) after the robot
