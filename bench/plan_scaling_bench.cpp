@@ -18,6 +18,15 @@
 // bytes_per_node, cost, limit. A plan that stops at a limit (20 s, 40 M
 // nodes) is never reported as a time: its run is an error "limit: ...", its
 // label "<task> limit" and its counter limit is 1 (0 for every finished plan).
+//
+//   BM_PlanAcceptance/<task>/<n>/<tb>  the same cold A* plan (task 1 sequence or
+//                                   3 patrol, M = 5, no trays) searching the
+//                                   state-based automaton (tb = 0) or the
+//                                   transition-based one (tb = 1, acceptance on
+//                                   the product's edges); counters expanded,
+//                                   cycle_searches, graph_nodes,
+//                                   automaton_states, cost (docs/benchmarks.md
+//                                   "Acceptance on transitions").
 // Machine-readable output for the plot (scripts/plot-scaling):
 //   build/bench/plan_scaling_bench --benchmark_out_format=csv
 //       --benchmark_out=docs/results/plan-scaling.csv
@@ -112,6 +121,41 @@ void scaling_grid(benchmark::internal::Benchmark* b) {
   }
 }
 BENCHMARK(BM_PlanScaling)->Apply(scaling_grid)->UseManualTime()->Unit(benchmark::kMillisecond);
+
+void BM_PlanAcceptance(benchmark::State& state) {
+  const int task = static_cast<int>(state.range(0));
+  const int objects = static_cast<int>(state.range(1));
+  const bool tb = state.range(2) != 0;
+  const world::Scenario scenario = scaling_scenario(task, 5, objects, 0);
+  plan::PlannerOptions o;
+  o.algorithm = plan::Algorithm::AStar;
+  o.cost = "euclid";
+  o.transition_based = tb;
+  plan::PlanResult r;
+  std::uint32_t states = 0;
+  for (auto _ : state) {
+    plan::Planner p(scenario, o);  // translation and TS set-up are not timed
+    (void)p.system();
+    states = p.automaton().num_states();
+    r = p.plan();
+    if (!r.found) break;
+    state.SetIterationTime(r.stats.seconds);
+  }
+  if (!r.found) {
+    state.SkipWithError(("no plan: " + r.message).c_str());
+    return;
+  }
+  state.counters["expanded"] = double(r.stats.expanded);
+  state.counters["cycle_searches"] = double(r.stats.cycle_searches);
+  state.counters["graph_nodes"] = double(r.stats.graph_nodes);
+  state.counters["automaton_states"] = states;
+  state.counters["cost"] = r.plan.cost();
+  state.SetLabel(std::string(kTaskNames[task]) + (tb ? " transition" : " state"));
+}
+BENCHMARK(BM_PlanAcceptance)
+    ->ArgsProduct({{1, 3}, {4, 8, 16}, {0, 1}})
+    ->UseManualTime()
+    ->Unit(benchmark::kMillisecond);
 
 }  // namespace
 

@@ -26,6 +26,7 @@ struct Ltl2baArgs {
   std::vector<std::string> files;
   std::string format = "hoa";
   bool gba = false;
+  bool tba = false;
   bool no_simplify = false;
   bool no_reduce = false;
 };
@@ -59,7 +60,9 @@ INPUT
 OUTPUT FORMATS (--format)
   hoa     HOA v1 (Hanoi Omega-Automata), readable by Spot's autfilt and Owl.
           Default: state-based Büchi (acc-name: Buchi, state-acc); with --gba a
-          transition-based generalized Büchi automaton (marks on edges).
+          transition-based generalized Büchi automaton (marks on edges); with
+          --tba a transition-based Büchi automaton (acc-name: Buchi, trans-acc,
+          one set on edges: what `rtamp plan --transition-based` searches).
           Labels use AP indices: [0&!1]. The formula is the name: header.
   dot     Graphviz: accepting states are double circles, TGBA edges show their
           acceptance sets in braces. Render with: | dot -Tsvg > a.svg
@@ -97,8 +100,10 @@ std::vector<Job> read_formula_file(const std::string& path) {
 
 int run(const Ltl2baArgs& args) {
   using namespace rtamp;
-  if (args.format == "never" && args.gba)
-    throw Error("--format never needs a state-based Büchi automaton: drop --gba");
+  if (args.gba && args.tba) throw Error("--gba and --tba exclude each other: choose one acceptance form");
+  if (args.format == "never" && (args.gba || args.tba))
+    throw Error(std::string("--format never needs a state-based Büchi automaton: drop ") +
+                (args.gba ? "--gba" : "--tba"));
   if (args.formulas.empty() && args.files.empty())
     throw Error("no formula: give one as an argument or use -F FILE (see rtamp ltl2ba --help)");
   std::vector<Job> jobs;
@@ -111,7 +116,8 @@ int run(const Ltl2baArgs& args) {
     jobs.insert(jobs.end(), std::make_move_iterator(more.begin()), std::make_move_iterator(more.end()));
   }
   automata::TranslateOptions opt;
-  opt.state_based = !args.gba;
+  opt.state_based = !args.gba && !args.tba;
+  opt.one_set = args.tba;
   opt.simplify = !args.no_simplify;
   opt.reduce = !args.no_reduce;
   bool failed = false;
@@ -167,6 +173,8 @@ rtamp::cli::Registrar reg{
           ->check(CLI::IsMember({"hoa", "dot", "never", "stats"}))
           ->capture_default_str();
       sub.add_flag("--gba", args->gba, "Transition-based generalized Büchi automaton instead of a state-based BA");
+      sub.add_flag("--tba", args->tba,
+                   "Transition-based Büchi automaton (one acceptance set, on edges) instead of a state-based BA");
       sub.add_flag("--no-simplify", args->no_simplify, "Do not simplify the formula before translating");
       sub.add_flag("--no-reduce", args->no_reduce, "Do not reduce the automaton (simulation, merging) after translating");
       sub.footer(kFooter);

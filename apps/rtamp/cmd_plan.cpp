@@ -31,6 +31,7 @@ struct PlanArgs {
   std::vector<std::string> changes;
   bool json = false;
   bool no_progress = false;
+  bool transition_based = false;
   std::size_t max_nodes = 20'000'000;
   double time_limit = 60;
   double max_memory_gib = double(plan::SearchLimits{}.max_memory_bytes) / double(1ull << 30);  // inf: none
@@ -170,6 +171,9 @@ rtamp::cli::Registrar reg{
       rtamp::cli::add_real(sub, "--max-memory", a->max_memory_gib, {0, std::numeric_limits<double>::max(), true, true},
                            "Memory limit of each search in GiB (the planner's estimate of its graph, search arrays, "
                            "experience and cost cache)");
+      sub.add_flag("--transition-based", a->transition_based,
+                   "Translate the task to a transition-based Büchi automaton and accept on the product's edges "
+                   "(same costs; docs/planning.md)");
       sub.add_flag("--no-progress", a->no_progress,
                    "Do not show the progress line that searches longer than 0.5 s print on a terminal's stderr");
       return [a]() -> int {
@@ -177,6 +181,7 @@ rtamp::cli::Registrar reg{
         opt.algorithm = plan::parse_algorithm(a->algo);
         opt.graph = parse_name(plan::graph_constructions(), a->graph, "graph");
         opt.cost = a->cost;
+        opt.transition_based = a->transition_based;
         opt.limits.max_nodes = a->max_nodes;
         opt.limits.time_limit = a->time_limit;
         const double max_bytes = a->max_memory_gib * double(1ull << 30);
@@ -196,13 +201,15 @@ rtamp::cli::Registrar reg{
         doc["scenario"] = planner.scenario().name;
         doc["task"] = planner.scenario().task;
         doc["automaton_states"] = planner.automaton().num_states();
+        doc["automaton_acceptance"] = planner.automaton().state_based ? "state" : "transition";
         doc["algorithm"] = a->algo;
         doc["graph"] = a->graph;
         doc["cost_model"] = a->cost;
         doc["plans"] = nlohmann::json::array();
         if (!a->json) {
           std::cout << "scenario " << planner.scenario().name << ": task " << planner.scenario().task << " ("
-                    << planner.automaton().num_states() << "-state Büchi automaton)\n"
+                    << planner.automaton().num_states() << "-state "
+                    << (planner.automaton().state_based ? "" : "transition-based ") << "Büchi automaton)\n"
                     << "algorithm " << a->algo << ", graph " << a->graph << ", cost " << a->cost << "\n\n";
         }
         bool all_found = true;

@@ -33,6 +33,11 @@ void expect_language(const Automaton& a, const std::vector<std::string>& atoms, 
     ASSERT_EQ(accepts(a, w), p(w)) << "on " << ltl::to_string(w);
 }
 
+// The language of G F a & G F b.
+bool gfa_and_gfb(const ltl::LassoWord& w) {
+  return cycle_has(w, [](auto& l) { return in(l, "a"); }) && cycle_has(w, [](auto& l) { return in(l, "b"); });
+}
+
 // Expects read_hoa(text) to throw an Error at line:col whose message contains `what`.
 void expect_error(const std::string& text, int line, int col, const std::string& what) {
   try {
@@ -102,9 +107,27 @@ TEST(HoaReader, SpotTransitionBasedGeneralizedBuchi) {
   EXPECT_FALSE(a.state_based);
   EXPECT_EQ(a.num_sets, 2u);
   EXPECT_EQ(a.num_edges(), 4u);
-  expect_language(a, {"a", "b"}, [](const ltl::LassoWord& w) {
-    return cycle_has(w, [](auto& l) { return in(l, "a"); }) && cycle_has(w, [](auto& l) { return in(l, "b"); });
-  });
+  expect_language(a, {"a", "b"}, gfa_and_gfb);
+}
+
+// One set on edges (the form of rtamp ltl2ba --tba): transition-based with
+// one set; trans-acc keeps even an automaton without marks transition-based.
+TEST(HoaReader, TransitionBasedBuchi) {
+  const char* tba =
+      "HOA: v1\nStates: 2\nStart: 0\nAP: 2 \"a\" \"b\"\nacc-name: Buchi\nAcceptance: 1 Inf(0)\n"
+      "properties: trans-labels explicit-labels trans-acc\n--BODY--\n"
+      "State: 0\n[!0] 0\n[0&1] 0 {0}\n[0&!1] 1\nState: 1\n[1] 0 {0}\n[!1] 1\n--END--\n";
+  const Automaton a = read_hoa_one(tba);
+  EXPECT_FALSE(a.state_based);
+  EXPECT_EQ(a.num_sets, 1u);
+  EXPECT_EQ(a.num_states(), 2u);
+  expect_language(a, {"a", "b"}, gfa_and_gfb);
+  const Automaton none = read_hoa_one(
+      "HOA: v1\nStates: 1\nStart: 0\nAP: 1 \"a\"\nAcceptance: 1 Inf(0)\nproperties: trans-acc\n--BODY--\n"
+      "State: 0\n[t] 0\n--END--\n");
+  EXPECT_FALSE(none.state_based);
+  EXPECT_EQ(none.num_sets, 1u);
+  expect_language(none, {"a"}, [](const ltl::LassoWord&) { return false; });
 }
 
 TEST(HoaReader, SeveralAutomataInOneStreamAndAbort) {
@@ -157,9 +180,7 @@ TEST(HoaReader, ImplicitLabelsAndTransitionAcceptance) {
       "State: 0\n 0 /* !a & !b */\n 0 {0} /* a & !b */\n 0 {1}\n 0 {0 1}\n--END--\n";
   const Automaton a = read_hoa_one(text);
   EXPECT_EQ(a.num_sets, 2u);
-  expect_language(a, {"a", "b"}, [](const ltl::LassoWord& w) {
-    return cycle_has(w, [](auto& l) { return in(l, "a"); }) && cycle_has(w, [](auto& l) { return in(l, "b"); });
-  });
+  expect_language(a, {"a", "b"}, gfa_and_gfb);
 }
 
 TEST(HoaReader, StateLabelsAndSeveralInitialStates) {

@@ -2,7 +2,8 @@
 // library's readers (HOA, never claim) against the direct LTL semantics on
 // random lassos; -F files (comments, blank lines, stdin, bad lines reported
 // with file:line:column while the others are still translated, exit 2);
-// --format stats/dot; --gba; --help; bad options.
+// --format stats/dot; --gba; --tba (read back: one set on edges, the
+// language, the same text when written again); --help; bad options.
 #include <gtest/gtest.h>
 
 #include <random>
@@ -10,6 +11,7 @@
 
 #include "../automata/io_lasso_words.hpp"
 #include "rtamp/automata/hoa_reader.hpp"
+#include "rtamp/automata/hoa_writer.hpp"
 #include "rtamp/automata/never_claim_reader.hpp"
 #include "rtamp/ltl/lasso.hpp"
 #include "rtamp/ltl/parser.hpp"
@@ -75,6 +77,44 @@ TEST(CliLtl2ba, GbaIsTransitionBased) {
   EXPECT_FALSE(a.state_based);
   EXPECT_EQ(a.num_sets, 3u);
   expect_models(a, "G F a & G F b & G F c", 2);
+}
+
+TEST(CliLtl2ba, TbaIsTransitionBasedWithOneSetAndRoundTrips) {
+  const std::vector<std::string> formulas = {"G F a & G F b", "G F a & G F b & G F c", "F (a & F G b)",
+                                             "G (a -> F b)", "F G a | G F b", "a U (b R c)"};
+  std::string all;
+  for (const auto& f : formulas) all += " " + quote(f);
+  const auto r = run("ltl2ba --tba" + all);
+  ASSERT_EQ(r.rc, 0) << r.err;
+  std::size_t at = 0;
+  for (std::size_t i = 0; i < formulas.size(); ++i) {
+    const std::size_t end = r.out.find("--END--\n", at) + 8;
+    const std::string text = r.out.substr(at, end - at);
+    at = end;
+    SCOPED_TRACE(formulas[i] + "\n" + text);
+    EXPECT_NE(text.find("acc-name: Buchi\nAcceptance: 1 Inf(0)\n"), std::string::npos);
+    EXPECT_NE(text.find("trans-acc"), std::string::npos);
+    EXPECT_NE(text.find(" {0}\n"), std::string::npos) << "marks on edges";
+    const automata::Automaton a = automata::read_hoa_one(text);
+    EXPECT_FALSE(a.state_based);
+    EXPECT_EQ(a.num_sets, 1u);
+    EXPECT_EQ(automata::to_hoa(a), text) << "writing what was read gives the same text";
+    expect_models(a, formulas[i], 10 + i);
+  }
+  // Smaller than the state-based automaton where acceptance waits on edges.
+  const automata::Automaton tba = automata::read_hoa_one(run("ltl2ba --tba 'G F a & G F b'").out);
+  const automata::Automaton ba = automata::read_hoa_one(run("ltl2ba 'G F a & G F b'").out);
+  EXPECT_LT(tba.num_states(), ba.num_states());
+}
+
+TEST(CliLtl2ba, TbaRefusesWhatItCannotCombineWith) {
+  const auto g = run("ltl2ba --tba --gba 'F a'");
+  EXPECT_EQ(g.rc, 2);
+  EXPECT_EQ(g.err, "rtamp: error: --gba and --tba exclude each other: choose one acceptance form\n");
+  EXPECT_TRUE(g.out.empty()) << g.out;
+  const auto n = run("ltl2ba --tba --format never 'F a'");
+  EXPECT_EQ(n.rc, 2);
+  EXPECT_EQ(n.err, "rtamp: error: --format never needs a state-based Büchi automaton: drop --tba\n");
 }
 
 TEST(CliLtl2ba, NoSimplifyNoReduceKeepTheLanguage) {

@@ -3,7 +3,9 @@
 // be unlimited, seeds unsigned 64-bit), names from the planner's registry with
 // a did-you-mean, output files checked before anything runs, the argument
 // parser's and unknown-command errors in the `rtamp: error: ...` form with
-// exit 2, control bytes escaped, and --json writing only JSON on stdout.
+// exit 2, control bytes escaped, and --json writing only JSON on stdout;
+// `plan --transition-based` reports its automaton's acceptance and plans at
+// the state-based costs.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -85,6 +87,36 @@ TEST(CliOptions, TheMemoryLimitStopsAQueryWithItsOwnReason) {
   const Result unlimited = run("plan 3-block-tray --graph full --max-memory inf --json");
   ASSERT_EQ(unlimited.rc, 0) << unlimited.err;
   EXPECT_EQ(nlohmann::json::parse(unlimited.out)["plans"][0]["found"], true);
+}
+
+// The same plans (costs, replans after a change) from either automaton; on a
+// generated patrol of 8 blocks, no more expansions than state-based.
+TEST(CliOptions, TransitionBasedPlansAtTheSameCosts) {
+  const std::string patrol = (scratch() / "patrol8.yaml").string();
+  ASSERT_EQ(run("gen -m 5 -n 8 --layout line --task 'G F all_in_r2 & G F all_in_r3' --prop 'all_in_r3=all block in r3' "
+                "-o " + patrol).rc, 0);
+  for (const std::string& args : std::vector<std::string>{"3-block-tray --change 'move o1 r3'", patrol + " --algo astar"}) {
+    SCOPED_TRACE(args);
+    const Result s = run("plan --json " + args);
+    const Result t = run("plan --json --transition-based " + args);
+    ASSERT_EQ(s.rc, 0) << s.err;
+    ASSERT_EQ(t.rc, 0) << t.err;
+    const auto js = nlohmann::json::parse(s.out), jt = nlohmann::json::parse(t.out);
+    EXPECT_EQ(js["automaton_acceptance"], "state");
+    EXPECT_EQ(jt["automaton_acceptance"], "transition");
+    ASSERT_EQ(js["plans"].size(), jt["plans"].size());
+    for (std::size_t i = 0; i < js["plans"].size(); ++i) {
+      ASSERT_EQ(jt["plans"][i]["found"], true);
+      EXPECT_NEAR(jt["plans"][i]["cost"].get<double>(), js["plans"][i]["cost"].get<double>(), 1e-9);
+    }
+    if (args != patrol + " --algo astar") continue;
+    EXPECT_LT(jt["automaton_states"].get<int>(), js["automaton_states"].get<int>());
+    EXPECT_LE(jt["plans"][0]["stats"]["expanded"].get<int>(), js["plans"][0]["stats"]["expanded"].get<int>());
+  }
+  const Result text = run("plan 3-block --transition-based");
+  ASSERT_EQ(text.rc, 0) << text.err;
+  EXPECT_NE(text.out.find("-state transition-based Büchi automaton)"), std::string::npos) << text.out;
+  expect_refused(run("plan 3-block --transition-based=maybe"), "--transition-based", "--transition-based=maybe");
 }
 
 TEST(CliOptions, TheLargestSeedIsAccepted) {

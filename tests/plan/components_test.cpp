@@ -60,21 +60,6 @@ TEST(MotionCostCache, HitsMissesAndForgetting) {
   EXPECT_EQ(c2.misses(), 1u);
 }
 
-// Puts the planner in a random state: every thing somewhere legal, the hand
-// anywhere (or at home). Returns the placement and the hand.
-std::pair<world::Placement, std::string> place_randomly(std::mt19937& rng, plan::Planner& p) {
-  const world::Scenario& sc = p.scenario();
-  world::Placement pl = p.placement();
-  std::vector<std::string> regions, locs;
-  for (const auto& r : sc.regions) regions.push_back(r.name);
-  locs = regions;
-  for (const auto& c : sc.containers) locs.push_back(c.name);
-  for (auto& [name, thing] : pl.things) thing.location = thing.container ? regions[rng() % regions.size()] : locs[rng() % locs.size()];
-  const std::string hand = rng() % 3 ? locs[rng() % locs.size()] : "";
-  p.set_placement(pl, hand);
-  return {pl, hand};
-}
-
 plan::PlannerOptions with_cost(const char* model) {
   plan::PlannerOptions o;
   o.cost = model;
@@ -192,13 +177,7 @@ TEST(GuardHeuristic, AdmissibleAgainstBruteForce) {
             if (d0[n] >= u) break;
             u = std::min(u, n == 0 ? d1[0] : d0[n] + prod.dijkstra(static_cast<int>(n), false)[0]);
           }
-          const plan::NodeId node = g.find_or_add(p.system().canonical(s), q);
-          if (u < INFINITY && node != plan::kNoNode) {
-            const double cb = h.cycle_bound(g, node);
-            EXPECT_LE(cb, u + 1e-9) << sc.task << " q=" << q << " model " << model << " (cycle bound)";
-            ++checked;
-            cycle_positive += cb > 0;
-          }
+          expect_cycle_bound(h, g, s, q, u, sc.task + " model " + model, checked, cycle_positive);
         }
         for (std::uint32_t t = 0; t < nq; ++t) {
           if (!g.useful(t) || to_q[t] == INFINITY) continue;

@@ -158,6 +158,34 @@ inline bool product_lasso(const automata::Automaton& ba, std::uint32_t q0, const
   return false;
 }
 
+// Puts the planner in a random state: every thing somewhere legal, the hand
+// anywhere (or at home). Returns the placement and the hand.
+inline std::pair<world::Placement, std::string> place_randomly(std::mt19937& rng, plan::Planner& p) {
+  const world::Scenario& sc = p.scenario();
+  world::Placement pl = p.placement();
+  std::vector<std::string> regions, locs;
+  for (const auto& r : sc.regions) regions.push_back(r.name);
+  locs = regions;
+  for (const auto& c : sc.containers) locs.push_back(c.name);
+  for (auto& [name, thing] : pl.things) thing.location = thing.container ? regions[rng() % regions.size()] : locs[rng() % locs.size()];
+  const std::string hand = rng() % 3 ? locs[rng() % locs.size()] : "";
+  p.set_placement(pl, hand);
+  return {pl, hand};
+}
+
+// h.cycle_bound at node (s, q) of g is at most u, the brute force's cheapest
+// accepting cycle through it (+inf: none, nothing checked); counts the checks
+// and the positive bounds.
+inline void expect_cycle_bound(plan::Heuristic& h, plan::ProductGraph& g, const task::State& s, std::uint32_t q,
+                               double u, const std::string& what, int& checked, int& positive) {
+  const plan::NodeId node = g.find_or_add(g.system().canonical(s), q);
+  if (u == INFINITY || node == plan::kNoNode) return;
+  const double cb = h.cycle_bound(g, node);
+  EXPECT_LE(cb, u + 1e-9) << what << " q=" << q << " (cycle bound)";
+  ++checked;
+  positive += cb > 0;
+}
+
 // Checks r.plan independently; returns the recomputed cost.
 inline double check_plan(plan::Planner& planner, const plan::PlanResult& r, const std::string& model) {
   const auto& sc = planner.scenario();
@@ -201,9 +229,15 @@ inline double check_plan(plan::Planner& planner, const plan::PlanResult& r, cons
       << "the cycle does not return to its start (up to interchangeable objects)";
   if (!r.plan.cycle.empty()) {
     EXPECT_EQ(r.plan.cycle.back().ba_to, r.plan.cycle.front().ba_from);
-    // The prefix joins the cycle anywhere: the cycle passes an accepting state.
-    EXPECT_TRUE(std::any_of(r.plan.cycle.begin(), r.plan.cycle.end(),
-                            [&](const plan::Step& st) { return ba.is_accepting_state(st.ba_from); }));
+    // The prefix joins the cycle anywhere: the cycle passes an accepting state
+    // (transition-based: takes an accepting edge).
+    auto accepts = [&](const plan::Step& st) {
+      if (ba.state_based) return ba.is_accepting_state(st.ba_from);
+      for (const auto& e : ba.edges[st.ba_from])
+        if (e.dst == st.ba_to && e.guard.matches(st.label) && ba.accepting_edge(e)) return true;
+      return false;
+    };
+    EXPECT_TRUE(std::any_of(r.plan.cycle.begin(), r.plan.cycle.end(), accepts));
     // The plan starts at one of the planner's automaton states, and the
     // automaton started there accepts its word.
     const std::uint32_t q0 = r.plan.prefix.empty() ? r.plan.cycle.front().ba_from : r.plan.prefix.front().ba_from;

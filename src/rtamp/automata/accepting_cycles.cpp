@@ -26,16 +26,24 @@ std::vector<std::vector<bool>> reach_matrix(const Automaton& ba) {
   for (std::uint32_t q = 0; q < ba.num_states(); ++q) reach[q] = reach_from(ba, q);
   return reach;
 }
+
+// Calls f(u, v) for every accepting edge u -> v that can hold.
+template <class F>
+void for_each_accepting_edge(const Automaton& ba, F f) {
+  for (std::uint32_t u = 0; u < ba.num_states(); ++u)
+    for (const auto& e : ba.edges[u])
+      if (!e.guard.is_false() && ba.accepting_edge(e)) f(u, e.dst);
+}
 }  // namespace
 
 std::vector<bool> useful_states(const Automaton& ba) {
   const std::uint32_t n = ba.num_states();
   const std::vector<std::vector<bool>> reach = reach_matrix(ba);
   std::vector<bool> useful(n, false);
-  for (std::uint32_t qa = 0; qa < n; ++qa) {
-    if (!ba.is_accepting_state(qa) || !reach[qa][qa]) continue;  // not an accepting state on a cycle
-    for (std::uint32_t q = 0; q < n; ++q) useful[q] = useful[q] || q == qa || reach[q][qa];
-  }
+  for_each_accepting_edge(ba, [&](std::uint32_t u, std::uint32_t v) {
+    if (u != v && !reach[v][u]) return;  // not on a cycle
+    for (std::uint32_t q = 0; q < n; ++q) useful[q] = useful[q] || q == u || reach[q][u];
+  });
   return useful;
 }
 
@@ -43,10 +51,10 @@ std::vector<bool> states_on_accepting_cycles(const Automaton& ba) {
   const std::uint32_t n = ba.num_states();
   const std::vector<std::vector<bool>> reach = reach_matrix(ba);
   std::vector<bool> on(n, false);
-  for (std::uint32_t qa = 0; qa < n; ++qa) {
-    if (!ba.is_accepting_state(qa)) continue;
-    for (std::uint32_t q = 0; q < n; ++q) on[q] = on[q] || (reach[q][qa] && reach[qa][q]);
-  }
+  for_each_accepting_edge(ba, [&](std::uint32_t u, std::uint32_t v) {
+    for (std::uint32_t q = 0; q < n; ++q)
+      on[q] = on[q] || ((q == u || reach[q][u]) && (q == v || reach[v][q]));
+  });
   return on;
 }
 

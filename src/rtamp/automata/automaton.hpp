@@ -67,6 +67,12 @@ class Automaton {
   Marks all_marks() const { return num_sets >= 32 ? ~Marks{0} : ((Marks{1} << num_sets) - 1); }
   // State-based: q is accepting. Transition-based automata: false.
   bool is_accepting_state(std::uint32_t q) const { return state_based && state_accepting[q]; }
+  // Büchi acceptance as a property of edges (state-based, or num_sets <= 1):
+  // a cycle is accepting iff it takes an edge for which this holds. State-based:
+  // the edge enters an accepting state; one set: the edge carries it; none: any.
+  bool accepting_edge(const Edge& e) const {
+    return state_based ? bool(state_accepting[e.dst]) : num_sets == 0 || (e.marks & 1u) != 0;
+  }
 };
 
 // No state has two edges whose guards share a letter.

@@ -447,6 +447,7 @@ class Parser {
     std::vector<std::pair<std::int64_t, Tok>> starts;
     std::vector<std::string> aps;
     std::string name;
+    bool trans_acc = false;  // properties: trans-acc
 
     const Tok hoa = expect(T::Header, "at the start of an automaton (HOA: v1)");
     if (hoa.text != "HOA") lex_.fail("expected 'HOA:' at the start of an automaton, found " + show(hoa), hoa);
@@ -509,11 +510,13 @@ class Parser {
       } else if (std::isupper(static_cast<unsigned char>(h.text[0]))) {
         lex_.fail("unsupported header item '" + h.text + ":'", h);
       } else {
-        // Lower-case items (acc-name, tool, properties, ...) may be ignored.
+        // Lower-case items (acc-name, tool, properties, ...) may be ignored;
+        // `properties: trans-acc` keeps one set without marks transition-based.
         while (true) {
           const T k = lex_.peek().kind;
           if (k != T::Ident && k != T::Bool && k != T::Int && k != T::String) break;
-          lex_.next();
+          const Tok item = lex_.next();
+          trans_acc = trans_acc || (h.text == "properties" && item.kind == T::Ident && item.text == "trans-acc");
         }
       }
     }
@@ -606,7 +609,7 @@ class Parser {
     } else if (nsets == 0) {
       state_based = true;  // "t": every run accepts, i.e. every state accepts
     } else {
-      state_based = nsets == 1 && !edge_sigs;
+      state_based = nsets == 1 && !edge_sigs && !trans_acc;
     }
     a.state_based = state_based;
     a.num_sets = state_based ? 1 : nsets;

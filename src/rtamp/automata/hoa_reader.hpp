@@ -20,8 +20,10 @@
 // (`Start: 0&1`, `[0] 1&2`), unknown upper-case header items, more than 64 APs.
 // Result: state-based (state_based == true, num_sets == 1) when every mark (of
 // a set the acceptance condition uses) is
-// on `State:` lines and one set remains; otherwise transition-based with each
-// state's marks moved onto its outgoing edges.
+// on `State:` lines and one set remains, unless `properties:` says trans-acc
+// (a one-set automaton written transition-based, even one without marks,
+// stays so); otherwise transition-based with each state's marks moved onto
+// its outgoing edges.
 // Errors: rtamp::Error with file:line:column of the offending token.
 #pragma once
 

@@ -6,6 +6,7 @@
 
 #include "rtamp/automata/checked_merge.hpp"
 #include "rtamp/automata/degeneralize.hpp"
+#include "rtamp/automata/degeneralize_tba.hpp"
 #include "rtamp/automata/emptiness.hpp"
 #include "rtamp/automata/gba.hpp"
 #include "rtamp/automata/product.hpp"
@@ -212,6 +213,13 @@ Automaton translate(const ltl::Formula& input, const TranslateOptions& opt) {
   remap_atoms(a, atoms);
   if (a.state_based) a.num_sets = 1;
   if (opt.wdba && !done) try_wdba(a, ltl::is_syntactic_obligation(nnf), opt, negation);
+  if (!opt.state_based && opt.one_set) {
+    a = degeneralize_tba(a);
+    if (opt.reduce) {
+      reduce_all(a, false);
+      a = degeneralize_tba(a);  // the reductions may leave no set (every cycle accepting)
+    }
+  }
   a.name = ltl::to_string(input);
   return a;
 }

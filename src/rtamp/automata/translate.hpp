@@ -21,7 +21,7 @@
 // can reach an accepting cycle unless the language is empty (then the result
 // is a single state without edges); state_based == opt.state_based; when
 // state_based, num_sets == 1; otherwise num_sets = number of acceptance sets
-// in use (0 means every infinite run accepts).
+// in use (0 means every infinite run accepts), or exactly 1 with one_set.
 #pragma once
 
 #include "rtamp/automata/automaton.hpp"
@@ -38,6 +38,9 @@ enum class Construction {
 
 struct TranslateOptions {
   bool state_based = true;  // true: state-based Büchi (BA, 1 acceptance set); false: TGBA
+  // With state_based == false: one acceptance set on edges (a transition-based
+  // Büchi automaton, degeneralize_tba.hpp), the form the planner accepts on.
+  bool one_set = false;
   bool simplify = true;     // ltl::simplify before translating
   bool reduce = true;       // post-translation reductions (useless states, simulation, merging)
   bool shortcuts = true;    // direct constructions for Boolean / G p / F p / G F p / F G p

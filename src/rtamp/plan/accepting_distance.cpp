@@ -39,11 +39,18 @@ void AcceptingDistance::dijkstra(const ProductGraph& g, bool forward, std::vecto
   d.assign(n, kInf);
   heap_.clear();
   const auto later = std::greater<std::pair<double, NodeId>>{};
-  for (NodeId v = 0; v < n; ++v)
-    if (g.accepting(v)) {
-      d[v] = 0;
-      heap_.emplace_back(0.0, v);
-    }
+  // Seeds: the accepting nodes at 0 (state-based); transition-based, for
+  // each accepting edge u -> v, v at 0 going forward and u at the edge's
+  // cost going backward (to(n) counts the accepting edge itself).
+  auto seed = [&](NodeId v, double c) {
+    if (c < d[v]) d[v] = c, heap_.emplace_back(c, v);
+  };
+  for (NodeId v = 0; v < n; ++v) {
+    if (g.accepting(v)) seed(v, 0);
+    if (g.transition_based())
+      for (std::uint32_t e = g.edge_begin(v); e < g.edge_end(v); ++e)
+        if (g.accepting_edge(e)) forward ? seed(g.edge(e).dst, 0) : seed(v, g.edge(e).cost);
+  }
   std::make_heap(heap_.begin(), heap_.end(), later);
   auto relax = [&](NodeId w, double c) {
     if (c < d[w]) {

@@ -2,7 +2,10 @@
 // (every node expanded), for bounds on cycles where the chain bound has none
 // (systems with containers): to(n) = the least cost of a path from n to an
 // accepting node, from(n) = the least cost of a path from one to n (both 0 at
-// accepting nodes, +inf where there is none). Every cycle through a
+// accepting nodes, +inf where there is none). Transition-based: to(n) = the
+// least cost of a path from n through an accepting edge (the edge included),
+// from(n) = the least cost of a path from an accepting edge's end to n: the
+// accepting set is then the accepting edges, and the bounds below hold alike. Every cycle through a
 // non-accepting J that passes an accepting node costs at least to(J) +
 // from(J); a cycle search's way from x back to J, before it has passed an
 // accepting node, at least to(x) + from(J), and after, at least from(J) −

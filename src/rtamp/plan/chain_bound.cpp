@@ -112,7 +112,7 @@ ChainBound::ChainBound(const task::System& ts, const task::Labeling& lab, const 
           forced.push_back(std::move(at));
         }
       }
-      steps.push_back({q, e.dst, idx});
+      steps.push_back({q, e.dst, idx, ba.accepting_edge(e)});
     }
   }
   n_forcing_ = static_cast<std::uint32_t>(cubes_.size());
@@ -146,16 +146,35 @@ ChainBound::ChainBound(const task::System& ts, const task::Labeling& lab, const 
         arcs_[node(st.src, l)].push_back({node(st.dst, c), d_[std::size_t{l} * n_forcing_ + c]});
       }
     }
+  transition_based_ = !ba.state_based;
   accepting_.assign(n_states_, false);
   for (std::uint32_t q = 0; q < n_states_; ++q) accepting_[q] = useful[q] && ba.is_accepting_state(q);
+  if (transition_based_)
+    for (const auto& st : steps) accepting_[st.dst] = accepting_[st.dst] || st.accepting;
   dist_.resize(n);
   done_.resize(n);
   for (std::uint32_t q = 0; q < n_states_; ++q) {
     double best = kInf;
     if (accepting_[q])
       for (std::uint32_t l = 0; l <= n_forcing_; ++l) {
-        dijkstra(node(q, l), true);
-        best = std::min(best, dist_[node(q, l)]);
+        if (!transition_based_) {
+          dijkstra(node(q, l), true);
+          best = std::min(best, dist_[node(q, l)]);
+          continue;
+        }
+        // A walk from (q, l) to some (u, l'), then an accepting step u -> q
+        // landing on (q, l) again.
+        dijkstra(node(q, l), false);
+        for (const auto& st : steps) {
+          if (!st.accepting || st.dst != q) continue;
+          for (std::uint32_t l1 = 0; l1 <= n_forcing_; ++l1) {
+            const double du = dist_[node(st.src, l1)];
+            if (du == kInf) continue;
+            if (st.forcing < 0 && l1 == l) best = std::min(best, du);
+            if (st.forcing == static_cast<int>(l) && l1 < n_forcing_)
+              best = std::min(best, du + d_[std::size_t{l1} * n_forcing_ + l]);
+          }
+        }
       }
     kappa_[q] = best;
   }
@@ -259,7 +278,7 @@ double ChainBound::from_state(const task::State& s, std::uint32_t c) const {
 }
 
 double ChainBound::cycle_bound_at(const task::State& s, std::uint32_t q) const {
-  return path_bound(s, q, s, q, accepting_[q]);
+  return path_bound(s, q, s, q, starts_accepted(q));
 }
 
 double ChainBound::path_bound(const task::State& s, std::uint32_t q, const task::State& target,
@@ -287,7 +306,7 @@ double ChainBound::path_bound(const task::State& s, std::uint32_t q, const task:
   auto relax = [&](std::uint32_t qq, std::uint32_t l, std::uint32_t seen, double du) {
     for (const Step& st : steps_) {
       if (st.src != qq) continue;
-      const std::uint32_t seen2 = seen | (accepting_[st.dst] ? 1u : 0u);
+      const std::uint32_t seen2 = seen | (st.accepting ? 1u : 0u);
       std::uint32_t l2 = l;
       double w = 0;
       if (st.forcing >= 0) {
@@ -299,7 +318,7 @@ double ChainBound::path_bound(const task::State& s, std::uint32_t q, const task:
       if (du + w < dist[m]) dist[m] = du + w;
     }
   };
-  relax(q, F, accepted || accepting_[q] ? 1 : 0, 0);
+  relax(q, F, accepted || starts_accepted(q) ? 1 : 0, 0);
   for (;;) {
     const std::uint32_t u = least_open(dist, done, best);
     if (u == n) break;

@@ -18,7 +18,11 @@
 // overlap); the first forcing guard c1 costs LB(s, c1) from the start state s.
 // A lasso through an accepting node with automaton state qa also pays, in its
 // cycle, the D-sum around some automaton cycle through qa: kappa(qa) = the
-// least such sum. The prefix may join the cycle anywhere (plan/lasso_search.hpp),
+// least such sum. Transition-based automata (acceptance on edges): qa ranges
+// over the states an accepting edge enters, and kappa(qa) is the least D-sum
+// of a closed walk from qa whose last step is an accepting edge (a lasso's
+// cycle, turned to start where its accepting edge ends, is one); the walks
+// below track "accepting seen" by the steps they take. The prefix may join the cycle anywhere (plan/lasso_search.hpp),
 // so the path to qa and the cycle may share their stretch from the join to
 // qa: the lasso costs at least max(path to qa, kappa(qa)), not their sum.
 // So, with the graph G over (automaton state q, last forcing guard l or none)
@@ -109,8 +113,12 @@ class ChainBound {
 
   struct Step {
     std::uint32_t src, dst;
-    int forcing;  // index into cubes_, or -1
+    int forcing;     // index into cubes_, or -1
+    bool accepting;  // Automaton::accepting_edge (state-based: dst is accepting)
   };
+  // A walk starting at q has passed acceptance already (state-based: q is
+  // accepting; transition-based: never, acceptance is on the steps).
+  bool starts_accepted(std::uint32_t q) const { return !transition_based_ && accepting_[q]; }
   const task::System* ts_ = nullptr;
   const MotionCostModel* model_ = nullptr;
   std::vector<Step> steps_;                // the useful automaton edges that can hold
@@ -120,8 +128,14 @@ class ChainBound {
   std::vector<automata::Cube> cubes_;
   std::vector<double> d_;                   // D(i, j) at i * n_forcing_ + j
   std::vector<std::vector<Arc>> arcs_;      // per node of G
+  // State-based: the accepting states; transition-based: the states an
+  // accepting step enters (every accepting cycle passes one). kappa is kept
+  // for these.
   std::vector<bool> accepting_;
-  std::vector<double> kappa_;               // per automaton state; kInf: no cycle through it
+  bool transition_based_ = false;
+  // per automaton state; kInf: no cycle through it (transition-based: no
+  // closed walk through it that ends with an accepting step)
+  std::vector<double> kappa_;
   double min_kappa_ = 0;                     // over the accepting states
   std::vector<double> zero_tail_;           // per automaton state
   struct Tail {

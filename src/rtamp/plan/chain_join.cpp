@@ -64,16 +64,16 @@ void ChainBound::build_join() {
     auto visit = [&](std::uint32_t u, std::uint32_t sn) {
       if (!reach[u * 2 + sn]) reach[u * 2 + sn] = 1, todo.push_back(u * 2 + sn);
     };
-    const std::uint32_t acc0 = accepting_[qj] ? 1 : 0;
+    const std::uint32_t acc0 = starts_accepted(qj) ? 1 : 0;
     for (const Step& st : steps_)  // at least one step
-      if (st.src == qj && st.forcing < 0) visit(st.dst, acc0 | (accepting_[st.dst] ? 1u : 0u));
+      if (st.src == qj && st.forcing < 0) visit(st.dst, acc0 | (st.accepting ? 1u : 0u));
     std::vector<std::uint8_t> start(S * 2, 0);
     start[qj * 2 + acc0] = 1;
     while (!todo.empty()) {
       const std::uint32_t v = todo.back();
       todo.pop_back();
       for (const Step& st : steps_)
-        if (st.src == v / 2 && st.forcing < 0) visit(st.dst, (v % 2) | (accepting_[st.dst] ? 1u : 0u));
+        if (st.src == v / 2 && st.forcing < 0) visit(st.dst, (v % 2) | (st.accepting ? 1u : 0u));
     }
     free[qj] = reach[qj * 2 + 1];
     for (std::uint32_t v = 0; v < S * 2; ++v) start[v] = start[v] | reach[v];
@@ -84,7 +84,7 @@ void ChainBound::build_join() {
       for (const Step& st : steps_)
         for (std::uint32_t sn = 0; sn < 2; ++sn)
           if (st.forcing == static_cast<int>(g1) && start[st.src * 2 + sn])
-            dist[id(st.dst, g1, sn | (accepting_[st.dst] ? 1u : 0u))] = 0, any = true;
+            dist[id(st.dst, g1, sn | (st.accepting ? 1u : 0u))] = 0, any = true;
       if (!any) continue;
       for (;;) {
         const std::uint32_t u = least_open(dist, done);
@@ -93,7 +93,7 @@ void ChainBound::build_join() {
         const std::uint32_t uq = u / 2 / F, ul = (u / 2) % F, us = u % 2;
         for (const Step& st : steps_) {
           if (st.src != uq) continue;
-          const std::uint32_t sn = us | (accepting_[st.dst] ? 1u : 0u);
+          const std::uint32_t sn = us | (st.accepting ? 1u : 0u);
           const std::uint32_t l = st.forcing < 0 ? ul : static_cast<std::uint32_t>(st.forcing);
           const double w = st.forcing < 0 ? 0.0 : d_[std::size_t{ul} * F + l];
           const std::uint32_t m = id(st.dst, l, sn);

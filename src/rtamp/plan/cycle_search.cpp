@@ -71,7 +71,13 @@ int CycleSearch::on_accepting_cycle(NodeId n, SearchStats& stats) {
     // root's SCC is the stack from root up.
     const auto first = std::find(scc_stack_.rbegin(), scc_stack_.rend(), root).base() - 1;
     bool acc = false, edge = scc_stack_.end() - first > 1;
-    for (auto it = first; it != scc_stack_.end(); ++it) acc = acc || g.accepting(*it);
+    // An accepting edge inside the SCC (its members are the stack from root up).
+    for (auto it = first; it != scc_stack_.end() && !acc; ++it)
+      for (std::uint32_t x = g.edge_begin(*it); x < g.edge_end(*it) && !acc; ++x) {
+        const NodeId w = g.edge(x).dst;
+        acc = g.accepting_edge(x) && scc_stamp_[w] == scc_gen_ && scc_state_[w] == 1 &&
+              scc_index_[w] >= scc_index_[root];
+      }
     if (!edge)
       for (std::uint32_t x = g.edge_begin(root); x < g.edge_end(root) && !edge; ++x) edge = g.edge(x).dst == root;
     const bool yes = acc && edge;
@@ -84,12 +90,13 @@ int CycleSearch::on_accepting_cycle(NodeId n, SearchStats& stats) {
   return scc_state_[n] == 3;
 }
 
-// Relaxes edge e out of search node `from` (2 * node + layer; start_ stands for the target itself).
+// Relaxes edge e out of search node `from` (2 * node + layer, layer 1 once the
+// path has taken an accepting edge; start_ stands for the target itself).
 void CycleSearch::relax(NodeId from, std::uint32_t e) {
   ProductGraph& g = *g_;
   SearchSpace& S = space_;
   const ProductEdge& pe = g.edge(e);
-  const NodeId m = 2 * pe.dst + ((from & 1) | (g.accepting(pe.dst) ? 1 : 0));
+  const NodeId m = 2 * pe.dst + ((from & 1) | (g.accepting_edge(e) ? 1 : 0));
   const double ng = (from == start_ ? 0.0 : S.g[from]) + pe.cost;
   const std::uint32_t nm = (from == start_ ? 0 : S.m[from]) + (pe.action != task::Action::stay().packed() ? 1 : 0);
   if (pe.dst == target_) {  // back at the target: a cycle if it went through an accepting node

@@ -1,5 +1,6 @@
 // The cycle half of the lasso search: the cheapest cycle through a product node
-// that contains an accepting node, in the order (cost, moves), below a bound.
+// that takes an accepting edge (ProductGraph::accepting_edge; state-based:
+// passes an accepting node), in the order (cost, moves), below a bound.
 // Answers go into the experience's cycle table — exact with the cycle's path,
 // or "none below (cost, moves)" — so no node's cycle is searched twice for the
 // same bound on one graph. A node whose unbounded search finds nothing has its
@@ -56,7 +57,8 @@ class CycleSearch {
   SearchSpace space_;
   std::vector<std::uint32_t> path_;
   // One cycle search: its target n (in layer 0 and 1: id = 2 * node + layer,
-  // layer 1 once the path has entered an accepting node), the incumbent.
+  // layer 1 once the path has taken an accepting edge: for a state-based
+  // automaton, entered an accepting node, or started at one), the incumbent.
   NodeId target_ = kNoNode, start_ = kNoNode, goal_ = kNoNode;
   task::State target_state_;
   std::uint32_t target_q_ = 0;

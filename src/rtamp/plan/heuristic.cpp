@@ -22,19 +22,25 @@ GuardHeuristic::GuardHeuristic(const ProductGraph& g)
   for (std::uint32_t q = 0; q < n; ++q)
     for (const auto& e : ba_->edges[q])
       if (e.dst != q && useful_[e.dst] && !e.guard.is_false()) exits_[q].push_back(e.guard);
-  direct_.assign(n, true);
+  // Transition-based: no state is accepting, so no exit is "direct"; an
+  // accepting edge is also a step into the sink (state n), where walks to
+  // acceptance end.
+  direct_.assign(n, ba_->state_based);
   for (std::uint32_t q = 0; q < n; ++q)
     for (const auto& e : ba_->edges[q])
       if (e.dst != q && useful_[e.dst] && !e.guard.is_false() && !accepting_[e.dst]) direct_[q] = false;
-  steps_.resize(n);
+  steps_.resize(n + 1);
   for (std::uint32_t q = 0; q < n; ++q)
     if (useful_[q])
       for (const auto& e : ba_->edges[q])
-        if (useful_[e.dst] && !e.guard.is_false()) steps_[q].push_back({e.dst, e.guard});
+        if (useful_[e.dst] && !e.guard.is_false()) {
+          steps_[q].push_back({e.dst, e.guard});
+          if (!ba_->state_based && ba_->accepting_edge(e)) steps_[q].push_back({n, e.guard});
+        }
   literal_.assign(2 * std::size_t{lab_->num_atoms()}, 0);
   literal_stamp_.assign(literal_.size(), 0);
-  walk_d_.resize(n);
-  walk_done_.resize(n);
+  walk_d_.resize(n + 1);
+  walk_done_.resize(n + 1);
   if (ts_->num_containers() == 0) {  // ChainBound needs one thing per move
     chain_ = std::make_unique<ChainBound>(*ts_, *lab_, *ba_, *model_, useful_);
     if (chain_->enabled()) chain_first_.resize(chain_->forcing_cubes().size());
@@ -102,7 +108,7 @@ double GuardHeuristic::walk(const task::State& s, std::uint32_t q, std::uint32_t
 }
 
 double GuardHeuristic::walk_from(const task::State& s, std::uint32_t q, std::uint32_t target) {
-  const std::uint32_t n = ba_->num_states();
+  const std::uint32_t n = ba_->num_states() + 1;  // the sink too
   std::fill(walk_d_.begin(), walk_d_.end(), kInf);
   std::fill(walk_done_.begin(), walk_done_.end(), 0);
   // First step out of q (it may return to q), then a minimax Dijkstra.
@@ -112,7 +118,7 @@ double GuardHeuristic::walk_from(const task::State& s, std::uint32_t q, std::uin
     for (std::uint32_t v = 0; v < n; ++v)
       if (!walk_done_[v] && walk_d_[v] < kInf && (u == n || walk_d_[v] < walk_d_[u])) u = v;
     if (u == n) return kInf;
-    if (u == target || (target == kAnyAccepting && accepting_[u])) return walk_d_[u];
+    if (u == target || (target == kAnyAccepting && (u == n - 1 || accepting_[u]))) return walk_d_[u];
     walk_done_[u] = 1;
     for (const auto& [dst, cube] : steps_[u]) {
       if (walk_done_[dst]) continue;

@@ -3,7 +3,8 @@
 // same search with ZeroHeuristic).
 //
 // GuardHeuristic, h(s, q), a lower bound on the cost from (s, q) to an
-// accepting product node:
+// accepting product node (transition-based automata: to taking an accepting
+// edge, whose walk ends with that edge and reads its guard too):
 //   0 if q is accepting; otherwise every path to acceptance follows some walk
 //   q -> q1 -> ... -> qk (qk accepting, all useful) of the BA, each of whose
 //   guards holds in the label of a TS state on the way, so the path costs at
@@ -58,10 +59,11 @@ class Heuristic {
   // an accepting node). 0 is always correct.
   virtual double walk_bound(const ProductGraph&, NodeId, std::uint32_t /*target*/) { return 0; }
   // Lower bound on the cost of every cycle (>= 1 step) through node n that
-  // contains an accepting node (the cycle of a lasso joined at n). 0 is always correct.
+  // takes an accepting edge (passes an accepting node; the cycle of a lasso
+  // joined at n). 0 is always correct.
   virtual double cycle_bound(const ProductGraph&, NodeId) { return 0; }
   // Lower bound on the cost of a path of at least one step from node n to
-  // node `target` that passes an accepting node unless `accepted` (the rest
+  // node `target` that takes an accepting edge unless `accepted` (the rest
   // of a cycle search's cycle back to its join node). 0 is always correct.
   virtual double return_bound(const ProductGraph&, NodeId, NodeId /*target*/, bool /*accepted*/) { return 0; }
 };
@@ -93,7 +95,8 @@ class GuardHeuristic : public Heuristic {
   // included) reads each guard in some TS state on the way, so a path along it
   // costs at least the largest LB(s, guard); walk() is the smallest such
   // largest value over all walks (a minimax path over the useful states).
-  // target = kAnyAccepting: the walk may end in any accepting state.
+  // target = kAnyAccepting: the walk may end in any accepting state, or
+  // (transition-based) with any accepting edge.
   static constexpr std::uint32_t kAnyAccepting = ~std::uint32_t{0};
   double walk(const task::State& s, std::uint32_t q, std::uint32_t target);
   double evaluate(const task::State& s, std::uint32_t q);
@@ -115,8 +118,10 @@ class GuardHeuristic : public Heuristic {
   std::vector<bool> accepting_;
   std::vector<std::vector<automata::Cube>> exits_;  // per BA state: guards of the edges to other useful states
   std::vector<bool> direct_;  // every exit of the state enters an accepting state (walk = cheapest exit)
-  // walk(): the useful edges (self-loops included) per BA state, literal
-  // bounds computed at most once per call (stamped), minimax distances.
+  // walk(): the useful edges (self-loops included) per BA state, and a step
+  // into the sink (index num_states()) per accepting edge of a
+  // transition-based automaton; literal bounds computed at most once per call
+  // (stamped), minimax distances.
   std::vector<std::vector<std::pair<std::uint32_t, automata::Cube>>> steps_;
   std::vector<double> literal_;
   std::vector<std::uint32_t> literal_stamp_;

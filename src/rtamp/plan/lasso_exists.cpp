@@ -4,6 +4,7 @@
 
 #include <algorithm>
 
+#include "rtamp/automata/degeneralize_tba.hpp"
 #include "rtamp/plan/termination.hpp"
 
 namespace rtamp::plan {
@@ -161,6 +162,13 @@ class Explorer {
 LassoExistence find_accepting_lasso(const task::System& ts, const task::Labeling& lab, const automata::Automaton& ba,
                                     const std::vector<std::uint32_t>& starts, std::size_t max_nodes,
                                     std::int64_t deadline_ns) {
+  // Acceptance on states here: a transition-based automaton is searched in
+  // its state-based form (the same state ids, accepting copies after them).
+  if (!ba.state_based) {
+    const automata::Automaton sb = automata::state_based_form(ba);
+    Explorer e(ts, lab, sb);
+    return e.run(starts, max_nodes, deadline_ns);
+  }
   Explorer e(ts, lab, ba);
   return e.run(starts, max_nodes, deadline_ns);
 }

@@ -193,7 +193,11 @@ SearchStatus LassoSearch::step(SearchStats& stats) {
   if (config_.learn && x_->solved(n)) return status_;
   ++stats.expanded;
   ProductGraph& g = *g_;
-  if (g.accepting(n)) {
+  if (g.transition_based() && !g.expanded(n)) {  // accepting_anchor reads n's edges
+    g.expand(n);
+    ++stats.successor_generations;
+  }
+  if (g.accepting_anchor(n)) {
     if (!try_cycle(n, stats)) return stop(SearchStatus::Stopped);
     if (early_ == Early::Waiting) {
       // Early searches need a lower bound on the cycle itself to set theirs.
@@ -214,6 +218,12 @@ SearchStatus LassoSearch::step(SearchStats& stats) {
         cand_.push_back({key, S.g[n], n, S.m[n]});
         std::push_heap(cand_.begin(), cand_.end(), after);
       }
+      // Transition-based: no start node is accepting, whose search would
+      // decide the early searches (a state-based start often is); the first
+      // candidate whose cycle the heuristic bounds from below starts them.
+      if (early_ == Early::Waiting && g.transition_based() && config_.cycle_heuristic &&
+          h_->cycle_bound(g, n) > 0)
+        early_ = Early::On;
     }
   }
   expand(n, stats);

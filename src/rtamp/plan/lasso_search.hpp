@@ -1,10 +1,11 @@
 // The lasso search (paper Section III.B): a minimum-cost lasso over all start
-// nodes — a prefix to a node J and a cycle (>= 1 edge) back to J through an
-// accepting node, joined anywhere; cost prefix + cycle, ties broken by fewer
-// moves. A best-first search over prefixes; at each accepting node and each
-// join candidate (a node whose automaton state lies on an accepting cycle) the
-// cycle search (plan/cycle_search.hpp) prices the cheapest cycle below the
-// incumbent. In the shape of Fast Downward's engines: initialize(), then
+// nodes — a prefix to a node J and a cycle (>= 1 edge) back to J that takes
+// an accepting edge (state-based: passes an accepting node), joined anywhere;
+// cost prefix + cycle, ties broken by fewer moves. A best-first search over
+// prefixes; at each anchor (ProductGraph::accepting_anchor: an accepting
+// node, or a node an accepting edge leaves) and each join candidate (a node
+// whose automaton state lies on an accepting cycle) the cycle search
+// (plan/cycle_search.hpp) prices the cheapest cycle below the incumbent. In the shape of Fast Downward's engines: initialize(), then
 // step() until it is not InProgress, then result(); run() does all three.
 // Invariants: every heuristic is admissible (a cost bound, moves part 0);
 // learned bounds and solved paths from the experience never exceed the true

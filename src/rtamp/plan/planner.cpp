@@ -32,7 +32,10 @@ Planner::Planner(world::Scenario scenario, PlannerOptions options)
   if (scenario_.task.empty()) throw Error("the scenario has no task", scenario_.task_where);
   task::validate_task(scenario_);  // every atom names a proposition or a valid expression
   formula_ = ltl::parse(scenario_.task, scenario_.task_where);
-  ba_ = automata::translate(formula_);
+  automata::TranslateOptions t;
+  t.state_based = !options_.transition_based;
+  t.one_set = options_.transition_based;
+  ba_ = automata::translate(formula_, t);
   init();
 }
 

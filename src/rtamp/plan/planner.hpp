@@ -59,6 +59,11 @@ struct PlannerOptions {
   bool diagnose_capacity = true;               // on failure, check for a lasso without capacities to tell "capacity"
   bool symmetry = true;                        // search the quotient by interchangeable objects
                                                // (task::System::set_symmetry; costs are unchanged)
+  // Translate the task to a transition-based Büchi automaton (one set on
+  // edges) and accept on the product's edges, instead of a state-based BA
+  // (docs/planning.md "Acceptance on transitions"). An automaton given to the
+  // constructor is searched in the form it has.
+  bool transition_based = false;
 };
 
 class Planner {

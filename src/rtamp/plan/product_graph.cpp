@@ -79,10 +79,18 @@ void ProductGraph::expand(NodeId n) {
   const automata::Letter l = lab_->label(s);
   labels_[n] = l;
   succ_q_.clear();
-  for (const auto& e : ba_->edges[q_[n]])
-    if (e.guard.matches(l) && useful_[e.dst] &&
-        std::find(succ_q_.begin(), succ_q_.end(), e.dst) == succ_q_.end())
+  succ_acc_.clear();
+  const bool tb = !ba_->state_based;
+  for (const auto& e : ba_->edges[q_[n]]) {
+    if (!e.guard.matches(l) || !useful_[e.dst]) continue;
+    const auto at = std::find(succ_q_.begin(), succ_q_.end(), e.dst);
+    if (at == succ_q_.end()) {
       succ_q_.push_back(e.dst);
+      succ_acc_.push_back(tb && ba_->accepting_edge(e));
+    } else if (tb && ba_->accepting_edge(e)) {
+      succ_acc_[static_cast<std::size_t>(at - succ_q_.begin())] = 1;
+    }
+  }
   const auto begin = static_cast<std::uint32_t>(edges_.size());
   if (!succ_q_.empty()) {
     const std::uint32_t stay = task::Action::stay().packed();
@@ -99,6 +107,9 @@ void ProductGraph::expand(NodeId n) {
       const task::State s2 = ts_->canonical_successor(s, a);
       for (std::uint32_t q2 : succ_q_) edges_.push_back({find_or_add(s2, q2), a.packed(), c});
     });
+    if (tb)  // the stays, then each move's edges, in succ_q_ order
+      for (std::size_t i = begin; i < edges_.size(); ++i)
+        edge_accepting_.push_back(succ_acc_[(i - begin) % succ_q_.size()] != 0);
   }
   edge_begin_[n] = begin;
   edge_end_[n] = static_cast<std::uint32_t>(edges_.size());
@@ -145,7 +156,7 @@ bool ProductGraph::expand_all(const std::vector<NodeId>& from, std::size_t max_n
 std::size_t ProductGraph::memory_bytes() const {
   return states_.capacity() * sizeof(std::uint64_t) + q_.capacity() * 4 + edge_begin_.capacity() * 4 +
          edge_end_.capacity() * 4 + labels_.capacity() * sizeof(automata::Letter) +
-         edges_.capacity() * sizeof(ProductEdge) + table_.capacity() * 4;
+         edges_.capacity() * sizeof(ProductEdge) + edge_accepting_.capacity() / 8 + table_.capacity() * 4;
 }
 
 }  // namespace rtamp::plan

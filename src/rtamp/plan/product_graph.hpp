@@ -15,6 +15,11 @@
 // one array, and an open-addressing table of node ids (linear probing, load
 // <= 1/2). Arrays grow geometrically; nothing is allocated per node.
 // Only BA states that can reach an accepting cycle ("useful") are entered.
+// Acceptance is on edges (Automaton::accepting_edge): for a state-based BA an
+// edge accepts when it enters an accepting node; for a transition-based one
+// (one set on edges) when some automaton edge it stands for carries the set
+// (one bit per edge, kept only then). A cycle is accepting iff it takes an
+// accepting edge.
 // Invariants: node ids are dense 0..size()-1 and never change; an expanded
 // node's edges are edges_[edge_begin(n) .. edge_end(n)) and never change.
 // The graph stays valid as long as the System, Labeling, Automaton and the
@@ -69,7 +74,24 @@ class ProductGraph {
     return s;
   }
   std::uint32_t ba_state(NodeId n) const { return q_[n]; }
+  // n's automaton state is accepting (state-based automata; never for a
+  // transition-based one, whose acceptance is on edges only).
   bool accepting(NodeId n) const { return ba_->is_accepting_state(q_[n]); }
+  bool transition_based() const { return !ba_->state_based; }
+  // Edge i accepts (see the header comment).
+  bool accepting_edge(std::uint32_t i) const {
+    return ba_->state_based ? accepting(edges_[i].dst) : bool(edge_accepting_[i]);
+  }
+  // Where the lasso search prices a cycle as soon as it reaches the node:
+  // state-based, an accepting node; transition-based, an expanded node an
+  // accepting edge leaves (a cycle taking that edge passes through it).
+  bool accepting_anchor(NodeId n) const {
+    if (ba_->state_based) return accepting(n);
+    if (!expanded(n)) return false;
+    for (std::uint32_t e = edge_begin_[n]; e < edge_end_[n]; ++e)
+      if (edge_accepting_[e]) return true;
+    return false;
+  }
   bool useful(std::uint32_t q) const { return useful_[q]; }
   // q lies on an automaton cycle through an accepting state: only nodes in
   // such states can lie on a lasso's cycle (automata/accepting_cycles.hpp).
@@ -119,8 +141,10 @@ class ProductGraph {
   std::vector<std::uint32_t> edge_begin_, edge_end_;
   std::vector<automata::Letter> labels_;
   std::vector<ProductEdge> edges_;
+  std::vector<bool> edge_accepting_;  // per edge, transition-based automata only
   std::vector<std::uint32_t> table_;  // node id + 1, 0 = empty
   std::vector<std::uint32_t> succ_q_;  // scratch: BA successors of the node being expanded
+  std::vector<std::uint8_t> succ_acc_;  // scratch: per succ_q_ entry, an accepting edge leads there
   std::uint64_t expansions_ = 0;
   std::uint64_t impossible_moves_ = 0;
 };
