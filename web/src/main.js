@@ -19,6 +19,7 @@ import { AutomatonPanel } from './panels/automaton.js';
 import { TimelinePanel } from './panels/timeline.js';
 import { ControlsPanel } from './panels/controls.js';
 import { PersonPanel } from './panels/person.js';
+import { CameraPanel } from './panels/camera.js';
 import { installTestHook } from './testhook.js';
 
 const $ = (s) => document.querySelector(s);
@@ -45,6 +46,7 @@ app.plan = new PlanPanel($('#plan'));
 app.automaton = new AutomatonPanel($('#automaton'));
 app.timeline = new TimelinePanel($('#timeline'), $('#scrub'), (t) => control('seek', t));
 app.controls = new ControlsPanel($('#controls'), (a, v) => control(a, v));
+app.camera = new CameraPanel($('#camera-section'), $('#camera'), $('#camera-caption'));
 
 function control(action, value) {
   return app.conn.control(action, value).then((r) => (r.ok ? r : app.notice.reply(action, r)));
@@ -175,6 +177,9 @@ function onMessage(m) {
       break;
     case 'status':
       app.pending.status = m.s;
+      break;
+    case 'camera':
+      app.camera.show(m);
       break;
     case 'state':
       app.state = m;
