@@ -34,18 +34,21 @@ export class CameraPanel {
     const g = c.getContext('2d');
     g.drawImage(img, 0, 0);
     g.lineWidth = 2;
-    g.font = '13px sans-serif';
+    const px = Math.max(12, Math.round(m.height / 28)); // the labels' size: ~17 px on a 480-row image
+    g.font = `bold ${px}px sans-serif`;
     g.textBaseline = 'bottom';
     for (const b of m.boxes) {
       const colour = `rgb(${b.rgb.join(',')})`;
       g.strokeStyle = colour;
-      g.strokeRect(b.x0, b.y0, b.x1 - b.x0, b.y1 - b.y0);
+      // On whole pixels: the 2-px outline covers the pixels either side of each edge, crisp.
+      const [x0, y0, x1, y1] = [b.x0, b.y0, b.x1, b.y1].map(Math.round);
+      g.strokeRect(x0, y0, x1 - x0, y1 - y0);
       const w = g.measureText(b.label).width + 6;
-      const y = b.y0 >= 16 ? b.y0 : b.y1 + 16; // above the box, or below it at the top edge
+      const y = y0 >= px + 5 ? y0 - 1 : y1 + px + 5; // above the box, or below it at the top edge
       g.fillStyle = colour;
-      g.fillRect(b.x0, y - 16, w, 16);
+      g.fillRect(x0 - 1, y - px - 4, w, px + 4);
       g.fillStyle = '#000';
-      g.fillText(b.label, b.x0 + 3, y - 2);
+      g.fillText(b.label, x0 + 2, y - 2);
     }
     this.caption.textContent = `${m.camera} · t = ${m.t.toFixed(2)} s · ${m.boxes.length} detection${m.boxes.length === 1 ? '' : 's'}`;
     this.last = m;
