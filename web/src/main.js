@@ -4,7 +4,8 @@
 // a worker (view.js, render/): a frame message updates the main thread's copy of the
 // things (labels, picking) and is passed on to it; the panels that change per message
 // (log-driven panels, tree statuses, clock, gripper) and the labels are updated at most
-// once per animation frame, from the latest data.
+// once per animation frame, from the latest data. With camera perception, `camera`
+// messages go to the Camera panel (panels/camera.js), which draws the latest image.
 // Invariant: after every `hello` (connect, seek) the page's state is rebuilt from it
 // alone (scene, tree, history).
 import { Connection } from './connection.js';
