@@ -53,6 +53,7 @@ struct BatchArgs {
   std::string cost = "euclid";
   std::string log_dir;
   bool mcap = false;
+  double mcap_image_period = 1;
   bool scripted = false;
   bool no_randomize = false;
   bool quiet = false;
@@ -148,6 +149,7 @@ int run_batch(const BatchArgs& a) {
   opt.mcap = a.mcap;
   opt.episode = batch::batch_episode_defaults(a.world);
   opt.episode.world_settings.perception = a.perception;
+  opt.episode.outputs.mcap_image_period = a.mcap_image_period;
   if (a.perception != "truth" && a.world != "mujoco")
     throw Error("--perception " + a.perception + ": only the mujoco world has a camera (--world " + a.world + ")");
   opt.episode.loop.max_time = a.max_time;
@@ -292,6 +294,7 @@ rtamp::cli::Registrar reg{
       sub.add_flag("--mcap", a->mcap,
                    "Also write each episode as MCAP into --log-dir, beside its log (the same name, .mcap; zstd; "
                    "docs/formats.md)");
+      rtamp::cli::add_mcap_image_period(sub, a->mcap_image_period);
       rtamp::cli::add_choice(sub, "--world", a->world, rtamp::cli::world_choices(), "World:");
       rtamp::cli::add_choice(sub, "--perception", a->perception, rtamp::cli::perception_choices(),
                              "How the robot perceives:");

@@ -65,7 +65,14 @@ void add_episode_options(CLI::App& app, EpisodeArgs& a, const std::string& log_h
       app, "--mcap-compression", mcap_compression_choices(), "zstd",
       [&o](const std::string& s) { o.outputs.mcap_compression = episode::parse_mcap_compression(s); },
       "Compression of the --mcap file's chunks:");
+  add_mcap_image_period(app, o.outputs.mcap_image_period);
   app.add_option("--trees", o.outputs.trees, "Write the tree as BehaviorTree.CPP XML after each change into DIR");
+}
+
+CLI::Option* add_mcap_image_period(CLI::App& app, double& target) {
+  return add_real(app, "--mcap-image-period", target, {0, std::numeric_limits<double>::max(), false, true, "no images"},
+                  "With --perception camera: world seconds between the camera images written to the MCAP file, with "
+                  "their detection boxes (/camera/NAME/image and /annotations; 0: every frame; default 1)");
 }
 
 episode::EpisodeOptions episode_options(const EpisodeArgs& a) {

@@ -24,8 +24,10 @@ struct EpisodeArgs {
 
 // SCENARIO, --world, --algo, --bt, --cost, --planning, --seed, --change,
 // --rate, --failures, --cycles, --random-initial, --no-operator, --max-time,
-// --log (described by `log_help`), --mcap, --mcap-compression, --trees.
+// --log (described by `log_help`), --mcap, --mcap-compression, --mcap-image-period, --trees.
 void add_episode_options(CLI::App& app, EpisodeArgs& args, const std::string& log_help);
+// --mcap-image-period S (>= 0 or inf), into `target` (also `rtamp batch`'s).
+CLI::Option* add_mcap_image_period(CLI::App& app, double& target);
 
 // The episode's options after parsing: without --planning, the world's
 // planning mode (world_registry.hpp). No timeline, no interrupt flag: the command sets those.

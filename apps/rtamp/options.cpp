@@ -72,7 +72,7 @@ std::string RealRange::text() const {
   } else {
     out = (min_open ? "in (" : "in [") + format_number(min) + ", " + format_number(max) + "]";
   }
-  if (allow_inf) out += " or inf (no limit)";
+  if (allow_inf) out += std::string(" or inf (") + inf_means + ")";
   return out;
 }
 

@@ -31,6 +31,7 @@ struct RealRange {
   double max = std::numeric_limits<double>::max();
   bool min_open = false;   // (min, ...] instead of [min, ...]
   bool allow_inf = false;  // "inf": no limit
+  const char* inf_means = "no limit";  // what "inf" stands for, in the text
   std::string text() const;  // "> 0 or inf (no limit)", "in [0, 1]"
 };
 

@@ -571,6 +571,9 @@ void serve_cases(std::vector<Case>& t) {
   add({"--port", "80x"}, "--port:", "");
   add({"--speed", "-1"}, "--speed:", "in [0, 1000]");
   add({"--speed", "nan"}, "--speed:", "");
+  add({"--mcap-image-period", "-1"}, "--mcap-image-period:", ">= 0 or inf (no images)");
+  add({"--mcap-image-period", "nan"}, "--mcap-image-period:", "");
+  add({"--mcap-image-period", "1x"}, "--mcap-image-period:", "");
   add({"--world", "lego"}, "--world:", "lego");
   add({"--host", "localhost.invalid"}, "cannot listen on localhost.invalid:", "not an IP address");
   add({"--host", "203.0.113.7", "--port", "0"}, "cannot listen on 203.0.113.7:0:", "");

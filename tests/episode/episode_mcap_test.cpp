@@ -11,14 +11,21 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <algorithm>
+#include <cmath>
 #include <map>
+#include <set>
 #include <string>
 #include <vector>
 
 #include <Eigen/Geometry>
 #include <nlohmann/json.hpp>
 
+#include <png.h>
+
+#include "rtamp/episode/episode.hpp"
 #include "rtamp/robot/ur5_kinematics.hpp"
+#include "rtamp/world/camera.hpp"
 #include "rtamp/world/scenario_io.hpp"
 
 namespace rtamp::episode {
@@ -160,6 +167,121 @@ TEST(EpisodeMcap, TheArmIsAChainOfTheUr5sFrames) {
     EXPECT_TRUE(world.isApprox(expected[i], 1e-9)) << parent;
   }
   EXPECT_EQ(parent, "ur5/link6");
+}
+
+// Decodes base64 (the standard alphabet, padded).
+std::string unbase64(const std::string& text) {
+  static const std::string alphabet = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+  std::string out;
+  unsigned v = 0;
+  int bits = 0;
+  for (const char c : text) {
+    if (c == '=') break;
+    const auto k = alphabet.find(c);
+    if (k == std::string::npos) ADD_FAILURE() << "not base64: " << c;
+    v = v << 6 | static_cast<unsigned>(k);
+    bits += 6;
+    if (bits >= 8) {
+      bits -= 8;
+      out += static_cast<char>(v >> bits & 0xff);
+    }
+  }
+  return out;
+}
+
+// A PNG's size and RGB pixels (libpng), or false.
+bool decode_png(const std::string& bytes, int& width, int& height, std::vector<unsigned char>& rgb) {
+  png_image image{};
+  image.version = PNG_IMAGE_VERSION;
+  if (!png_image_begin_read_from_memory(&image, bytes.data(), bytes.size())) return false;
+  image.format = PNG_FORMAT_RGB;
+  rgb.resize(PNG_IMAGE_SIZE(image));
+  if (!png_image_finish_read(&image, nullptr, rgb.data(), 0, nullptr)) return false;
+  width = static_cast<int>(image.width);
+  height = static_cast<int>(image.height);
+  return true;
+}
+
+std::uint64_t nanos_of(const json& stamp) { return stamp.at("sec").get<std::uint64_t>() * 1000000000ULL + stamp.at("nsec").get<std::uint64_t>(); }
+
+struct CameraRun {
+  std::map<std::string, std::vector<std::string>> topics;
+  std::vector<double> frames;  // the camera records' times
+};
+
+// A short MuJoCo episode of 3-block-tray seen through its overhead camera, to MCAP.
+CameraRun camera_run(double period) {
+  const std::string path = (std::filesystem::path(::testing::TempDir()) / "episode_mcap_camera.mcap").string();
+  EpisodeOptions o;
+  o.world_settings.perception = "camera";
+  o.loop.max_time = 3;
+  o.outputs.mcap = path;
+  o.outputs.mcap_compression = McapCompression::None;
+  o.outputs.mcap_image_period = period;
+  run_episode(world::load_scenario("3-block-tray"), o);
+  CameraRun r;
+  r.topics = messages(path);
+  for (const std::string& text : r.topics["/rtamp/log"]) {
+    const json j = json::parse(text);
+    if (j.at("ev") == "camera") r.frames.push_back(j.at("t").get<double>());
+  }
+  std::filesystem::remove(path);
+  return r;
+}
+
+TEST(EpisodeMcap, CameraImagesAndTheirDetectionBoxes) {
+  const world::Scenario scenario = world::load_scenario("3-block-tray");
+  const std::vector<world::Camera> cameras = world::cameras_of(scenario);
+  const world::Camera& camera = world::primary_camera(cameras);
+  const std::string image_topic = "/camera/" + camera.name + "/image", boxes_topic = "/camera/" + camera.name + "/annotations";
+  const CameraRun r = camera_run(1);
+  ASSERT_GT(r.frames.size(), 20u);  // 10 frames a world second for 3 s
+  // One image a world second: the first frame's, then the first frame 1 s or more after the last.
+  std::vector<std::uint64_t> expected;
+  double last = -INFINITY;
+  for (const double t : r.frames)
+    if (t + 1e-9 >= last + 1) expected.push_back(static_cast<std::uint64_t>(std::llround(t * 1e9))), last = t;
+  ASSERT_EQ(r.topics.at(image_topic).size(), expected.size());
+  ASSERT_EQ(r.topics.at(boxes_topic).size(), expected.size());
+  std::set<std::string> labels;
+  for (std::size_t i = 0; i < expected.size(); ++i) {
+    const json image = json::parse(r.topics.at(image_topic)[i]);
+    EXPECT_EQ(nanos_of(image.at("timestamp")), expected[i]);
+    EXPECT_EQ(image.at("frame_id"), "camera/" + camera.name);
+    EXPECT_EQ(image.at("format"), "png");
+    int width = 0, height = 0;
+    std::vector<unsigned char> rgb;
+    ASSERT_TRUE(decode_png(unbase64(image.at("data")), width, height, rgb)) << "image " << i;
+    EXPECT_EQ(width, camera.width);
+    EXPECT_EQ(height, camera.height);
+    EXPECT_GT(*std::max_element(rgb.begin(), rgb.end()), 0) << "a black image";
+    const json boxes = json::parse(r.topics.at(boxes_topic)[i]);
+    EXPECT_EQ(boxes.at("points").size(), boxes.at("texts").size());
+    EXPECT_GE(boxes.at("points").size(), 3u) << "the three blocks and the tray are in view";
+    for (const json& box : boxes.at("points")) {
+      EXPECT_EQ(nanos_of(box.at("timestamp")), expected[i]);
+      EXPECT_EQ(box.at("type"), 2);
+      ASSERT_EQ(box.at("points").size(), 4u);
+      for (const json& p : box.at("points")) {
+        EXPECT_GE(p.at("x").get<double>(), 0);
+        EXPECT_LE(p.at("x").get<double>(), width);
+        EXPECT_GE(p.at("y").get<double>(), 0);
+        EXPECT_LE(p.at("y").get<double>(), height);
+      }
+    }
+    for (const json& text : boxes.at("texts")) labels.insert(text.at("text").get<std::string>());
+  }
+  // The things are named by the belief, with its states.
+  for (const char* label : {"o1 visible", "o2 visible", "o3 visible", "r3 visible"})
+    EXPECT_TRUE(labels.count(label)) << label;
+
+  // Every frame (period 0), or none (inf: no camera channels at all).
+  const CameraRun every = camera_run(0);
+  EXPECT_EQ(every.topics.at(image_topic).size(), every.frames.size());
+  const CameraRun none = camera_run(INFINITY);
+  EXPECT_FALSE(none.frames.empty());
+  EXPECT_EQ(none.topics.count(image_topic), 0u);
+  EXPECT_EQ(none.topics.count(boxes_topic), 0u);
 }
 
 }  // namespace

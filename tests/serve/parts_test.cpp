@@ -254,7 +254,7 @@ TEST(ServeThingLayout, ThingsInOneLocationGetDistinctSpots) {
 
 class RecordingClient final : public Client {
  public:
-  void send(std::shared_ptr<const std::string> m, bool) override { got.push_back(json::parse(*m)); }
+  void send(std::shared_ptr<const std::string> m, Slot) override { got.push_back(json::parse(*m)); }
   std::vector<json> got;
 };
 

@@ -5,7 +5,9 @@
 // run --world symbolic` runs, with the same seed); an intervention sent over
 // the WebSocket is applied, logged like a scripted one and reacted to within
 // one step; a refused one says why; only loopback is bound by default; a
-// replay reaches the logged end state and seeks.
+// replay reaches the logged end state and seeks; a MuJoCo episode with camera
+// perception (built on this thread, rendered on the loop's) sends its camera images,
+// at most 5 a second, the latest to a page that joins late.
 #include <gtest/gtest.h>
 
 #include <atomic>
@@ -161,6 +163,80 @@ std::string non_loopback_address() {
   } catch (const std::exception&) {
   }
   return "";
+}
+
+// A base64 PNG's width and height, from its IHDR chunk (0, 0 if it is not a PNG).
+std::pair<int, int> png_size(const std::string& b64) {
+  static const std::string alphabet = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+  std::string bytes;
+  unsigned v = 0;
+  int bits = 0;
+  for (std::size_t i = 0; i < b64.size() && bytes.size() < 24; ++i) {
+    v = v << 6 | static_cast<unsigned>(alphabet.find(b64[i]));
+    if ((bits += 6) >= 8) bytes += static_cast<char>(v >> (bits -= 8) & 0xff);
+  }
+  if (bytes.size() < 24 || bytes.compare(0, 8, "\x89PNG\r\n\x1a\n") != 0 || bytes.compare(12, 4, "IHDR") != 0) return {0, 0};
+  const auto be32 = [&](std::size_t at) {
+    int n = 0;
+    for (std::size_t k = 0; k < 4; ++k) n = n << 8 | static_cast<unsigned char>(bytes[at + k]);
+    return n;
+  };
+  return {be32(16), be32(20)};
+}
+
+TEST(ServeServer, CameraImagesComeFromTheLoopThreadAtMostFiveASecond) {
+  const world::Scenario s = world::load_scenario("3-block-tray");
+  LiveOptions o;
+  o.episode.world_settings.perception = "camera";
+  o.episode.loop.max_time = 300;
+  Served sv(s, o);  // the episode (and its EGL contexts) made on this thread, run on another
+  WsClient c(sv.port());
+  const auto is_camera = [](const json& m) { return m.value("type", "") == "camera"; };
+  const auto first = c.read_until(is_camera, std::chrono::seconds(30));
+  ASSERT_TRUE(first) << "no camera message";
+  EXPECT_EQ((*first)["camera"], "overhead");
+  const int width = (*first)["width"], height = (*first)["height"];
+  EXPECT_EQ(png_size((*first)["png"]), std::make_pair(width, height));
+  EXPECT_EQ(std::make_pair(width, height), std::make_pair(640, 480));
+  ASSERT_GE((*first)["boxes"].size(), 3u);
+  for (const json& b : (*first)["boxes"]) {
+    EXPECT_GE(b["x0"].get<double>(), 0);
+    EXPECT_LT(b["x0"].get<double>(), b["x1"].get<double>());
+    EXPECT_LE(b["x1"].get<double>(), width);
+    EXPECT_GE(b["y0"].get<double>(), 0);
+    EXPECT_LT(b["y0"].get<double>(), b["y1"].get<double>());
+    EXPECT_LE(b["y1"].get<double>(), height);
+    EXPECT_EQ(b["label"], (b["name"].get<std::string>().empty() ? b["cls"] : b["name"]).get<std::string>() + " " +
+                              b["state"].get<std::string>());
+  }
+  // For 3 s of wall time: the episode renders on (no error ends it), images come at most
+  // 5 a second (the camera takes 10 a world second, the episode runs at 1x).
+  const auto start = std::chrono::steady_clock::now();
+  int images = 0;
+  double last_t = (*first)["t"];
+  while (std::chrono::steady_clock::now() - start < std::chrono::seconds(3)) {
+    const auto m = c.read(std::chrono::seconds(5));
+    ASSERT_TRUE(m);
+    if (!is_camera(*m)) continue;
+    ++images;
+    EXPECT_GT((*m)["t"].get<double>(), last_t);
+    last_t = (*m)["t"];
+  }
+  const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  EXPECT_GE(images, 3) << "over " << wall << " s";
+  EXPECT_LE(images, 5 * wall + 1) << "over " << wall << " s";
+  EXPECT_FALSE(sv.episode.ended());
+  // A page that joins now gets the latest image right after its hello and frame (Hub::join
+  // sends the three before any broadcast reaches it).
+  WsClient late(sv.port());
+  for (const char* type : {"hello", "frame", "camera"}) {
+    const auto m = late.read();
+    ASSERT_TRUE(m);
+    EXPECT_EQ((*m)["type"], type);
+    if (is_camera(*m)) {
+      EXPECT_GE((*m)["t"].get<double>(), last_t);
+    }
+  }
 }
 
 TEST(ServeServer, OnlyLoopbackIsBoundByDefault) {

@@ -3,10 +3,16 @@
 // the segmentation pass gives to a block back-projects (intrinsics, extrinsics, the
 // linearised depth) to a point on that block's true box, and the pixel where a block's
 // top centre projects shows that block at the depth of its top face; the wrist camera
-// rides on the flange and looks along the tool axis.
+// rides on the flange and looks along the tool axis; a rig (and a Renderer) made on one
+// thread renders on any other, one after the other (`rtamp serve` builds the episode on
+// its main thread and steps it on the loop's).
 #include <gtest/gtest.h>
 
+#include <functional>
+#include <thread>
+
 #include "rtamp/sim/camera_rig.hpp"
+#include "rtamp/sim/renderer.hpp"
 #include "test_scenarios.hpp"
 
 namespace rtamp::sim {
@@ -99,6 +105,36 @@ TEST(CameraRig, WristCameraRidesOnTheFlange) {
   rig.render(k, im);
   EXPECT_EQ(im.width, 424);
   EXPECT_EQ(im.height, 240);
+}
+
+TEST(CameraRig, RendersOnWhicheverThreadRenders) {
+  const world::Scenario s = testing::three_block(false);
+  Simulation sim(s);
+  CameraRig rig(sim, world::cameras_of(s));
+  Renderer overview(sim, {.width = 320, .height = 240});
+  const std::size_t k = rig.index("overhead", {});
+  CameraImage first, again;
+  std::vector<std::uint8_t> picture;
+  std::string error;
+  const auto on_another_thread = [&](const std::function<void()>& f) {
+    std::thread([&] {
+      try {
+        f();
+      } catch (const std::exception& e) {
+        error = e.what();
+      }
+    }).join();
+  };
+  on_another_thread([&] { rig.render(k, first, {.noise = false, .segmentation = false}); });
+  ASSERT_EQ(error, "");
+  on_another_thread([&] { overview.render(picture); });
+  ASSERT_EQ(error, "");
+  rig.render(k, again, {.noise = false, .segmentation = false});  // and back on this one
+  on_another_thread([&] { overview.render(picture); });
+  ASSERT_EQ(error, "");
+  ASSERT_EQ(first.rgb.size(), static_cast<std::size_t>(640) * 480 * 3);
+  EXPECT_EQ(first.rgb, again.rgb);  // the same picture from either thread
+  EXPECT_EQ(picture.size(), static_cast<std::size_t>(320) * 240 * 3);
 }
 
 TEST(CameraRig, UnknownCameraIsNamed) {

@@ -4,7 +4,8 @@
 // a worker (view.js, render/): a frame message updates the main thread's copy of the
 // things (labels, picking) and is passed on to it; the panels that change per message
 // (log-driven panels, tree statuses, clock, gripper) and the labels are updated at most
-// once per animation frame, from the latest data.
+// once per animation frame, from the latest data. With camera perception, `camera`
+// messages go to the Camera panel (panels/camera.js), which draws the latest image.
 // Invariant: after every `hello` (connect, seek) the page's state is rebuilt from it
 // alone (scene, tree, history).
 import { Connection } from './connection.js';
@@ -19,6 +20,7 @@ import { AutomatonPanel } from './panels/automaton.js';
 import { TimelinePanel } from './panels/timeline.js';
 import { ControlsPanel } from './panels/controls.js';
 import { PersonPanel } from './panels/person.js';
+import { CameraPanel } from './panels/camera.js';
 import { installTestHook } from './testhook.js';
 
 const $ = (s) => document.querySelector(s);
@@ -45,6 +47,7 @@ app.plan = new PlanPanel($('#plan'));
 app.automaton = new AutomatonPanel($('#automaton'));
 app.timeline = new TimelinePanel($('#timeline'), $('#scrub'), (t) => control('seek', t));
 app.controls = new ControlsPanel($('#controls'), (a, v) => control(a, v));
+app.camera = new CameraPanel($('#camera-section'), $('#camera'), $('#camera-caption'));
 
 function control(action, value) {
   return app.conn.control(action, value).then((r) => (r.ok ? r : app.notice.reply(action, r)));
@@ -175,6 +178,9 @@ function onMessage(m) {
       break;
     case 'status':
       app.pending.status = m.s;
+      break;
+    case 'camera':
+      app.camera.show(m);
       break;
     case 'state':
       app.state = m;

@@ -78,6 +78,11 @@ export function installTestHook(app) {
     get armPoints() {
       return app.arm ? linkFrames(app.arm.robot, app.arm.q).map(origin) : null;
     },
+    // The Camera panel: camera messages received and drawn, and the last one drawn.
+    get camera() {
+      const c = app.camera;
+      return { received: c.received, drawn: c.drawn, last: c.last };
+    },
     get latencies() {
       return app.latencies;
     },

@@ -22,6 +22,10 @@
 //               drawn by the drawing worker (OffscreenCanvas)
 //   fallback    the same picture drawn on the main thread (?render=main), and a drag
 //   mujoco      --paused makes the first plan; drag in the MuJoCo world (label slow)
+//   camera      --perception camera: the Camera panel shows the latest camera image the
+//               server sent (the page joins late: the kept one), at its size, with a box
+//               and label per detection drawn over it in the label's colour; live
+//               images follow once resumed, at most 5 a second (label slow)
 import assert from 'node:assert/strict';
 import { spawnSync } from 'node:child_process';
 import { existsSync, readFileSync, writeFileSync } from 'node:fs';
@@ -499,6 +503,57 @@ const cases = {
       assert.equal(intervention.subject, 'o3');
       assert.equal(intervention.applied, true, JSON.stringify(intervention));
       assert.ok(REACTIONS.has(r.ev));
+    });
+  },
+
+  async camera() {
+    await withPage([scenario('3-block-tray'), '--world', 'mujoco', '--perception', 'camera', '--no-operator', '--paused'], async ({ page, ws }) => {
+      const cameraMessages = () => ws.received.filter((m) => m.type === 'camera');
+      // Paused, the first frame was taken (the first plan's percept): the page, which
+      // joined after it, gets it right after its hello.
+      await waitFor(() => cameraMessages().length > 0, 'the kept camera message');
+      await page.waitForFunction(() => window.rtamp.camera.drawn > 0, null, { timeout: 30000 });
+      const sent = cameraMessages().at(-1);
+      const shown = await page.evaluate(() => {
+        const c = document.querySelector('#camera');
+        const g = c.getContext('2d');
+        const at = (x, y) => [...g.getImageData(Math.round(x), Math.round(y), 1, 1).data.slice(0, 3)];
+        const last = window.rtamp.camera.last;
+        return {
+          hidden: document.querySelector('#camera-section').hidden,
+          size: [c.width, c.height],
+          onScreen: c.getBoundingClientRect().width,
+          caption: document.querySelector('#camera-caption').textContent,
+          t: last.t,
+          // The outline's colour on each box's left edge, halfway down (a 2-px stroke).
+          edges: last.boxes.map((b) => ({ label: b.label, rgb: b.rgb, edge: at(b.x0, (b.y0 + b.y1) / 2) })),
+          // Not a blank canvas: the image's pixels vary.
+          distinct: new Set(Array.from({ length: 64 }, (_, i) => at((i * 97) % c.width, (i * 53) % c.height).join(','))).size,
+        };
+      });
+      assert.equal(shown.hidden, false, 'the Camera panel is shown');
+      assert.deepEqual(shown.size, [sent.width, sent.height]);
+      assert.deepEqual(shown.size, [640, 480]);
+      assert.ok(shown.onScreen > 100, `the image is ${shown.onScreen} px wide on the page`);
+      assert.equal(shown.t, sent.t);
+      assert.ok(shown.distinct > 8, `${shown.distinct} distinct colours in 64 samples: an image`);
+      assert.ok(shown.edges.length >= 3, `${shown.edges.length} boxes`);
+      assert.deepEqual(shown.edges.map((e) => e.label), sent.boxes.map((b) => b.label));
+      for (const e of shown.edges) {
+        assert.ok(e.edge.every((v, i) => Math.abs(v - e.rgb[i]) <= 40), `${e.label}: the box's edge ${e.edge} in its colour ${e.rgb}`);
+        assert.match(e.label, /^\S+ (visible|occluded|held|out-of-view|missing|new)$/);
+      }
+      for (const n of ['o1', 'o2', 'o3']) assert.ok(sent.boxes.some((b) => b.label === `${n} visible`), `${n} visible`);
+      assert.match(shown.caption, /^overhead · t = /);
+      // Resumed: newer images follow, at most 5 a wall second.
+      const before = cameraMessages().length, start = Date.now();
+      await page.click('#pause');
+      await waitFor(() => cameraMessages().length >= before + 5, 'five more camera messages');
+      const wall = (Date.now() - start) / 1000, got = cameraMessages().length - before;
+      assert.ok(got <= 5 * wall + 1, `${got} camera messages in ${wall.toFixed(2)} s`);
+      const ts = cameraMessages().map((m) => m.t);
+      assert.ok(ts.every((t, i) => i === 0 || t > ts[i - 1]), 'newer and newer');
+      await page.waitForFunction((t) => window.rtamp.camera.last && window.rtamp.camera.last.t >= t, ts.at(-2), { timeout: 30000 });
     });
   },
 };

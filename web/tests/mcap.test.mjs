@@ -288,6 +288,64 @@ for (const r of runs) {
   console.log(`ok mujoco: ${joints} joint states`);
 }
 
+// Camera perception: per camera, its images (foxglove.CompressedImage, PNG) and the
+// detections' boxes (foxglove.ImageAnnotations), one image a world second by default
+// (--mcap-image-period 1): the first frame's, then the first frame 1 s or more after the
+// last written; every frame with 0; none (no camera channels) with inf. The check above
+// holds both to Foxglove's schemas; here the PNGs are decoded (pngjs) to the camera's
+// size and every box lies inside its image.
+{
+  const run = (period) => {
+    const log = path.join(tmp, `camera-${period}.jsonl`), out = path.join(tmp, `camera-${period}.mcap`);
+    rtamp(['run', '3-block-tray', '--perception', 'camera', '--max-time', '3', '--quiet', '--log', log, '--mcap', out,
+      '--mcap-image-period', period], 'ran');
+    return { log, out, frames: fs.readFileSync(log, 'utf8').split('\n').filter((l) => l.includes('"ev":"camera"')).map((l) => JSON.parse(l)) };
+  };
+  const { PNG } = await import('pngjs');
+  const nanos = (s) => BigInt(s.sec) * 1000000000n + BigInt(s.nsec);
+  const one = run('1');
+  const { topics } = await check(one.out, one.log, 'zstd', true);
+  const camera = one.frames[0].camera;
+  const images = topics.get(`/camera/${camera}/image`), boxes = topics.get(`/camera/${camera}/annotations`);
+  let last = -Infinity;
+  const expected = [];
+  for (const f of one.frames) if (f.t + 1e-9 >= last + 1) expected.push(BigInt(Math.round(f.t * 1e9))), (last = f.t);
+  assert.equal(images.length, expected.length, 'one image a world second');
+  assert.deepEqual(images.map((m) => m.logTime), expected);
+  assert.deepEqual(boxes.map((m) => m.logTime), expected);
+  // The scenario names no cameras: the default overhead one, 640 x 480.
+  for (const [i, m] of images.entries()) {
+    const j = JSON.parse(m.text);
+    assert.equal(j.format, 'png');
+    assert.equal(j.frame_id, `camera/${camera}`);
+    const png = Buffer.from(j.data, 'base64');
+    assert.deepEqual([...png.subarray(0, 8)], [0x89, 0x50, 0x4e, 0x47, 0x0d, 0x0a, 0x1a, 0x0a], 'the PNG signature');
+    assert.equal(png.subarray(12, 16).toString('latin1'), 'IHDR');
+    assert.deepEqual([png.readUInt32BE(16), png.readUInt32BE(20)], [640, 480], 'the header says 640 x 480');
+    const decoded = PNG.sync.read(png);
+    assert.deepEqual([decoded.width, decoded.height], [640, 480]);
+    const a = JSON.parse(boxes[i].text);
+    assert.ok(a.points.length >= 3, `${a.points.length} boxes: the blocks are in view`);
+    assert.equal(a.texts.length, a.points.length);
+    for (const b of a.points) {
+      assert.equal(nanos(b.timestamp), m.logTime);
+      assert.equal(b.type, 2);
+      for (const p of b.points) assert.ok(p.x >= 0 && p.x <= 640 && p.y >= 0 && p.y <= 480, `(${p.x}, ${p.y}) inside the image`);
+    }
+    for (const t of a.texts) assert.match(t.text, /^\S+ (visible|occluded|held|out-of-view|missing|new)$/);
+  }
+  const every = run('0');
+  const all = await check(every.out, every.log, 'zstd', true);
+  assert.equal(all.topics.get(`/camera/${camera}/image`).length, every.frames.length, 'every frame');
+  const none = run('inf');
+  const noImages = await check(none.out, none.log, 'zstd', true);
+  assert.ok(!noImages.topics.has(`/camera/${camera}/image`) && none.frames.length > 0, 'no images');
+  const bad = rtamp(['run', '3-block-tray', '--perception', 'camera', '--mcap-image-period', '-1', '--mcap', path.join(tmp, 'bad-period.mcap')], 2);
+  assert.match(bad.stderr, /^rtamp: error: --mcap-image-period: /);
+  assert.ok(!fs.existsSync(path.join(tmp, 'bad-period.mcap')));
+  console.log(`ok camera: ${images.length} images (${one.frames.length} frames), ${all.topics.get(`/camera/${camera}/image`).length} with period 0`);
+}
+
 // Bad input: one line naming what and where, exit 2, no output left behind.
 {
   const bad = path.join(tmp, 'bad.jsonl'), out = path.join(tmp, 'bad.mcap');

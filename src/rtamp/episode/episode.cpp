@@ -10,6 +10,7 @@
 #include "rtamp/episode/video_recorder.hpp"
 #include "rtamp/episode/episode_mcap.hpp"
 #include "rtamp/episode/mcap_arm.hpp"
+#include "rtamp/episode/mcap_camera.hpp"
 #include "rtamp/exec/episode_log.hpp"
 #include "rtamp/exec/person_world.hpp"
 #include "rtamp/exec/timeline.hpp"
@@ -95,6 +96,9 @@ Episode::Episode(const world::Scenario& input, const EpisodeOptions& opt, const 
   loop_ = std::make_unique<exec::ReactiveLoop>(wrapper_ ? *wrapper_ : *seen, scenario, lo);
 
   const EpisodeOutputs& out = opt.outputs;
+  if (!(out.mcap_image_period >= 0))
+    throw Error("the MCAP image period must be >= 0 s (0: every frame, inf: none), not " +
+                std::to_string(out.mcap_image_period));
   if (!out.log.empty()) log_ = std::make_unique<exec::EpisodeLog>(out.log);
   if (!out.mcap.empty()) {
     // The MCAP file gets the log's records as they are written (a log without a file if none).
@@ -119,6 +123,14 @@ Episode::Episode(const world::Scenario& input, const EpisodeOptions& opt, const 
   if (mcap_ && sim_world_) {
     mcap_arm_ = std::make_unique<McapArm>(sim_world_->session().sim(), *mcap_);
     loop_->add_observer(*mcap_arm_);  // after the log: a tick's record, then the arm
+    sim::Perception& perception = sim_world_->session().perception();
+    if (perception.camera() && std::isfinite(out.mcap_image_period)) {
+      // After the log's observer: a frame's `camera` record, then its image.
+      mcap_camera_ = std::make_unique<McapCamera>(*mcap_, perception.camera()->camera_name(), out.mcap_image_period);
+      perception.add_frame_observer([m = mcap_camera_.get(), sw = sim_world_](const sim::CameraPerception& frame) {
+        m->frame(sw->session().sim().time(), frame);
+      });
+    }
   }
   if (timeline_) loop_->add_observer(*timeline_);
   if (trees_) loop_->add_observer(*trees_);

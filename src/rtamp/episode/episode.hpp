@@ -41,6 +41,9 @@ struct EpisodeOutputs {
   std::string log;    // JSON Lines episode log (docs/exec.md)
   std::string mcap;   // the same records as MCAP, with Foxglove channels (episode_mcap.hpp)
   McapCompression mcap_compression = McapCompression::Zstd;
+  // Camera perception: world seconds between the images written to the MCAP file
+  // (mcap_camera.hpp); 0: every frame; inf: none. >= 0 (rtamp::Error otherwise).
+  double mcap_image_period = 1;
   std::string trees;  // directory: BehaviorTree.CPP XML of the tree after each change
   std::string video;  // MP4 of the run (worlds that film: MuJoCo)
   std::function<void(const std::string&)> timeline;  // readable lines as they happen
@@ -70,6 +73,7 @@ EpisodeMetrics run_episode(const world::Scenario& scenario, const EpisodeOptions
 
 class EpisodeMcap;
 class McapArm;
+class McapCamera;
 class SimWorld;
 class VideoRecorder;
 
@@ -104,6 +108,7 @@ class Episode {
   std::unique_ptr<EpisodeMcap> mcap_;  // fed by log_'s sink
   std::unique_ptr<exec::EpisodeLog> log_;
   std::unique_ptr<McapArm> mcap_arm_;  // the MuJoCo arm's joint angles into mcap_
+  std::unique_ptr<McapCamera> mcap_camera_;  // camera perception's images into mcap_
   std::unique_ptr<exec::TreeDump> trees_;
   std::unique_ptr<exec::Timeline> timeline_;
   std::unique_ptr<world::Person> person_;

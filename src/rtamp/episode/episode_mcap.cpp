@@ -241,6 +241,7 @@ struct EpisodeMcap::Impl {
   std::vector<std::string> region_tails;                      // the regions' entities after their timestamps
   std::map<std::string, std::pair<std::array<double, 11>, std::string>> thing_tails;  // a thing's, with its pose
   std::uint16_t log, timeline, interventions, replans, plan, tree_ch, automaton, scene, joints, tf;
+  std::map<std::string, std::uint16_t> observer_schemas;  // add_channel's, by name
 
   Impl(const std::string& path, McapCompression c, const world::Scenario* s, std::size_t chunk_bytes)
       : out(path, c, chunk_bytes) {
@@ -597,6 +598,18 @@ void EpisodeMcap::add(std::string_view record) {
 void EpisodeMcap::arm(double t, const std::array<double, 6>& q) {
   impl_->live_arm = true;
   impl_->draw_arm(nanos(t), q);
+}
+
+std::uint16_t EpisodeMcap::add_channel(const std::string& topic, const std::string& schema_name,
+                                       const std::string& schema) {
+  auto [it, added] = impl_->observer_schemas.try_emplace(schema_name, 0);
+  if (added) it->second = impl_->out.add_schema(schema_name, "jsonschema", schema);
+  return impl_->out.add_channel(topic, it->second, "json");
+}
+
+void EpisodeMcap::write(std::uint16_t channel, double t, std::string_view message) {
+  const std::uint64_t ns = nanos(t);
+  impl_->out.write(channel, ns, ns, message);
 }
 
 void EpisodeMcap::close() { impl_->out.close(); }

@@ -14,7 +14,8 @@
 //   /timeline       foxglove.Log           everything that happened, one line each
 //   /interventions  foxglove.Log           interventions (refused ones as warnings)
 //   /replans        foxglove.Log           replan requests
-// Message times are the records' world times (ns). Used live, as a sink of the
+// and the channels of observers that write their own (add_channel, write: a
+// camera's images, mcap_camera.hpp). Message times are the records' world times (ns). Used live, as a sink of the
 // episode log (Episode, `--mcap`), and by `rtamp log to-mcap` on a finished log.
 #pragma once
 
@@ -45,6 +46,12 @@ class EpisodeMcap {
   // /tf, as a `frame` record with q gives them (live MuJoCo episodes: McapArm).
   // Once called, `frame` records' joint angles are not drawn (no arm twice).
   void arm(double t, const std::array<double, 6>& q);
+  // A channel of JSON messages whose JSON Schema `schema` is titled
+  // `schema_name` (a schema is written once per name), for observers that
+  // write messages of their own; its id for write().
+  std::uint16_t add_channel(const std::string& topic, const std::string& schema_name, const std::string& schema);
+  // One message (JSON text) of such a channel at world time `t` (s).
+  void write(std::uint16_t channel, double t, std::string_view message);
   // Writes the summary and closes the file (the destructor does it quietly).
   void close();
 

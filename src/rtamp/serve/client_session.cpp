@@ -31,17 +31,17 @@ class WsSession final : public Client, public std::enable_shared_from_this<WsSes
     ws_.async_accept(req, [self = shared_from_this()](beast::error_code ec) { self->on_accept(ec); });
   }
 
-  void send(std::shared_ptr<const std::string> message, bool frame) override {
+  void send(std::shared_ptr<const std::string> message, Slot slot) override {
     hub_.count_unsent(1);
-    net::post(ws_.get_executor(), [self = shared_from_this(), m = std::move(message), frame]() mutable {
-      self->enqueue(std::move(m), frame);
+    net::post(ws_.get_executor(), [self = shared_from_this(), m = std::move(message), slot]() mutable {
+      self->enqueue(std::move(m), slot);
     });
   }
 
  private:
   struct Out {
     std::shared_ptr<const std::string> m;
-    bool frame;
+    Slot slot;
   };
 
   void on_accept(beast::error_code ec) {
@@ -67,7 +67,7 @@ class WsSession final : public Client, public std::enable_shared_from_this<WsSes
 
   void reply(std::string text) {
     hub_.count_unsent(1);
-    enqueue(std::make_shared<const std::string>(std::move(text)), false);
+    enqueue(std::make_shared<const std::string>(std::move(text)), Slot::None);
   }
 
   bool take_token() {
@@ -106,22 +106,22 @@ class WsSession final : public Client, public std::enable_shared_from_this<WsSes
         const Request r = parse_request(msg);
         std::weak_ptr<WsSession> weak = shared_from_this();
         handler_.handle(r, [weak](std::string m) {
-          if (auto self = weak.lock()) self->send(std::make_shared<const std::string>(std::move(m)), false);
+          if (auto self = weak.lock()) self->send(std::make_shared<const std::string>(std::move(m)), Slot::None);
         });
       }
     }
     if (!closed_) read();
   }
 
-  void enqueue(std::shared_ptr<const std::string> m, bool frame) {
+  void enqueue(std::shared_ptr<const std::string> m, Slot slot) {
     if (closed_) {
       hub_.count_unsent(-1);
       return;
     }
-    // A frame replaces an unsent frame (not the one being written).
-    if (frame) {
+    // A frame replaces an unsent frame, a camera image an unsent one (not the one being written).
+    if (slot != Slot::None) {
       for (std::size_t i = writing_ ? 1 : 0; i < queue_.size(); ++i)
-        if (queue_[i].frame) {
+        if (queue_[i].slot == slot) {
           queued_bytes_ -= queue_[i].m->size();
           queued_bytes_ += m->size();
           queue_[i].m = std::move(m);
@@ -130,7 +130,7 @@ class WsSession final : public Client, public std::enable_shared_from_this<WsSes
         }
     }
     queued_bytes_ += m->size();
-    queue_.push_back(Out{std::move(m), frame});
+    queue_.push_back(Out{std::move(m), slot});
     if (queued_bytes_ > limits_.max_queued_bytes) {
       close();
       return;

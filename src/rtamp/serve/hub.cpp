@@ -56,8 +56,9 @@ std::string Hub::hello() const {
 void Hub::join(const std::shared_ptr<Client>& c) {
   std::lock_guard lock(mu_);
   flush_locked();  // the new client's hello has these records
-  c->send(share(hello_locked()), false);
-  if (!frame_.empty()) c->send(share(frame_), true);
+  c->send(share(hello_locked()), Slot::None);
+  if (!frame_.empty()) c->send(share(frame_), Slot::Frame);
+  if (camera_) c->send(camera_, Slot::Camera);
   clients_.push_back(c);
   count_.store(clients_.size());
 }
@@ -78,8 +79,8 @@ void Hub::clear() {
   }
 }
 
-void Hub::broadcast_locked(const std::shared_ptr<const std::string>& m, bool frame) {
-  for (const auto& c : clients_) c->send(m, frame);
+void Hub::broadcast_locked(const std::shared_ptr<const std::string>& m, Slot slot) {
+  for (const auto& c : clients_) c->send(m, slot);
 }
 
 void Hub::log_record(const std::string& record, bool urgent) {
@@ -96,7 +97,7 @@ void Hub::flush_locked() {
   batch_ += "]}";
   auto m = share(std::move(batch_));
   batch_.clear();
-  if (!clients_.empty()) broadcast_locked(m, false);
+  if (!clients_.empty()) broadcast_locked(m, Slot::None);
 }
 
 void Hub::flush() {
@@ -108,27 +109,35 @@ void Hub::tree(const std::string& message) {
   std::lock_guard lock(mu_);
   flush_locked();
   tree_ = message;
-  if (!clients_.empty()) broadcast_locked(share(message), false);
+  if (!clients_.empty()) broadcast_locked(share(message), Slot::None);
 }
 
 void Hub::status(const std::string& message) {
   std::lock_guard lock(mu_);
   flush_locked();
-  if (!clients_.empty()) broadcast_locked(share(message), false);
+  if (!clients_.empty()) broadcast_locked(share(message), Slot::None);
 }
 
 void Hub::frame(const std::string& message) {
   std::lock_guard lock(mu_);
   flush_locked();
   frame_ = message;
-  if (!clients_.empty()) broadcast_locked(share(message), true);
+  if (!clients_.empty()) broadcast_locked(share(message), Slot::Frame);
+}
+
+void Hub::camera(std::string message) {
+  auto m = share(std::move(message));
+  std::lock_guard lock(mu_);
+  flush_locked();
+  camera_ = m;
+  if (!clients_.empty()) broadcast_locked(m, Slot::Camera);
 }
 
 void Hub::state(const PlaybackState& s) {
   std::lock_guard lock(mu_);
   flush_locked();
   state_ = s;
-  if (!clients_.empty()) broadcast_locked(share(state_message(s)), false);
+  if (!clients_.empty()) broadcast_locked(share(state_message(s)), Slot::None);
 }
 
 PlaybackState Hub::state() const {
@@ -154,8 +163,8 @@ void Hub::reset(std::vector<std::string> history, std::string tree, std::string 
   frame_ = std::move(frame);
   state_ = s;
   if (clients_.empty()) return;
-  broadcast_locked(share(hello_locked()), false);
-  if (!frame_.empty()) broadcast_locked(share(frame_), true);
+  broadcast_locked(share(hello_locked()), Slot::None);
+  if (!frame_.empty()) broadcast_locked(share(frame_), Slot::Frame);
 }
 
 }  // namespace rtamp::serve

@@ -1,7 +1,7 @@
 // The hub of `rtamp serve` (docs/serve.md): what every page sees, shared between
 // the episode's thread and the server's connections — the episode's log records
-// so far (hello's `history`), the latest tree, frame and playback state — and
-// the broadcast of every new message to every connected client.
+// so far (hello's `history`), the latest tree, frame, camera image and playback
+// state — and the broadcast of every new message to every connected client.
 //
 // Log records are sent in batches: log_record() adds a record to the pending
 // `log` message, which goes out at once for an urgent record, else with the next
@@ -12,7 +12,8 @@
 // goes out as soon as it is written.
 //
 // Invariants: a client that join()s gets `hello` (built from the state at that
-// instant, every record kept), then the latest frame, before any later message,
+// instant, every record kept), then the latest frame and the latest camera
+// image (if any), before any later message,
 // and never a message or record twice or out of order: join, leave and every
 // broadcast hold one lock, and join flushes the pending records first.
 // Clients only queue what they are sent (Client::send never blocks), so a slow
@@ -27,12 +28,15 @@
 
 namespace rtamp::serve {
 
+// What a message may replace in a client's queue: a newer frame an unsent frame, a
+// newer camera image an unsent one; other messages replace nothing.
+enum class Slot { None, Frame, Camera };
+
 // One connected page. send() queues and returns at once (called under the hub's lock).
 class Client {
  public:
   virtual ~Client() = default;
-  // `frame`: a frame message (a newer frame may replace an unsent one).
-  virtual void send(std::shared_ptr<const std::string> message, bool frame) = 0;
+  virtual void send(std::shared_ptr<const std::string> message, Slot slot) = 0;
 };
 
 struct PlaybackState {
@@ -67,6 +71,8 @@ class Hub {
   void status(const std::string& message);
   // A `frame` message (kept: sent to a client after its hello).
   void frame(const std::string& message);
+  // A `camera` message (camera_message.hpp; kept: sent to a client after its hello and frame).
+  void camera(std::string message);
   // The playback state: kept (hello's speed, paused, t) and broadcast as `state`.
   void state(const PlaybackState& s);
   PlaybackState state() const;
@@ -83,7 +89,7 @@ class Hub {
 
  private:
   std::string hello_locked() const;
-  void broadcast_locked(const std::shared_ptr<const std::string>& m, bool frame);
+  void broadcast_locked(const std::shared_ptr<const std::string>& m, Slot slot);
   void flush_locked();
 
   mutable std::mutex mu_;
@@ -91,6 +97,7 @@ class Hub {
   std::vector<std::string> history_;  // the log records so far
   std::string batch_;  // the pending `log` message, unterminated ("" = none)
   std::string tree_, frame_;  // latest tree message, latest frame message ("" = none)
+  std::shared_ptr<const std::string> camera_;  // latest camera message (null = none)
   PlaybackState state_;
   std::vector<std::shared_ptr<Client>> clients_;
   std::atomic<std::size_t> count_{0};

@@ -6,7 +6,9 @@
 
 #include <nlohmann/json.hpp>
 
+#include "rtamp/episode/sim_world.hpp"
 #include "rtamp/exec/laid_out_frames.hpp"
+#include "rtamp/serve/camera_message.hpp"
 #include "rtamp/serve/frame.hpp"
 #include "rtamp/serve/paced_world.hpp"
 #include "rtamp/serve/scene_message.hpp"
@@ -18,6 +20,7 @@ namespace rtamp::serve {
 namespace {
 using Clock = std::chrono::steady_clock;
 constexpr auto kFrameInterval = std::chrono::microseconds(1000000 / 30);
+constexpr auto kCameraInterval = std::chrono::milliseconds(200);  // at most 5 camera images a wall second
 bool is_frame_record(const std::string& r) { return r.rfind("{\"ev\":\"frame\"", 0) == 0; }
 // Tick records (one a loop step) go to pages in batches (Hub::log_record).
 bool is_tick_record(const std::string& r) { return r.rfind("{\"ev\":\"tick\"", 0) == 0; }
@@ -90,6 +93,9 @@ LiveEpisode::LiveEpisode(const world::Scenario& scenario, LiveOptions options)
   log_->add_sink([this](const std::string& record) {
     if (!is_frame_record(record)) hub_->log_record(record, !is_tick_record(record));
   });
+  if (episode::SimWorld* sw = episode_->sim_world())
+    if (sw->session().perception().camera())
+      sw->session().perception().add_frame_observer([this](const sim::CameraPerception& f) { camera_frame(f); });
   observer_ = std::make_unique<Observer>(*this);
   episode_->loop().add_observer(*observer_);
   PlaybackState s;
@@ -252,6 +258,14 @@ void LiveEpisode::after_slice() {
     next_frame_record_ = t + options_.frame_record_period;
   }
   emit_frame(false);
+}
+
+void LiveEpisode::camera_frame(const sim::CameraPerception& f) {
+  // Encoded whether or not a page is connected: a page that joins gets the latest.
+  const auto now = Clock::now();
+  if (now < next_camera_) return;
+  next_camera_ = now + kCameraInterval;
+  hub_->camera(camera_message(episode_->world().time(), f));
 }
 
 exec::Frame LiveEpisode::frame() {

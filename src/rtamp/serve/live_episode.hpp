@@ -11,6 +11,9 @@
 //    solved for the tool point where the world has none, arm_angles.hpp), and one after each
 //    applied intervention; the log also gets a `frame` record every
 //    `frame_record_period` s of world time (replays move things with them);
+//  - with camera perception, the camera's latest image with its detections'
+//    boxes (`camera`, camera_message.hpp) at most 5 per wall second; a page that
+//    joins gets the latest one;
 //  - playback state after each control.
 // Pages' interventions (request.hpp) are queued and applied on the loop's
 // thread between slices of world time, through the world's intervention
@@ -42,6 +45,10 @@
 #include "rtamp/serve/intervention_check.hpp"
 #include "rtamp/serve/playback.hpp"
 #include "rtamp/serve/request_handler.hpp"
+
+namespace rtamp::sim {
+class CameraPerception;
+}
 
 namespace rtamp::serve {
 
@@ -84,6 +91,7 @@ class LiveEpisode final : public RequestHandler {
   void service();           // loop thread: apply queued interventions
   void after_slice();       // loop thread: frames
   void emit_frame(bool force);
+  void camera_frame(const sim::CameraPerception& frame);  // loop thread
   exec::Frame frame();
   void publish_state();
 
@@ -110,6 +118,7 @@ class LiveEpisode final : public RequestHandler {
   InterventionStats stats_;
 
   std::chrono::steady_clock::time_point next_frame_{};  // when the next unforced frame is due
+  std::chrono::steady_clock::time_point next_camera_{};  // when the next camera message may go
   bool changed_ = false;  // loop thread: a page's intervention was applied since the world last looked
   double next_frame_record_ = 0;
 };

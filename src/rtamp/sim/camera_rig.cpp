@@ -59,6 +59,8 @@ CameraRig::CameraRig(const Simulation& sim, std::vector<world::Camera> cameras, 
     throw Error("the model's offscreen buffer is smaller than the cameras' images");
   impl_ = std::make_unique<Impl>(w, h);
   Impl& r = *impl_;
+  const EglContext::Use gl(r.egl);
+  if (!gl.ok()) throw Error("offscreen rendering unavailable: eglMakeCurrent failed");
   mjv_defaultScene(&r.scene);
   mjv_defaultOption(&r.option);
   mjv_defaultCamera(&r.camera);
@@ -85,7 +87,7 @@ CameraRig::CameraRig(const Simulation& sim, std::vector<world::Camera> cameras, 
 CameraRig::~CameraRig() {
   if (!impl_) return;
   Impl& r = *impl_;
-  r.egl.make_current();  // free this context's GL objects, not another's
+  const EglContext::Use gl(r.egl);  // free this context's GL objects, not another's
   if (r.con_made) mjr_freeContext(&r.con);
   if (r.scene_made) mjv_freeScene(&r.scene);
 }
@@ -125,7 +127,8 @@ Extrinsics CameraRig::extrinsics(std::size_t camera) const {
 void CameraRig::render(std::size_t camera, CameraImage& out, CameraPasses passes) {
   const world::Camera& c = cameras_.at(camera);
   Impl& r = *impl_;
-  if (!r.egl.make_current()) throw Error("offscreen rendering: eglMakeCurrent failed");
+  const EglContext::Use gl(r.egl);
+  if (!gl.ok()) throw Error("offscreen rendering: eglMakeCurrent failed");
   const mjModel* m = sim_.model();
   const int w = c.width, h = c.height;
   const std::size_t n = static_cast<std::size_t>(w) * h;

@@ -48,18 +48,33 @@ EglContext::EglContext(int width, int height) {
   if (!eglBindAPI(EGL_OPENGL_API)) fail("eglBindAPI(OpenGL) failed");
   context_ = eglCreateContext(display, config, EGL_NO_CONTEXT, nullptr);
   if (context_ == EGL_NO_CONTEXT) fail("no OpenGL context");
-  if (!eglMakeCurrent(display, surface_, surface_, context_)) fail("eglMakeCurrent failed");
+  // Current once here, to prove it can be (then on no thread until a Use).
+  Use check(*this);
+  if (!check.ok()) fail("eglMakeCurrent failed");
 }
 
 EglContext::~EglContext() { release(); }
 
-bool EglContext::make_current() const noexcept {
-  return display_ != nullptr && eglMakeCurrent(display_, surface_, surface_, context_);
+EglContext::Use::Use(const EglContext& c) noexcept
+    : display_(c.display_),
+      previous_display_(eglGetCurrentDisplay()),
+      previous_context_(eglGetCurrentContext()),
+      previous_draw_(eglGetCurrentSurface(EGL_DRAW)),
+      previous_read_(eglGetCurrentSurface(EGL_READ)) {
+  ok_ = c.display_ != nullptr && eglMakeCurrent(c.display_, c.surface_, c.surface_, c.context_);
+}
+
+EglContext::Use::~Use() {
+  if (!ok_) return;
+  if (previous_context_ != EGL_NO_CONTEXT && previous_display_ != EGL_NO_DISPLAY)
+    eglMakeCurrent(previous_display_, previous_draw_, previous_read_, previous_context_);
+  else
+    eglMakeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
 }
 
 void EglContext::release() {
   if (display_ == nullptr) return;
-  eglMakeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
+  // Current on no thread: every Use has ended.
   if (context_ != nullptr) eglDestroyContext(display_, context_);
   if (surface_ != nullptr) eglDestroySurface(display_, surface_);
   display_ = context_ = surface_ = nullptr;

@@ -47,6 +47,9 @@ class Renderer {
   std::vector<std::uint8_t> flip_;
 };
 
+// An RGB image (width*height*3 bytes, top row first) as PNG bytes, in memory (the MCAP
+// file's and the page's camera images). Throws rtamp::Error on a size mismatch.
+std::string encode_png(const std::vector<std::uint8_t>& rgb, int width, int height);
 // Writes an RGB image as PNG. Throws rtamp::Error when the file cannot be written.
 void write_png(const std::string& path, const std::vector<std::uint8_t>& rgb, int width, int height);
 // Writes a 16-bit grey image (a depth map in mm) as PNG.
