@@ -110,6 +110,30 @@ TEST(Belief, RemovedOnlyAfterMissingForTheConfiguredTime) {
   EXPECT_EQ(b.placement().things.count("b2"), 0u);
 }
 
+// Frames come at times that are sums of simulation steps: three frames after the first
+// missing one is remove_after, give or take the rounding of those sums.
+TEST(Belief, RemovedAtTheFrameThatEndsTheConfiguredTimeDespiteRounding) {
+  const Scenario s = scene();
+  BeliefOptions o;
+  o.remove_after = 0.3;
+  Belief b(s, o);
+  auto d = all_seen(s);
+  d.erase(d.begin() + 2);  // b2 gone, its spot in view
+  double t = 3.3;
+  std::vector<double> frames;
+  for (int f = 0; f < 4; ++f) {
+    frames.push_back(t);
+    for (int k = 0; k < 50; ++k) t += 0.002;  // one 0.1 s frame period of 2 ms steps
+  }
+  ASSERT_LT(frames[3] - frames[0], 0.3);  // the sums' rounding, the case this guards
+  for (int f = 0; f < 3; ++f) {
+    b.update(frames[f], d, Spots{}, {});
+    ASSERT_NE(b.find("b2"), nullptr) << "frame " << f;
+  }
+  b.update(frames[3], d, Spots{}, {});
+  EXPECT_EQ(b.find("b2"), nullptr);
+}
+
 TEST(Belief, ANewThingAfterKSightingsWithANameNeverUsed) {
   const Scenario s = scene();
   BeliefOptions o;

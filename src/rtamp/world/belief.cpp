@@ -25,6 +25,10 @@ double distance(const Vec3& a, const Vec3& b) { return std::hypot(a[0] - b[0], a
 
 bool finite_positive(double x) { return std::isfinite(x) && x > 0; }
 
+// World time is a sum of simulation steps, so frames 0.1 s apart differ by 0.1 plus or minus
+// rounding: the belief's clocks compare durations within this tolerance.
+constexpr double kTimeTolerance = 1e-6;
+
 // How far from a thing a partly seen view of it may lie: its footprint's diagonal (the box
 // fitted to a part is anchored at the part's far edge).
 double reach(const BelievedThing& t, double radius) { return std::max(radius, std::hypot(t.size[0], t.size[1])); }
@@ -193,7 +197,7 @@ void Belief::judge_unseen(double time, const Visibility& visibility) {
   }
   // Missing long enough: believed removed (a container's contents stay where they are).
   const auto gone = [&](const BelievedThing& t) {
-    return t.state == ThingState::Missing && time - t.missing_since >= options_.remove_after;
+    return t.state == ThingState::Missing && time - t.missing_since >= options_.remove_after - kTimeTolerance;
   };
   for (const auto& t : things_)
     if (gone(t)) {
@@ -201,11 +205,11 @@ void Belief::judge_unseen(double time, const Visibility& visibility) {
       removed_.push_back({t, time});
     }
   std::erase_if(things_, gone);
-  std::erase_if(removed_, [&](const Removed& r) { return time - r.time > options_.reidentify_within; });
+  std::erase_if(removed_, [&](const Removed& r) { return time - r.time > options_.reidentify_within + kTimeTolerance; });
 }
 
 void Belief::promote(double time, const std::vector<Detection>& seen) {
-  std::erase_if(candidates_, [&](const Candidate& c) { return time - c.last_seen > options_.candidate_timeout; });
+  std::erase_if(candidates_, [&](const Candidate& c) { return time - c.last_seen > options_.candidate_timeout + kTimeTolerance; });
   for (std::size_t j = 0; j < seen.size(); ++j) {
     if (used_[j]) continue;
     const Detection& d = seen[j];
@@ -265,7 +269,7 @@ void Belief::promote(double time, const std::vector<Detection>& seen) {
         }
       }
       // Not yet new while a thing of its class is hidden: that one may have moved here.
-      if (!moved && time - c.first_seen < options_.hidden_wait) {
+      if (!moved && time - c.first_seen < options_.hidden_wait - kTimeTolerance) {
         bool hidden = false;
         for (const auto& t : things_) hidden = hidden || (t.cls == c.seen.cls && t.state == ThingState::Occluded);
         if (hidden) {
