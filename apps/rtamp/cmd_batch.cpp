@@ -150,8 +150,6 @@ int run_batch(const BatchArgs& a) {
   opt.episode = batch::batch_episode_defaults(a.world);
   opt.episode.world_settings.perception = a.perception;
   opt.episode.outputs.mcap_image_period = a.mcap_image_period;
-  if (a.perception != "truth" && a.world != "mujoco")
-    throw Error("--perception " + a.perception + ": only the mujoco world has a camera (--world " + a.world + ")");
   opt.episode.loop.max_time = a.max_time;
   opt.episode.loop.planner.cost = a.cost;
   opt.episode.randomize_initial = !a.no_randomize;

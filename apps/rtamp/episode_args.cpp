@@ -14,8 +14,9 @@ std::vector<Choice> world_choices() {
 
 std::vector<Choice> perception_choices() {
   return {{"truth", "the simulation's poses"},
-          {"camera", "RGB-D frames of the scenario's primary camera, segmented and fitted from pixels, kept in a "
-                     "belief (mujoco; docs/perception.md)"}};
+          {"camera", "mujoco: RGB-D frames of the scenario's primary camera, segmented and fitted from pixels, "
+                     "kept in a belief (docs/perception.md); symbolic: the errors that pipeline was measured to make "
+                     "(late changes; docs/symbolic-world.md)"}};
 }
 
 void add_episode_options(CLI::App& app, EpisodeArgs& a, const std::string& log_help) {

@@ -524,16 +524,16 @@ void camera_cases(std::vector<Case>& t) {
   add(c + "}\n" + c + "}", "c,", "duplicate camera name 'c'", kTaskLine + 3);
   t.push_back({"camera", {"sim", "3-block-tray", "--camera", "ceiling", "--snapshot", "c.png"}, "--camera:1:1:",
                "unknown camera 'ceiling' (cameras: overhead, wrist)", {"c.png"}});
-  // Camera perception: an unknown source, noise asked of a camera, a world without one.
+  // Camera perception: an unknown source (in any world), noise asked of a camera.
   t.push_back({"perception", {"sim", "3-block", "--perception", "eyes", "--snapshot", "p0.png"}, "--perception", "",
                {"p0.png"}});
   t.push_back({"perception", {"sim", "3-block", "--perception", "camera", "--noise", "0.1", "--snapshot", "p1.png"},
                "position noise and misses", "for truth perception", {"p1.png"}});
-  t.push_back({"perception", {"run", "3-block", "--world", "symbolic", "--perception", "camera", "--log", "p2.jsonl"},
-               "perception 'camera'", "has no camera", {"p2.jsonl"}});
-  t.push_back({"perception", {"batch", "3-block", "--world", "symbolic", "--perception", "camera", "--trials", "1", "-o",
+  t.push_back({"perception", {"run", "3-block", "--world", "symbolic", "--perception", "sonar", "--log", "p2.jsonl"},
+               "--perception", "sonar", {"p2.jsonl"}});
+  t.push_back({"perception", {"batch", "3-block", "--world", "symbolic", "--perception", "sonar", "--trials", "1", "-o",
                               "p3.csv"},
-               "--perception camera", "only the mujoco world has a camera", {"p3.csv"}});
+               "--perception", "sonar", {"p3.csv"}});
 }
 
 // Colours of classes (line 15, after `colours:`): malformed, unknown, and (with the

@@ -2,8 +2,10 @@
 // random scenarios (2-5 regions, 0-1 tray, 1-5 objects of 1-2 classes) ×
 // random tasks from the robotics patterns (reach, sequencing, ordered visits,
 // reach-avoid, counts, response, patrol with cycles) × random interventions
-// of every kind at random moments (mid-move included) and random move
-// failures. Every episode must either
+// of every kind at random moments (mid-move included), random move
+// failures and, in a third of them, perception errors (perception_errors.hpp:
+// a person's changes seen late, things falsely unseen for a while; the loop
+// settles before it judges the task done). Every episode must either
 //  - succeed, and the run that actually happened — as a lasso, its final
 //    state repeated (or, for cycles, its last counted cycle repeated) —
 //    satisfies the task under the direct LTL semantics (ltl/lasso.hpp) with
@@ -29,6 +31,7 @@
 #include <sstream>
 
 #include "../plan/oracle.hpp"
+#include "rtamp/exec/perception_errors.hpp"
 #include "rtamp/exec/person_world.hpp"
 #include "rtamp/exec/reactive_loop.hpp"
 #include "rtamp/exec/symbolic_world.hpp"
@@ -48,6 +51,7 @@ struct Case {
   SymbolicWorldOptions world;
   world::PersonOptions person;
   LoopOptions loop;
+  std::optional<PerceptionErrors> errors;
   std::string describe;
 };
 
@@ -122,11 +126,27 @@ Case random_case(std::uint64_t seed) {
   k.loop.conditions = rng() % 2 ? ConditionMode::Action : ConditionMode::State;
   k.loop.reconfiguration = rng() % 4 == 0 ? Reconfiguration::Offline : Reconfiguration::Online;
   k.loop.world_name = "symbolic";
+  // Perception errors from a stream of their own (the cases above stay as they were).
+  SplitMix64 perr(seed ^ 0x5045u);
+  if (perr.below(3) == 0) {
+    PerceptionErrors e;
+    e.seed = seed;
+    e.delay = std::vector<double>{0.1, 0.3, 0.5}[perr.below(3)];
+    e.late_probability = perr.below(2) ? 0.1 : 0;
+    e.late_delay = 3;
+    e.false_removal_rate = std::vector<double>{0, 0.002, 0.01}[perr.below(3)];
+    e.false_removal_duration = 0.4;
+    k.errors = e;
+    k.loop.settle = e.longest() + k.loop.tick_period;
+  }
   std::ostringstream d;
   d << "seed " << seed << ": " << M << " regions, " << N << " objects, " << g.containers << " trays, task '"
     << task << "' props";
   for (const auto& at : atoms) d << " [" << at << "]";
   d << ", rate " << rate << ", failures " << k.world.failure_probability;
+  if (k.errors)
+    d << ", perception delay " << k.errors->delay << " (" << k.errors->late_probability << " at "
+      << k.errors->late_delay << "), false removals " << k.errors->false_removal_rate << "/s";
   k.describe = d.str();
   return k;
 }
@@ -321,8 +341,10 @@ void check_episode(std::uint64_t seed, bool verbose = false) {
   Case k = random_case(seed);
   SCOPED_TRACE(k.describe);
   SymbolicWorld w(k.scenario, k.world);
+  std::optional<PerceptionErrorWorld> erring;
+  if (k.errors) erring.emplace(w, k.scenario, *k.errors);
   world::Person person(k.scenario, k.person);
-  PersonWorld acted(w, person);
+  PersonWorld acted(erring ? static_cast<World&>(*erring) : w, person);
   ReactiveLoop loop(acted, k.scenario, k.loop);
   Timeline timeline([](const std::string& line) { std::cout << line << '\n'; });
   if (verbose) {
@@ -348,8 +370,17 @@ void check_episode(std::uint64_t seed, bool verbose = false) {
   const auto& run = loop.observed_run();
   ASSERT_FALSE(run.empty());
   // The run ends where the world is (held things at their source; a thing
-  // outside every location keeps its last location while the loop waits for it).
+  // outside every location keeps its last location while the loop waits for it)
+  // — unless the perception had not caught up yet with a person's change made
+  // within its longest error before the end.
+  bool lagging = false;
+  if (erring && erring->differs()) {
+    for (const auto& e : w.history())
+      lagging = lagging || (e.applied && w.time() - e.time <= k.errors->longest() + 1e-9);
+    EXPECT_TRUE(lagging) << "the perceived placement differs from the truth at the end, with no change to explain it";
+  }
   for (const auto& [name, thing] : w.truth().things) {
+    if (lagging) break;
     if (thing.location == kInHand || thing.location == "none") continue;
     const std::string* in_run = run.back().location_of(name);
     EXPECT_TRUE(in_run && *in_run == thing.location)

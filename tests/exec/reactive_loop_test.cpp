@@ -15,6 +15,7 @@
 #include <memory>
 #include <utility>
 
+#include "rtamp/exec/forwarding_world.hpp"
 #include "rtamp/exec/person_world.hpp"
 #include "rtamp/exec/symbolic_world.hpp"
 #include "rtamp/util/error.hpp"
@@ -319,23 +320,7 @@ TEST(ReactiveLoop, AMoveThatFailedIsNotRepeatedWhileTheWorldIsUnchanged) {
 // ---- liveness: the robot never idles with work to do ----
 
 // A world that forwards to another and lets a test spoil its answers.
-class Forward : public World {
- public:
-  explicit Forward(World& w) : w_(w) {}
-  double time() const override { return w_.time(); }
-  void advance(double dt) override { w_.advance(dt); }
-  double next_event_time() const override { return w_.next_event_time(); }
-  world::Placement observe() override { return w_.observe(); }
-  void start(const Move& m) override { w_.start(m); }
-  MoveStatus poll(std::string* why) override { return w_.poll(why); }
-  void halt() override { w_.halt(); }
-  bool busy() override { return w_.busy(); }
-  std::string hand() const override { return w_.hand(); }
-  std::vector<WorldEvent> take_events() override { return w_.take_events(); }
-
- protected:
-  World& w_;
-};
+using Forward = ForwardingWorld;  // tests override what they spoil
 
 struct Starts : EpisodeObserver {
   std::vector<double> at;
@@ -520,7 +505,7 @@ TEST(ReactiveLoop, AWorldWhoseTimeIsNotANumberOrGoesBackIsAnError) {
   struct Spoilt : Forward {
     using Forward::Forward;
     double bad = 0;  // NaN, or how far time jumps back once past 1 s
-    double time() const override { return w_.time() > 1.0 ? (std::isnan(bad) ? bad : w_.time() - bad) : w_.time(); }
+    double time() const override { return inner_.time() > 1.0 ? (std::isnan(bad) ? bad : inner_.time() - bad) : inner_.time(); }
   };
   for (double bad : {std::nan(""), 100.0}) {
     SymbolicWorld inner(s);
@@ -539,8 +524,8 @@ TEST(ReactiveLoop, AWorldThatNamesAnUnknownLocationIsAnError) {
   struct Spoilt : Forward {
     using Forward::Forward;
     world::Placement observe() override {
-      world::Placement p = w_.observe();
-      if (w_.time() > 1.0) p.things.at("o1").location = "r9";
+      world::Placement p = inner_.observe();
+      if (inner_.time() > 1.0) p.things.at("o1").location = "r9";
       return p;
     }
   };
@@ -550,6 +535,66 @@ TEST(ReactiveLoop, AWorldThatNamesAnUnknownLocationIsAnError) {
   const EpisodeMetrics& m = loop.run();
   EXPECT_EQ(m.end, EndReason::Error) << m.reason;
   EXPECT_NE(m.reason.find("observe() puts 'o1' in 'r9'"), std::string::npos) << m.reason;
+}
+
+// A perception that briefly shows `thing` elsewhere ("" hides it) from `from` to `to`,
+// unless the gripper has it.
+struct Glitch : Forward {
+  std::string thing, shown;
+  double from, to;
+  Glitch(World& w, std::string t, std::string at, double a, double b)
+      : Forward(w), thing(std::move(t)), shown(std::move(at)), from(a), to(b) {}
+  double next_event_time() const override {
+    double t = inner_.next_event_time();
+    for (double edge : {from, to})
+      if (edge > inner_.time()) t = std::min(t, edge);
+    return t;
+  }
+  world::Placement observe() override {
+    world::Placement p = inner_.observe();
+    const auto it = p.things.find(thing);
+    if (inner_.time() >= from && inner_.time() < to && it != p.things.end() && it->second.location != kInHand) {
+      if (shown.empty()) {
+        p.things.erase(it);
+      } else {
+        it->second.location = shown;
+      }
+    }
+    return p;
+  }
+};
+
+// A percept is judged only once it has settled: a glitch shorter than `settle`
+// that makes the task look done (o1 unseen while o2 is carried to r2), or
+// impossible (o1 seen in r3), ends nothing; without settling it ends the
+// episode wrongly.
+TEST(ReactiveLoop, TheTaskIsJudgedOnlyOnASettledPercept) {
+  for (const bool impossible : {false, true}) {
+    SCOPED_TRACE(impossible ? "looks impossible" : "looks done");
+    const world::Scenario s = scene(impossible ? "F G all_in_r2 & G !o1_in_r3" : "F G all_in_r2", 2);
+    const double glitch = impossible ? 0.3 : 9;  // o2 is carried first, until t = 7.9
+    for (const double settle : {0.0, glitch + 0.2}) {
+      SymbolicWorld inner(s);
+      Glitch w(inner, "o1", impossible ? "r3" : "", 0.1, 0.1 + glitch);
+      LoopOptions o = inline_options();
+      o.settle = settle;
+      ReactiveLoop loop(w, s, o);
+      const EpisodeMetrics& m = loop.run();
+      if (settle == 0) {
+        EXPECT_EQ(m.end, impossible ? EndReason::Unsatisfiable : EndReason::TaskDone) << m.reason;
+        EXPECT_LT(m.world_time, 0.1 + glitch);
+        EXPECT_EQ(*inner.truth().location_of("o1"), "r1");
+        continue;
+      }
+      EXPECT_EQ(m.end, EndReason::TaskDone) << m.reason;
+      EXPECT_EQ(*inner.truth().location_of("o1"), "r2");
+      EXPECT_EQ(*inner.truth().location_of("o2"), "r2");
+      for (const auto& p : loop.observed_run()) {
+        const std::string* at = p.location_of("o1");
+        EXPECT_TRUE(!at || *at != "r3") << "the glitch stayed in the run";
+      }
+    }
+  }
 }
 
 // An end caused by a person's intervention names it.
@@ -646,7 +691,10 @@ TEST(ReactiveLoop, APersonDrivesAUsersOwnWorldThroughItsCapability) {
 TEST(ReactiveLoop, APersonNeedsAWorldThatTakesInterventions) {
   const world::Scenario s = scene("F G all_in_r2", 2);
   SymbolicWorld inner(s);
-  Forward plain(inner);  // forwards everything but the capability
+  struct Plain : Forward {  // forwards everything but the capability
+    using Forward::Forward;
+    Intervenable* intervenable() override { return nullptr; }
+  } plain(inner);
   world::Person person(s, {});
   try {
     PersonWorld acted(plain, person, "my robot");

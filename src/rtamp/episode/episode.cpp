@@ -12,6 +12,7 @@
 #include "rtamp/episode/mcap_arm.hpp"
 #include "rtamp/episode/mcap_camera.hpp"
 #include "rtamp/exec/episode_log.hpp"
+#include "rtamp/exec/perception_errors.hpp"
 #include "rtamp/exec/person_world.hpp"
 #include "rtamp/exec/timeline.hpp"
 #include "rtamp/exec/tree_dump.hpp"
@@ -93,6 +94,8 @@ Episode::Episode(const world::Scenario& input, const EpisodeOptions& opt, const 
   robot::register_ik_cost_model();  // the episode layer brings the robot's cost model
   lo.seed = opt.seed;
   lo.world_name = info.name;
+  // A camera's belief may lag or lose a thing for a moment: the task is judged on a settled percept.
+  if (opt.world_settings.perception == "camera") lo.settle = std::max(lo.settle, exec::kCameraSettle);
   loop_ = std::make_unique<exec::ReactiveLoop>(wrapper_ ? *wrapper_ : *seen, scenario, lo);
 
   const EpisodeOutputs& out = opt.outputs;

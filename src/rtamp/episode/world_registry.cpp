@@ -3,6 +3,7 @@
 #include <utility>
 
 #include "rtamp/episode/sim_world.hpp"
+#include "rtamp/exec/perception_errors.hpp"
 #include "rtamp/exec/symbolic_world.hpp"
 #include "rtamp/util/error.hpp"
 #include "rtamp/util/format.hpp"
@@ -25,12 +26,14 @@ std::unique_ptr<exec::World> make_mujoco(const world::Scenario& s, std::uint64_t
 }
 
 std::unique_ptr<exec::World> make_symbolic(const world::Scenario& s, std::uint64_t seed, const WorldSettings& w) {
-  if (w.perception != "truth")
-    throw Error("perception '" + w.perception + "': the symbolic world perceives exactly (it has no camera)");
+  const sim::PerceptionSource source = sim::parse_perception_source(w.perception);
   exec::SymbolicWorldOptions so;
   so.seed = seed;
   so.failure_probability = w.failure_probability;
-  return std::make_unique<exec::SymbolicWorld>(s, so);
+  auto world = std::make_unique<exec::SymbolicWorld>(s, so);
+  if (source == sim::PerceptionSource::Truth) return world;
+  // No camera to render: the errors the MuJoCo camera pipeline was measured to make.
+  return std::make_unique<exec::PerceptionErrorWorld>(std::move(world), s, exec::camera_perception_errors(seed));
 }
 
 NamedRegistry<WorldInfo>& registry() {

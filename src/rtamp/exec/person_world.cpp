@@ -20,7 +20,7 @@ Intervenable& hands_of(World& w, const std::string& name) {
 }  // namespace
 
 PersonWorld::PersonWorld(World& inner, world::Person& person, const std::string& world_name)
-    : inner_(inner), hands_(hands_of(inner, world_name)), person_(person) {
+    : ForwardingWorld(inner), hands_(hands_of(inner, world_name)), person_(person) {
   apply_due();
 }
 

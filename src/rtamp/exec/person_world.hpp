@@ -14,39 +14,27 @@
 // Invariant: every intervention the person makes is applied exactly once.
 #pragma once
 
+#include "rtamp/exec/forwarding_world.hpp"
 #include "rtamp/exec/intervenable.hpp"
-#include "rtamp/exec/world.hpp"
 #include "rtamp/world/person.hpp"
 
 namespace rtamp::exec {
 
-class PersonWorld final : public World {
+class PersonWorld final : public ForwardingWorld {
  public:
   // Throws rtamp::Error if `inner` cannot take interventions. Both must
   // outlive this. Interventions due at time() (<= 0) are applied now.
   PersonWorld(World& inner, world::Person& person, const std::string& world_name = "this world");
 
-  double time() const override { return inner_.time(); }
   void advance(double dt) override;
   double next_event_time() const override;
-  world::Placement observe() override { return inner_.observe(); }
-  void start(const Move& m) override { inner_.start(m); }
-  MoveStatus poll(std::string* why) override { return inner_.poll(why); }
-  void halt() override { inner_.halt(); }
-  bool busy() override { return inner_.busy(); }
-  std::string hand() const override { return inner_.hand(); }
-  double distance_travelled() const override { return inner_.distance_travelled(); }
-  std::vector<WorldEvent> take_events() override { return inner_.take_events(); }
   Intervenable* intervenable() override { return &hands_; }
-  FrameSource* frames() override { return inner_.frames(); }
 
-  World& inner() { return inner_; }
   world::Person& person() { return person_; }
 
  private:
   void apply_due();
 
-  World& inner_;
   Intervenable& hands_;
   world::Person& person_;
 };

@@ -42,6 +42,7 @@ const LoopOptions& check_loop_options(const LoopOptions& o) {
   if (!(o.tick_period > 0 && std::isfinite(o.tick_period))) fail("tick_period", "must be finite and > 0 s", o.tick_period);
   if (!(o.outside_grace >= 0 && std::isfinite(o.outside_grace)))
     fail("outside_grace", "must be finite and >= 0 s", o.outside_grace);
+  if (!(o.settle >= 0 && std::isfinite(o.settle))) fail("settle", "must be finite and >= 0 s", o.settle);
   if (o.max_failures_per_move < 1) fail("max_failures_per_move", "must be >= 1", o.max_failures_per_move);
   if (o.cycles < 0) fail("cycles", "must be >= 0 (0: no cycle count)", o.cycles);
   return o;
@@ -135,6 +136,19 @@ automata::Letter ReactiveLoop::letter(const world::Placement& symbolic) const {
 
 void ReactiveLoop::record_run_step(const world::Placement& next, bool things_changed,
                                    const std::vector<std::string>& added, const std::vector<std::string>& removed) {
+  // The percept came back to what it was before a step that made the task
+  // impossible, before it settled: that step was perception's, not the world's.
+  if (doubtful_ && run_.size() >= 2 && next == run_[doubtful_->step - 1]) {
+    symbolic_ = next;
+    if (things_changed) apply_thing_changes(added, removed);
+    run_.resize(doubtful_->step);
+    run_letters_.resize(doubtful_->step);
+    progress_ = doubtful_->progress;
+    doubtful_.reset();
+    for (auto* o : observers_) o->on_progress(world_.time(), symbolic_, progress_.states());
+    return;
+  }
+  const plan::TaskProgress before = progress_;
   progress_.leave(run_letters_.back());  // the label of symbolic_, read as it entered the run
   symbolic_ = next;
   if (things_changed) apply_thing_changes(added, removed);
@@ -143,6 +157,10 @@ void ReactiveLoop::record_run_step(const world::Placement& next, bool things_cha
   progress_.at(run_letters_.back());
   for (auto* o : observers_) o->on_progress(world_.time(), symbolic_, progress_.states());
   if (progress_.dead() || !progress_.can_still_accept()) {
+    if (!settled()) {  // judged once the percept has settled, unless it comes back first
+      if (!doubtful_) doubtful_ = Doubtful{run_.size() - 1, before};
+      return;
+    }
     finish(EndReason::Unsatisfiable,
            "the task can no longer be satisfied: no run of its automaton is consistent with what happened "
            "and can still be accepted" + caused_by());
@@ -373,6 +391,7 @@ void ReactiveLoop::perceive() {
     const bool own_last = name == last_move_.thing && thing.location == last_move_.to;
     if (!own && !own_last) relocated = true;
   }
+  if (relocated || things_changed) percept_changed_at_ = world_.time();  // not the robot's own doing
   if (!cur.action.empty() && (relocated || things_changed)) disturbed_ = true;
   if (things_changed || next != symbolic_) {
     record_run_step(next, things_changed, added, removed);
@@ -438,8 +457,19 @@ bool ReactiveLoop::step() {
     // While a replan is pending, no new step of the old plan starts: a running
     // move is still polled, an idle tree waits. A tree that has succeeded waits
     // for the completion check (once the arm is free), not for another pass.
-    tree_->hold(pending_.has_value() || cycles_done_);
-    if (cycles_done_ && runner_->current().action.empty() && !world_.busy()) {
+    if (doubtful_ && settled()) {
+      finish(EndReason::Unsatisfiable,
+             "the task can no longer be satisfied: no run of its automaton is consistent with what happened "
+             "and can still be accepted" + caused_by());
+      return false;
+    }
+    if (replan_when_settled_ && !pending_ && settled()) {
+      replan_when_settled_ = false;
+      request_plan("the perceived placement has settled");
+      if (ended()) return false;
+    }
+    tree_->hold(pending_.has_value() || cycles_done_ || replan_when_settled_ || doubtful_);
+    if (cycles_done_ && runner_->current().action.empty() && !world_.busy() && settled()) {
       finish(EndReason::Cycles, "completed " + std::to_string(metrics_.cycles) + " cycles", true);
       return false;
     }
@@ -462,7 +492,7 @@ bool ReactiveLoop::step() {
     if (status == bt::Status::Failure) {
       // A thing outside every location is waited for (it comes back, or is lost
       // after outside_grace); otherwise the plan no longer fits what is seen.
-      if (outside_since_.empty()) request_plan("no subtree can run in the perceived state");
+      if (outside_since_.empty() && !replan_when_settled_) request_plan("no subtree can run in the perceived state");
     } else if (tree_done_ && runner_->current().action.empty() && !world_.busy()) {
       tree_done_ = false;
       on_tree_done();
@@ -490,7 +520,9 @@ void ReactiveLoop::advance() {
                                                           : 0.0));
     }
     for (const auto& [name, since] : outside_since_) next = std::min(next, since + options_.outside_grace + 1e-6);
-    const bool arm_free = runner_->current().action.empty() && !world_.busy() && !tree_done_;
+    // Waiting for the percept to settle, the tree is ticked as if the arm were free.
+    const bool settling = (tree_done_ || replan_when_settled_ || doubtful_) && !settled();
+    const bool arm_free = runner_->current().action.empty() && !world_.busy() && (!tree_done_ || settling);
     if (arm_free) next = std::min(next, now + options_.tick_period);
     dt = std::max(0.0, next - now);
     zero_steps_ = dt > 0 ? 0 : zero_steps_ + 1;
@@ -657,6 +689,11 @@ bool ReactiveLoop::collect_plan() {
   ++metrics_.replans;
   metrics_.replan_seconds += r.stats.seconds;
   if (!r.found) {
+    if (!settled()) {  // not judged on a percept that may still be catching up: asked again once settled
+      replan_when_settled_ = true;
+      if (outcome.stop_running_move) tree_->tree().halt();
+      return true;
+    }
     finish(r.reason == plan::NoPlanReason::NoAcceptingCycle ? EndReason::Unsatisfiable : EndReason::NoPlan,
            std::string("no plan: ") + r.message + caused_by());
     return true;
@@ -669,6 +706,7 @@ bool ReactiveLoop::collect_plan() {
 void ReactiveLoop::install(plan::PlanResult& r, bool first, const Outcome& outcome) {
   recurring_ = cycle_has_moves(r.plan);
   tree_done_ = false;
+  replan_when_settled_ = false;
   act_now_ = true;  // the new tree ticks before time passes
   last_intervention_.reset();  // the plan has taken it in
   const std::vector<plan::ActionTuple> tuples = planner_->action_tuples(r.plan);
@@ -687,6 +725,10 @@ void ReactiveLoop::on_tree_done() {
     return;
   }
   if (progress_.satisfied_by_staying(run_letters_.back())) {
+    if (!settled()) {  // judged again at the next step, on what is perceived then
+      tree_done_ = true;
+      return;
+    }
     finish(EndReason::TaskDone, "task done", true);
     return;
   }
@@ -695,6 +737,10 @@ void ReactiveLoop::on_tree_done() {
     return;
   }
   request_plan("every step is done but the task is not");
+}
+
+bool ReactiveLoop::settled() const {
+  return world_.time() - percept_changed_at_ >= options_.settle - 1e-9;
 }
 
 bool ReactiveLoop::count_cycle() {

@@ -85,6 +85,11 @@ struct LoopOptions {
   double tick_period = 0.02;   // s between ticks (continuous worlds)
   int max_failures_per_move = 5;  // undisturbed failures of one move from one state before giving up
   double outside_grace = 3;    // s a thing may be outside every location
+  // s the perceived placement must have stayed the same (but for the robot's
+  // own moves) before the task is judged done or impossible, or the last
+  // cycle ends: perception that may still be catching up with a change (a
+  // camera's belief) settles first. 0: at once.
+  double settle = 0;
   int cycles = 0;              // recurring tasks: succeed after this many cycles (0: never)
   std::uint64_t seed = 0;      // reported in the metrics
   std::string world_name;      // reported to observers ("mujoco", "symbolic", ...)
@@ -96,7 +101,7 @@ struct LoopOptions {
 // The loop's numbers, checked before anything runs (a NaN time limit or a
 // zero tick would run forever): throws rtamp::Error "loop option NAME: RULE,
 // found VALUE" unless max_time > 0 (inf: no limit), tick_period finite > 0,
-// outside_grace finite >= 0, max_failures_per_move >= 1, cycles >= 0.
+// outside_grace and settle finite >= 0, max_failures_per_move >= 1, cycles >= 0.
 // Returns `o`. The loop's constructor calls it; callers that open outputs
 // first (episode::run_episode) call it before.
 const LoopOptions& check_loop_options(const LoopOptions& o);
@@ -181,6 +186,7 @@ class ReactiveLoop {
   // it, and once the episode's cycles are done stop starting moves. True if
   // a cycle was counted.
   bool count_cycle();
+  bool settled() const;  // the percept has not changed for options_.settle
   bool cycle_satisfies(std::size_t from) const;
   void wait_for_worker();
 
@@ -210,6 +216,15 @@ class ReactiveLoop {
   bool begun_ = false, recurring_ = false;
   bool disturbed_ = false;               // the world changed while the current move ran
   bool tree_done_ = false;               // the tree succeeded: the completion check is due
+  double percept_changed_at_ = 0;        // world time the percept last changed not by the robot's moves
+  bool replan_when_settled_ = false;     // no plan was found on an unsettled percept
+  // The run's step that made the task impossible, on a percept not settled yet,
+  // and the progress before it (undone if the percept comes back).
+  struct Doubtful {
+    std::size_t step;
+    plan::TaskProgress progress;
+  };
+  std::optional<Doubtful> doubtful_;
   bool cycles_done_ = false;             // the last cycle is counted: the episode ends once the arm is free
   bool act_now_ = false;                 // tick again before time passes (a new tree, a due change)
   int same_time_steps_ = 0;
