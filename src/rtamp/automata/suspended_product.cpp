@@ -1,8 +1,6 @@
 #include "rtamp/automata/suspended_product.hpp"
 
-#include <map>
-#include <utility>
-
+#include "rtamp/automata/pair_states.hpp"
 #include "rtamp/automata/reduce.hpp"
 
 namespace rtamp::automata {
@@ -24,31 +22,22 @@ Automaton suspended_product(const Automaton& a, const Automaton& s) {
   p.state_based = false;
   const std::uint32_t na = sets_of(a);
   p.num_sets = na + sets_of(s);
-  std::map<std::pair<std::uint32_t, std::uint32_t>, std::uint32_t> id;
-  std::vector<std::pair<std::uint32_t, std::uint32_t>> todo;
-  auto intern = [&](std::uint32_t x, std::uint32_t y) {
-    auto [it, fresh] = id.emplace(std::make_pair(x, y), p.num_states());
-    if (fresh) {
-      p.add_state();
-      todo.emplace_back(x, y);
-    }
-    return it->second;
-  };
-  p.initial = intern(a.initial, running(a.initial) ? s.initial : kIdle);
-  for (std::size_t i = 0; i < todo.size(); ++i) {
-    const auto [x, y] = todo[i];
+  detail::PairStates pairs(p);
+  p.initial = pairs.intern(a.initial, running(a.initial) ? s.initial : kIdle);
+  for (std::size_t i = 0; i < pairs.size(); ++i) {
+    const auto [x, y] = pairs[i];
     const auto src = static_cast<std::uint32_t>(i);
     for (const Edge& ea : a.edges[x]) {
       if (!running(ea.dst)) {
-        p.add_edge(src, intern(ea.dst, kIdle), ea.guard, ea.marks);
+        p.add_edge(src, pairs.intern(ea.dst, kIdle), ea.guard, ea.marks);
       } else if (y == kIdle || scc.scc_of[ea.dst] != scc.scc_of[x]) {
         // Entering an accepting SCC: s starts (again) after this letter.
-        p.add_edge(src, intern(ea.dst, s.initial), ea.guard, ea.marks);
+        p.add_edge(src, pairs.intern(ea.dst, s.initial), ea.guard, ea.marks);
       } else {
         for (const Edge& es : s.edges[y]) {
           const Cube g = ea.guard & es.guard;
           if (g.is_false()) continue;
-          p.add_edge(src, intern(ea.dst, es.dst), g, ea.marks | (es.marks << na));
+          p.add_edge(src, pairs.intern(ea.dst, es.dst), g, ea.marks | (es.marks << na));
         }
       }
     }
