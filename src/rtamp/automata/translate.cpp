@@ -219,9 +219,10 @@ Automaton translate_whole(const Formula& nnf, const std::vector<std::string>& at
 // The automaton of a split formula (split.hpp): each part translated alone
 // (TGBA) and combined, reduced after each step: & is the product of the
 // other parts, then the suspended product with the product of the
-// suspendable ones; | is the sum of all. Then the pipeline, checked merges
-// and WDBA as for a whole formula. Nothing when a product would need more
-// than 32 acceptance sets.
+// suspendable ones; | is the sum of all. Then the pipeline and the checked
+// merges as for a whole formula (not the WDBA: translate_whole tries the one
+// of the same language). Nothing when a product would need more than 32
+// acceptance sets.
 std::optional<Automaton> translate_split(const detail::Split& split, const std::vector<std::string>& atoms,
                                          const TranslateOptions& opt, Negation& negation) {
   const bool conjunction = split.op == Op::And;
@@ -262,7 +263,6 @@ std::optional<Automaton> translate_split(const detail::Split& split, const std::
   Automaton a = pipeline(std::move(*acc), opt, &reduced_tgba);
   if (opt.reduce && opt.checked_merge) merge_checked_states(a, std::move(reduced_tgba), opt, negation);
   if (a.state_based) a.num_sets = 1;
-  if (opt.wdba) try_wdba(a, false, opt, negation);
   return a;
 }
 
