@@ -29,6 +29,7 @@ struct Ltl2baArgs {
   bool tba = false;
   bool no_simplify = false;
   bool no_reduce = false;
+  bool no_split = false;
 };
 
 struct Job {
@@ -120,6 +121,7 @@ int run(const Ltl2baArgs& args) {
   opt.one_set = args.tba;
   opt.simplify = !args.no_simplify;
   opt.reduce = !args.no_reduce;
+  if (args.no_split) opt.splitting = automata::Splitting::Never;
   bool failed = false;
   std::ostringstream out;
   if (args.format == "stats") out << "states\tedges\tsets\ttime_us\tstatus\tformula\n";
@@ -177,6 +179,7 @@ rtamp::cli::Registrar reg{
                    "Transition-based Büchi automaton (one acceptance set, on edges) instead of a state-based BA");
       sub.add_flag("--no-simplify", args->no_simplify, "Do not simplify the formula before translating");
       sub.add_flag("--no-reduce", args->no_reduce, "Do not reduce the automaton (simulation, merging) after translating");
+      sub.add_flag("--no-split", args->no_split, "Do not translate the parts of a top-level & or | separately");
       sub.footer(kFooter);
       return [args]() -> int { return run(*args); };
     }};

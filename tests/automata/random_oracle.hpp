@@ -2,7 +2,8 @@
 // and translate_random_slow_test: for random formulas and random lasso words,
 // lasso_accept(translate(f), w) == ltl::holds(f, w), for the state-based BA
 // and the TGBA, with and without reductions (and with/without simplification
-// and shortcuts on odd formulas). The emptiness witness of every non-empty
+// and shortcuts on odd formulas, each construction and each splitting mode on
+// a share of them). The emptiness witness of every non-empty
 // automaton must satisfy f, and an empty automaton must reject every word.
 #pragma once
 
@@ -55,6 +56,7 @@ inline void run_random_oracle(std::uint64_t seed, int formulas, int words, std::
       opt.simplify = (i % 3) != 0;
       opt.shortcuts = (i % 5) != 0;
       opt.construction = static_cast<Construction>((i / 2) % 3);
+      opt.splitting = static_cast<Splitting>((i / 6) % 3);
       Automaton a;
       try {
         a = translate(f, opt);

@@ -1,7 +1,6 @@
 #include "rtamp/automata/product.hpp"
 
-#include <map>
-#include <utility>
+#include "rtamp/automata/pair_states.hpp"
 
 namespace rtamp::automata {
 
@@ -17,24 +16,15 @@ Automaton product(const Automaton& a, const Automaton& b) {
   p.state_based = false;
   const std::uint32_t na = sets_of(a);
   p.num_sets = na + sets_of(b);
-  std::map<std::pair<std::uint32_t, std::uint32_t>, std::uint32_t> id;
-  std::vector<std::pair<std::uint32_t, std::uint32_t>> todo;
-  auto intern = [&](std::uint32_t x, std::uint32_t y) {
-    auto [it, fresh] = id.emplace(std::make_pair(x, y), p.num_states());
-    if (fresh) {
-      p.add_state();
-      todo.emplace_back(x, y);
-    }
-    return it->second;
-  };
-  p.initial = intern(a.initial, b.initial);
-  for (std::size_t i = 0; i < todo.size(); ++i) {
-    const auto [x, y] = todo[i];
+  detail::PairStates pairs(p);
+  p.initial = pairs.intern(a.initial, b.initial);
+  for (std::size_t i = 0; i < pairs.size(); ++i) {
+    const auto [x, y] = pairs[i];
     for (const Edge& ea : a.edges[x])
       for (const Edge& eb : b.edges[y]) {
         const Cube g = ea.guard & eb.guard;
         if (g.is_false()) continue;
-        const std::uint32_t d = intern(ea.dst, eb.dst);
+        const std::uint32_t d = pairs.intern(ea.dst, eb.dst);
         p.add_edge(static_cast<std::uint32_t>(i), d, g, ea.marks | (eb.marks << na));
       }
   }

@@ -1,5 +1,6 @@
 #include "rtamp/automata/translate.hpp"
 
+#include <exception>
 #include <optional>
 #include <string>
 #include <vector>
@@ -13,6 +14,9 @@
 #include "rtamp/automata/reduce.hpp"
 #include "rtamp/automata/shortcuts.hpp"
 #include "rtamp/automata/simulation_reduction.hpp"
+#include "rtamp/automata/split.hpp"
+#include "rtamp/automata/sum.hpp"
+#include "rtamp/automata/suspended_product.hpp"
 #include "rtamp/automata/vwaa.hpp"
 #include "rtamp/automata/wdba.hpp"
 #include "rtamp/ltl/printer.hpp"
@@ -52,6 +56,7 @@ class Negation {
       TranslateOptions neg = opt_;
       neg.wdba = false;
       neg.checked_merge = false;
+      neg.splitting = Splitting::Never;
       neg.state_based = false;
       neg.construction = Construction::GastinOddoux;
       try {
@@ -166,15 +171,10 @@ void try_wdba(Automaton& a, bool obligation, const TranslateOptions& opt, Negati
   a = std::move(small);
 }
 
-}  // namespace
-
-Automaton translate(const ltl::Formula& input, const TranslateOptions& opt) {
-  const Formula f = opt.simplify ? ltl::simplify(input) : input;
-  const Formula nnf = detail::to_nnf(f);
-  // Atoms: every atom of the input formula, sorted (some may have been
-  // simplified away; they stay so that letters mean the same to every caller).
-  const std::vector<std::string> atoms = detail::atoms_of(input);
-  Negation negation(input, opt);
+// The automaton of `nnf` (the NNF of the simplified `input`) in one piece:
+// shortcut or VWAA -> TGBA constructions, the pipeline, checked merges, WDBA.
+Automaton translate_whole(const Formula& nnf, const std::vector<std::string>& atoms, const TranslateOptions& opt,
+                          Negation& negation) {
   const bool merge = opt.reduce && opt.checked_merge;
   // One construction's TGBA, over `atoms`, through the pipeline and the checked merges.
   auto finish = [&](Automaton t) {
@@ -213,15 +213,108 @@ Automaton translate(const ltl::Formula& input, const TranslateOptions& opt) {
   remap_atoms(a, atoms);
   if (a.state_based) a.num_sets = 1;
   if (opt.wdba && !done) try_wdba(a, ltl::is_syntactic_obligation(nnf), opt, negation);
-  if (!opt.state_based && opt.one_set) {
-    a = degeneralize_tba(a);
-    if (opt.reduce) {
-      reduce_all(a, false);
-      a = degeneralize_tba(a);  // the reductions may leave no set (every cycle accepting)
-    }
-  }
-  a.name = ltl::to_string(input);
   return a;
+}
+
+// The automaton of a split formula (split.hpp): each part translated alone
+// (TGBA) and combined, reduced after each step: & is the product of the
+// other parts, then the suspended product with the product of the
+// suspendable ones; | is the sum of all. Then the pipeline and the checked
+// merges as for a whole formula (not the WDBA: translate_whole tries the one
+// of the same language). Nothing when a product would need more than 32
+// acceptance sets.
+std::optional<Automaton> translate_split(const detail::Split& split, const std::vector<std::string>& atoms,
+                                         const TranslateOptions& opt, Negation& negation) {
+  const bool conjunction = split.op == Op::And;
+  // Combines the automata of `parts` into `acc` by `step`.
+  auto combine = [&](std::optional<Automaton>& acc, const std::vector<Formula>& parts, auto step) {
+    for (const Formula& part : parts) {
+      TranslateOptions o = opt;
+      o.state_based = false;
+      o.one_set = false;
+      if (part.is(split.op)) o.splitting = Splitting::Never;  // a group of operands would split the same way again
+      Automaton x = translate(part, o);
+      remap_atoms(x, atoms);
+      if (!acc) {
+        acc = std::move(x);
+        continue;
+      }
+      if (conjunction && acc->num_sets + x.num_sets > 32) return false;
+      acc = step(*acc, x);
+      if (opt.reduce) reduce_all(*acc, false);
+    }
+    return true;
+  };
+  std::optional<Automaton> acc, susp;
+  if (conjunction) {
+    if (!combine(acc, split.parts, product) || !combine(susp, split.suspendable, product)) return std::nullopt;
+    if (acc && susp) {
+      if (acc->num_sets + susp->num_sets > 32) return std::nullopt;
+      acc = suspended_product(*acc, *susp);
+    } else if (!acc) {
+      acc = std::move(susp);
+    }
+  } else {
+    std::vector<Formula> all = split.parts;
+    all.insert(all.end(), split.suspendable.begin(), split.suspendable.end());
+    combine(acc, all, sum);
+  }
+  Automaton reduced_tgba;
+  Automaton a = pipeline(std::move(*acc), opt, &reduced_tgba);
+  if (opt.reduce && opt.checked_merge) merge_checked_states(a, std::move(reduced_tgba), opt, negation);
+  if (a.state_based) a.num_sets = 1;
+  return a;
+}
+
+// TGBA -> one set on edges, when asked for.
+void to_one_set(Automaton& a, const TranslateOptions& opt) {
+  if (opt.state_based || !opt.one_set) return;
+  a = degeneralize_tba(a);
+  if (opt.reduce) {
+    reduce_all(a, false);
+    a = degeneralize_tba(a);  // the reductions may leave no set (every cycle accepting)
+  }
+}
+
+// Fewer states, then deterministic rather than not, then fewer edges.
+bool smaller(const Automaton& a, const Automaton& b) {
+  if (a.num_states() != b.num_states()) return a.num_states() < b.num_states();
+  const bool da = is_deterministic(a), db = is_deterministic(b);
+  if (da != db) return da;
+  return a.num_edges() < b.num_edges();
+}
+
+}  // namespace
+
+Automaton translate(const ltl::Formula& input, const TranslateOptions& opt) {
+  const Formula f = opt.simplify ? ltl::simplify(input) : input;
+  const Formula nnf = detail::to_nnf(f);
+  // Atoms: every atom of the input formula, sorted (some may have been
+  // simplified away; they stay so that letters mean the same to every caller).
+  const std::vector<std::string> atoms = detail::atoms_of(input);
+  Negation negation(input, opt);
+  const std::optional<detail::Split> split =
+      opt.splitting != Splitting::Never ? detail::split_formula(nnf) : std::nullopt;
+  // Each way that was tried and stayed within the resource bounds.
+  std::optional<Automaton> whole, parts;
+  std::exception_ptr failed;
+  auto attempt = [&](std::optional<Automaton>& out, auto build) {
+    try {
+      out = build();
+      if (out) to_one_set(*out, opt);
+    } catch (const Error&) {
+      if (!failed) failed = std::current_exception();
+    }
+  };
+  if (split) attempt(parts, [&] { return translate_split(*split, atoms, opt, negation); });
+  if (!split || opt.splitting == Splitting::Smallest || !parts)
+    attempt(whole, [&] { return std::optional<Automaton>(translate_whole(nnf, atoms, opt, negation)); });
+  // Smallest: the split result only when smaller than the whole formula's.
+  if (parts && (!whole || opt.splitting == Splitting::Always || smaller(*parts, *whole))) whole = std::move(parts);
+  if (!whole) std::rethrow_exception(failed);
+  Automaton& a = *whole;
+  a.name = ltl::to_string(input);
+  return std::move(a);
 }
 
 }  // namespace rtamp::automata

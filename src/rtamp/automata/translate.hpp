@@ -15,6 +15,9 @@
 // when it is no larger and its language is checked equal (products with the
 // complement of the WDBA and with the automaton of !f are empty).
 // Shortcuts build common shapes (Boolean, G p, F p, G F p, F G p) directly.
+// Splitting (split.hpp): the parts of a top-level & or | are also translated
+// separately and combined (product, suspended product, sum), the result kept
+// when smaller.
 //
 // Invariants of the result: language = models of f; atoms are the atoms of f
 // sorted by name; name = the formula text; no unreachable states; every state
@@ -36,6 +39,14 @@ enum class Construction {
   MergedDestinations,  // disjunctions of them per letter and promise set (build_tgba_merged)
 };
 
+// Whether the parts of a top-level & or | are translated separately and
+// combined (split.hpp; docs/translation.md, "Splitting").
+enum class Splitting {
+  Smallest,  // both ways, keep the split result only when smaller
+  Never,
+  Always,    // the split result whenever the formula splits (for tests)
+};
+
 struct TranslateOptions {
   bool state_based = true;  // true: state-based Büchi (BA, 1 acceptance set); false: TGBA
   // With state_based == false: one acceptance set on edges (a transition-based
@@ -46,6 +57,7 @@ struct TranslateOptions {
   bool shortcuts = true;    // direct constructions for Boolean / G p / F p / G F p / F G p
   bool wdba = true;         // minimal WDBA when no larger and checked equivalent
   bool checked_merge = true;  // merge a state into one simulating it when checked against A_!f
+  Splitting splitting = Splitting::Smallest;
   Construction construction = Construction::Smallest;
 };
 
