@@ -51,7 +51,9 @@ void apply_depth_noise(const std::vector<float>& clean, std::vector<float>& nois
   const double quantum = noise.quantum_mm / 1000, jump = world::DepthNoise::kEdgeJump;
   const bool dropouts = noise.edge_dropout > 0;
   // A depth edge: a 4-neighbour in the image without a reading, or more than kEdgeJump
-  // nearer or farther. Bitwise, not short-circuit, so the loop below is branch-free.
+  // nearer or farther. Bitwise, not short-circuit, so the loops below are branch-free (this
+  // file is compiled with -fno-trapping-math, which lets GCC vectorise them; the values are
+  // the same).
   const auto far = [jump](double z, double other) { return (other <= 0) | (std::abs(other - z) > jump); };
   constexpr int kChunk = 64;
   for (int y = 0; y < height; ++y) {
@@ -63,27 +65,41 @@ void apply_depth_noise(const std::vector<float>& clean, std::vector<float>& nois
     for (int x0 = 0; x0 < width; x0 += kChunk) {
       const int x1 = std::min(width, x0 + kChunk);
       unsigned char edge[kChunk];
-      for (int x = x0; x < x1; ++x) {
+      const auto edge_at = [&](int x) {
         const double z = row[x];
-        const double left = row[x > 0 ? x - 1 : x], right = row[x + 1 < width ? x + 1 : x];
-        edge[x - x0] = static_cast<unsigned char>(far(z, left) | far(z, right) | far(z, up[x]) | far(z, down[x]));
+        return static_cast<unsigned char>((x > 0 && far(z, row[x - 1])) || (x + 1 < width && far(z, row[x + 1])) ||
+                                          far(z, up[x]) || far(z, down[x]));
+      };
+      const int i0 = std::max(x0, 1), i1 = std::min(x1, width - 1);  // the columns with both neighbours
+      for (int x = i0; x < i1; ++x) {
+        const double z = row[x];
+        edge[x - x0] = static_cast<unsigned char>(far(z, row[x - 1]) | far(z, row[x + 1]) | far(z, up[x]) | far(z, down[x]));
       }
+      if (x0 == 0) edge[0] = edge_at(0);
+      if (x1 == width && width > 1) edge[x1 - 1 - x0] = edge_at(width - 1);
+      // The draws, in raster order: an edge pixel's coin, then a kept pixel's deviate.
+      double deviate[kChunk];
+      unsigned char kept[kChunk];
+      for (int x = x0; x < x1; ++x) {
+        deviate[x - x0] = 0;
+        kept[x - x0] = 0;
+        if (row[x] <= 0 || (dropouts && edge[x - x0] && drop(rng))) continue;
+        deviate[x - x0] = gauss();
+        kept[x - x0] = 1;
+      }
+      // The noise and rounding, branch-free (vectorised). Round half up: floor(v / quantum
+      // + 0.5) by adding and taking away 2^52 (exact below 2^52; std::floor and the int64
+      // conversion do not vectorise on x86-64's baseline), the double that truncating
+      // through int64 gives (v > 0 where it is kept).
+      constexpr double kTwo52 = 4503599627370496.0;
       for (int x = x0; x < x1; ++x) {
         const double z = row[x];
-        out[x] = row[x];
-        if (z <= 0) continue;
-        if (dropouts && edge[x - x0] && drop(rng)) {
-          out[x] = 0;
-          continue;
-        }
-        double v = z + (noise.a + noise.b * z * z) * gauss();
-        if (v <= 0) {
-          out[x] = 0;
-          continue;
-        }
-        // Round half up by truncation (v > 0): std::round is a library call on x86-64's baseline.
-        if (quantum > 0) v = static_cast<double>(static_cast<std::int64_t>(v / quantum + 0.5)) * quantum;
-        out[x] = static_cast<float>(v);
+        const double v = z + (noise.a + noise.b * z * z) * deviate[x - x0];
+        const double q = v / quantum + 0.5;
+        const double t = (q + kTwo52) - kTwo52;
+        const double rounded = (t - (t > q ? 1.0 : 0.0)) * quantum;
+        const double w = quantum > 0 ? rounded : v;
+        out[x] = (kept[x - x0] != 0) & (v > 0) ? static_cast<float>(w) : 0.0f;
       }
     }
   }
