@@ -4,6 +4,7 @@
 //   BM_CameraFrame/0/1   RGB + linearised depth + depth noise
 //   BM_CameraFrame/0/0   the same without the depth noise
 //   BM_CameraFrame/1/1   RGB + depth + noise + the segmentation pass (a second render; tests only)
+//   BM_DepthNoise        the depth noise alone, on one frame's clean depth
 //   BM_SegmentAndFit     colour segmentation, top faces and box fits of one rendered frame
 //   BM_PerceptionFrame   a whole frame: render with noise, detect, visibility, belief update
 // Counter fps = frames per second of wall time; things = boxes fitted a frame.
@@ -12,6 +13,7 @@
 #include "rtamp/sim/camera_detector.hpp"
 #include "rtamp/sim/camera_perception.hpp"
 #include "rtamp/sim/camera_rig.hpp"
+#include "rtamp/sim/depth_noise.hpp"
 #include "rtamp/world/scenario_io.hpp"
 
 namespace {
@@ -31,6 +33,19 @@ void BM_CameraFrame(benchmark::State& state) {
   state.counters["fps"] = benchmark::Counter(static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
 }
 BENCHMARK(BM_CameraFrame)->Args({0, 1})->Args({0, 0})->Args({1, 1})->Unit(benchmark::kMillisecond)->UseRealTime();
+
+void BM_DepthNoise(benchmark::State& state) {
+  const world::Scenario s = world::load_scenario("3-block-tray");
+  sim::Simulation sim(s);
+  sim::CameraRig rig(sim, world::cameras_of(s));
+  const std::size_t k = rig.index("overhead", {});
+  sim::CameraImage image;
+  rig.render(k, image, {.noise = false, .segmentation = false});
+  std::vector<float> noisy;
+  std::mt19937_64 rng(1);
+  for (auto _ : state) sim::apply_depth_noise(image.depth, noisy, image.width, image.height, rig.cameras()[k].noise, rng);
+}
+BENCHMARK(BM_DepthNoise)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 void BM_SegmentAndFit(benchmark::State& state) {
   const world::Scenario s = world::load_scenario("3-block-tray");

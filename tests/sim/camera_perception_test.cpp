@@ -3,9 +3,12 @@
 // arm stopped over each thing in turn never makes a thing believed removed; a thing
 // really removed while the arm hides it is believed removed once its place is in view
 // again; a thing added is believed only after it was seen, a relocated one keeps its name.
+// In the loop, the camera renders at its rate of world time however often the loop
+// observes, and never renders the segmentation pass.
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 
 #include "rtamp/robot/skills.hpp"
@@ -172,6 +175,31 @@ TEST(CameraPerception, AnAddedThingIsBelievedAfterItWasSeenARelocatedOneKeepsIts
   expected.things[added] = expected.things.at("extra");
   expected.things.erase("extra");
   EXPECT_EQ(eyes.belief().placement(), expected);
+}
+
+TEST(CameraPerception, TheLoopRendersAFramePerCameraPeriodAndNoSegmentationPass) {
+  const world::Scenario s = testing::camera_scene(2);
+  Simulation sim(s);
+  Perception eyes(sim, {.source = PerceptionSource::Camera});
+  const CameraPerception* camera = eyes.camera();
+  ASSERT_NE(camera, nullptr);
+  double rate = 0;
+  for (const auto& c : world::cameras_of(s))
+    if (c.name == camera->camera_name()) rate = c.rate;
+  ASSERT_GT(rate, 0);
+  // The loop observes after every physics step (and twice, here, after some).
+  const double seconds = 2;
+  const int steps = static_cast<int>(std::lround(seconds / sim.timestep()));
+  Percept p;
+  for (int k = 0; k < steps; ++k) {
+    sim.step(1);
+    eyes.observe(p);
+    if (k % 7 == 0) eyes.observe(p);
+  }
+  // A frame at the start and one each period after it.
+  EXPECT_EQ(camera->frames(), static_cast<std::size_t>(std::floor(seconds * rate + 1e-9)) + 1);
+  EXPECT_TRUE(camera->image().body.empty());
+  EXPECT_EQ(camera->image().width * camera->image().height, static_cast<int>(camera->image().depth.size()));
 }
 
 }  // namespace

@@ -20,7 +20,8 @@ TEST(DepthNoise, MatchesItsModel) {
   world::DepthNoise noise;
   noise.a = 0.001, noise.b = 0.002, noise.quantum_mm = 1, noise.edge_dropout = 0.5;
   std::mt19937_64 rng(7);
-  apply_depth_noise(depth, w, h, noise, rng);
+  const std::vector<float> truth = depth;
+  apply_depth_noise(truth, depth, w, h, noise, rng);
   double sum[2] = {0, 0}, sq[2] = {0, 0};
   int n[2] = {0, 0}, dropped_inside = 0, dropped_edge = 0, not_quantised = 0;
   for (int v = 0; v < h; ++v)
@@ -51,9 +52,11 @@ TEST(DepthNoise, MatchesItsModel) {
 }
 
 TEST(DepthNoise, NoReadingStaysNoReading) {
-  std::vector<float> depth(64, 0.0f);
+  const std::vector<float> none(64, 0.0f);
+  std::vector<float> depth;
   std::mt19937_64 rng(1);
-  apply_depth_noise(depth, 8, 8, world::DepthNoise{}, rng);
+  apply_depth_noise(none, depth, 8, 8, world::DepthNoise{}, rng);
+  ASSERT_EQ(depth.size(), none.size());
   for (float d : depth) EXPECT_EQ(d, 0.0f);
 }
 

@@ -36,33 +36,46 @@ std::vector<std::vector<Eigen::Vector3d>> blob_points(const ColourBlob& blob, co
     raw.push_back(d);
   }
   if (pix.empty()) return {};
-  // The blob's bounding box as a grid of indices into pix (-1: not the blob's, or no reading).
+  // The blob's bounding box, grown by the smoothing radius, as a grid of indices into pix
+  // (-1: not the blob's, no reading, or outside the box), so a window needs no bounds check.
+  const int radius = options.smooth_radius;
   int u0 = width, u1 = -1, v0 = pix.front() / width, v1 = pix.back() / width;
   for (std::int32_t i : pix) u0 = std::min(u0, i % width), u1 = std::max(u1, i % width);
-  const int bw = u1 - u0 + 1, bh = v1 - v0 + 1;
+  const int bw = u1 - u0 + 1 + 2 * radius, bh = v1 - v0 + 1 + 2 * radius;
   std::vector<int> grid(static_cast<std::size_t>(bw) * static_cast<std::size_t>(bh), -1);
-  for (std::size_t a = 0; a < pix.size(); ++a)
-    grid[static_cast<std::size_t>((pix[a] / width - v0) * bw + (pix[a] % width - u0))] = static_cast<int>(a);
+  const auto cell = [&](int u, int v) {
+    return static_cast<std::size_t>(v - v0 + radius) * static_cast<std::size_t>(bw) + static_cast<std::size_t>(u - u0 + radius);
+  };
+  for (std::size_t a = 0; a < pix.size(); ++a) grid[cell(pix[a] % width, pix[a] / width)] = static_cast<int>(a);
   const auto at = [&](int u, int v) {
     if (u < u0 || u > u1 || v < v0 || v > v1) return -1;
-    return grid[static_cast<std::size_t>((v - v0) * bw + (u - u0))];
+    return grid[cell(u, v)];
   };
   // Each depth replaced by the median of the blob's readings in the window around it (the
   // noise is independent per pixel; the blob's own pixels only, so other surfaces do not
-  // mix in), then the points.
-  const int radius = options.smooth_radius;
+  // mix in), then the points. The median is the middle (upper middle) of the sorted window.
   std::vector<Eigen::Vector3d> pts;
   std::vector<double> z;
-  std::vector<float> window;
+  std::vector<float> window(static_cast<std::size_t>((2 * radius + 1) * (2 * radius + 1)));
+  pts.reserve(pix.size());
+  z.reserve(pix.size());
   double mean_depth = 0;
   for (std::size_t a = 0; a < pix.size(); ++a) {
     const int u = pix[a] % width, v = pix[a] / width;
-    window.clear();
-    for (int dv = -radius; dv <= radius; ++dv)
-      for (int du = -radius; du <= radius; ++du)
-        if (const int n = at(u + du, v + dv); n >= 0) window.push_back(raw[static_cast<std::size_t>(n)]);
-    std::nth_element(window.begin(), window.begin() + static_cast<std::ptrdiff_t>(window.size() / 2), window.end());
-    const double d = window[window.size() / 2];
+    std::size_t n = 0;
+    for (int dv = -radius; dv <= radius; ++dv) {
+      const int* row = grid.data() + cell(u, v + dv);
+      for (int du = -radius; du <= radius; ++du) {
+        const int k = row[du];
+        if (k < 0) continue;
+        // Insertion into the sorted window.
+        const float d = raw[static_cast<std::size_t>(k)];
+        std::size_t j = n++;
+        for (; j > 0 && window[j - 1] > d; --j) window[j] = window[j - 1];
+        window[j] = d;
+      }
+    }
+    const double d = window[n / 2];
     pts.push_back(E.to_world(K.back_project(u, v, d)));
     z.push_back(pts.back().z());
     mean_depth += d;

@@ -24,6 +24,7 @@ CameraPerception::CameraPerception(const Simulation& sim, CameraPerceptionOption
 
 void CameraPerception::frame() {
   rig_.render(camera_, image_, {.noise = true, .segmentation = false});
+  ++frames_;
   detector_.detect(image_, detections_);
   visibility_.set_frame(image_);
   world::Gripper gripper;

@@ -37,6 +37,8 @@ class CameraPerception {
   const CameraImage& image() const { return image_; }
   const std::vector<world::Detection>& detections() const { return detections_; }
   const std::string& camera_name() const { return rig_.cameras()[camera_].name; }
+  // Frames taken so far (each one render: RGB and depth, never the segmentation pass).
+  std::size_t frames() const { return frames_; }
 
  private:
   const Simulation& sim_;
@@ -47,6 +49,7 @@ class CameraPerception {
   world::Belief belief_;
   CameraImage image_;
   std::vector<world::Detection> detections_;
+  std::size_t frames_ = 0;
   int held_ = -1;          // the simulation's thing in the gripper at the last frame
   std::string held_name_;  // its name in the belief
 };

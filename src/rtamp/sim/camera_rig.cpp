@@ -24,12 +24,29 @@ int max_height(const std::vector<world::Camera>& cs) {
   return h;
 }
 
-// Rows of a bottom-up image of `row` bytes each, top row first.
+// Rows of a bottom-up image of `row` elements each, top row first, into `out` (resized).
 template <class T>
 void flip_rows(const std::vector<T>& in, std::vector<T>& out, std::size_t row, int height) {
   out.resize(in.size());
   for (int y = 0; y < height; ++y)
     std::memcpy(out.data() + row * y, in.data() + row * (height - 1 - y), row * sizeof(T));
+}
+
+// The bottom-up z-buffer `d` as metres along the optical axis, top row first:
+// z = n / (1 - d (1 - n/f)) (MuJoCo's clip planes), 0 outside [near, far].
+void linear_depth(const std::vector<float>& d, std::vector<float>& out, int width, int height, double zn, double zf,
+                  double near, double far) {
+  out.resize(d.size());
+  const double k = 1 - zn / zf;
+  const auto w = static_cast<std::size_t>(width);
+  for (int y = 0; y < height; ++y) {
+    const float* in = d.data() + w * static_cast<std::size_t>(height - 1 - y);
+    float* o = out.data() + w * static_cast<std::size_t>(y);
+    for (std::size_t x = 0; x < w; ++x) {
+      const double z = zn / (1 - in[x] * k);
+      o[x] = z >= near && z <= far ? static_cast<float>(z) : 0.0f;
+    }
+  }
 }
 
 }  // namespace
@@ -42,8 +59,9 @@ struct CameraRig::Impl {
   mjvCamera camera;
   mjrContext con;
   bool scene_made = false, con_made = false;
+  // Read-back and intermediate images, kept between frames (no allocation per frame).
   std::vector<std::uint8_t> rgb, seg;
-  std::vector<float> depth;
+  std::vector<float> depth, clean;
 };
 
 CameraRig::CameraRig(const Simulation& sim, std::vector<world::Camera> cameras, std::uint64_t seed)
@@ -144,14 +162,9 @@ void CameraRig::render(std::size_t camera, CameraImage& out, CameraPasses passes
   out.intrinsics = intrinsics(camera);
   out.extrinsics = extrinsics(camera);
   flip_rows(r.rgb, out.rgb, static_cast<std::size_t>(w) * 3, h);
-  flip_rows(r.depth, out.depth, static_cast<std::size_t>(w), h);
-  // z = n / (1 - d (1 - n/f)): the z-buffer linearised (MuJoCo's clip planes).
   const double zn = m->vis.map.znear * m->stat.extent, zf = m->vis.map.zfar * m->stat.extent;
-  for (float& d : out.depth) {
-    const double z = zn / (1 - d * (1 - zn / zf));
-    d = z >= c.near && z <= c.far ? static_cast<float>(z) : 0.0f;
-  }
-  if (passes.noise) apply_depth_noise(out.depth, w, h, c.noise, rng_);
+  linear_depth(r.depth, passes.noise ? r.clean : out.depth, w, h, zn, zf, c.near, c.far);
+  if (passes.noise) apply_depth_noise(r.clean, out.depth, w, h, c.noise, rng_);
   out.body.clear();
   if (!passes.segmentation) return;
   r.scene.flags[mjRND_SEGMENT] = 1;

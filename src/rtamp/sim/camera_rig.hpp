@@ -9,7 +9,9 @@
 // sized for the largest camera, without multisampling (a pixel's colour, depth and
 // segment belong to one surface point); images are top row first; a wrist camera's extrinsics
 // follow the arm (computed from the simulation's current state); the depth noise is
-// drawn from the rig's own generator, so a seed gives the same images.
+// drawn from the rig's own generator, so a seed gives the same images; the read-back and
+// intermediate images are kept, so a frame after the first allocates nothing (given an
+// `out` of that camera's size).
 #pragma once
 
 #include <cstdint>

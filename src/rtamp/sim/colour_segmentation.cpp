@@ -58,6 +58,7 @@ ColourSegmenter::ColourSegmenter(std::vector<KnownColour> colours, ColourSegment
     if (k.thing && chroma_span(k.rgb) < kMinThingChroma)
       throw Error("colour segmentation: the colour of '" + k.label + "' is too grey to find by its hue");
   }
+  for (const KnownColour& k : colours_) thing_.push_back(k.thing);
   const double min_cos = std::cos(options_.max_angle_deg * std::numbers::pi / 180);
   table_.assign(static_cast<std::size_t>(kLevels) * kLevels * kLevels, -1);
   for (int r = 0; r < kLevels; ++r)
@@ -85,43 +86,71 @@ void ColourSegmenter::segment(const std::uint8_t* rgb, int width, int height, Co
   const std::size_t n = static_cast<std::size_t>(width) * static_cast<std::size_t>(height);
   out.label.resize(n);
   out.blobs.clear();
-  for (std::size_t i = 0; i < n; ++i) {
-    const std::uint8_t* p = rgb + 3 * i;
-    out.label[i] = table_[((static_cast<std::size_t>(p[0] >> kShift) * kLevels) + (p[1] >> kShift)) * kLevels +
-                          (p[2] >> kShift)];
-  }
-  cv::Mat mask(height, width, CV_8U), components;
-  const cv::Mat kernel = cv::getStructuringElement(
-      cv::MORPH_RECT, cv::Size(2 * options_.opening_radius + 1, 2 * options_.opening_radius + 1));
-  for (std::size_t k = 0; k < colours_.size(); ++k) {
-    if (!colours_[k].thing) continue;
-    const auto label = static_cast<std::int16_t>(k);
-    bool any = false;
-    for (std::size_t i = 0; i < n; ++i) {
-      const bool on = out.label[i] == label;
-      mask.data[i] = on ? 255 : 0;
-      any |= on;
-    }
-    if (!any) continue;
-    if (options_.opening_radius > 0) cv::morphologyEx(mask, mask, cv::MORPH_OPEN, kernel);
-    const int count = cv::connectedComponents(mask, components, 8, CV_32S);
-    std::vector<ColourBlob> blobs(static_cast<std::size_t>(std::max(count - 1, 0)));
-    const auto* comp = components.ptr<std::int32_t>();
-    for (std::size_t i = 0; i < n; ++i) {
-      if (comp[i] > 0) {
-        blobs[static_cast<std::size_t>(comp[i] - 1)].pixels.push_back(static_cast<std::int32_t>(i));
-      } else if (out.label[i] == label) {
-        out.label[i] = -1;  // removed by the opening
+  // Each pixel's label, and each thing colour's bounding box (x0, y0, x1, y1; empty: x0 > x1).
+  std::vector<std::array<int, 4>>& box = out.boxes_;
+  box.assign(colours_.size(), {width, height, -1, -1});
+  for (int y = 0; y < height; ++y) {
+    const std::uint8_t* p = rgb + 3 * static_cast<std::size_t>(y) * static_cast<std::size_t>(width);
+    std::int16_t* label = out.label.data() + static_cast<std::size_t>(y) * static_cast<std::size_t>(width);
+    for (int x = 0; x < width; ++x, p += 3) {
+      const std::int16_t l =
+          table_[((static_cast<std::size_t>(p[0] >> kShift) * kLevels) + (p[1] >> kShift)) * kLevels + (p[2] >> kShift)];
+      label[x] = l;
+      if (l >= 0 && thing_[static_cast<std::size_t>(l)]) {
+        auto& b = box[static_cast<std::size_t>(l)];
+        b[0] = std::min(b[0], x), b[1] = std::min(b[1], y), b[2] = std::max(b[2], x), b[3] = std::max(b[3], y);
       }
     }
-    for (ColourBlob& b : blobs) {
-      if (static_cast<int>(b.pixels.size()) < options_.min_blob_pixels) {
-        for (std::int32_t i : b.pixels) out.label[static_cast<std::size_t>(i)] = -1;
+  }
+  // Each thing colour's mask is opened and split into blobs within its bounding box
+  // grown by the opening's radius and a pixel: outside it the mask is empty, so the
+  // opening and the blobs are the whole image's (the box's border behaves as the
+  // image's own where they meet; OpenCV's defaults at the image border).
+  const int r = options_.opening_radius;
+  const cv::Mat kernel = cv::getStructuringElement(cv::MORPH_RECT, cv::Size(2 * r + 1, 2 * r + 1));
+  for (std::size_t k = 0; k < colours_.size(); ++k) {
+    const auto& b = box[k];
+    if (!thing_[k] || b[0] > b[2]) continue;
+    const int x0 = std::max(0, b[0] - r - 1), y0 = std::max(0, b[1] - r - 1);
+    const int x1 = std::min(width - 1, b[2] + r + 1), y1 = std::min(height - 1, b[3] + r + 1);
+    const int bw = x1 - x0 + 1, bh = y1 - y0 + 1;
+    const auto label = static_cast<std::int16_t>(k);
+    out.mask_.resize(static_cast<std::size_t>(bw) * static_cast<std::size_t>(bh));
+    out.components_.resize(out.mask_.size());
+    for (int y = 0; y < bh; ++y) {
+      const std::int16_t* l = out.label.data() + static_cast<std::size_t>(y0 + y) * static_cast<std::size_t>(width) + x0;
+      std::uint8_t* m = out.mask_.data() + static_cast<std::size_t>(y) * static_cast<std::size_t>(bw);
+      for (int x = 0; x < bw; ++x) m[x] = l[x] == label ? 255 : 0;
+    }
+    cv::Mat mask(bh, bw, CV_8U, out.mask_.data());
+    cv::Mat components(bh, bw, CV_32S, out.components_.data());
+    if (r > 0) cv::morphologyEx(mask, mask, cv::MORPH_OPEN, kernel);
+    const int count = cv::connectedComponents(mask, components, 8, CV_32S);
+    const std::size_t first = out.blobs.size();
+    out.blobs.resize(first + static_cast<std::size_t>(std::max(count - 1, 0)));
+    for (int y = 0; y < bh; ++y) {
+      const std::int32_t* c = out.components_.data() + static_cast<std::size_t>(y) * static_cast<std::size_t>(bw);
+      const std::size_t row = static_cast<std::size_t>(y0 + y) * static_cast<std::size_t>(width) + x0;
+      for (int x = 0; x < bw; ++x) {
+        if (c[x] > 0) {
+          out.blobs[first + static_cast<std::size_t>(c[x] - 1)].pixels.push_back(static_cast<std::int32_t>(row + x));
+        } else if (out.label[row + x] == label) {
+          out.label[row + x] = -1;  // removed by the opening
+        }
+      }
+    }
+    std::size_t kept = first;
+    for (std::size_t i = first; i < out.blobs.size(); ++i) {
+      ColourBlob& blob = out.blobs[i];
+      if (static_cast<int>(blob.pixels.size()) < options_.min_blob_pixels) {
+        for (std::int32_t p : blob.pixels) out.label[static_cast<std::size_t>(p)] = -1;
         continue;
       }
-      b.colour = k;
-      out.blobs.push_back(std::move(b));
+      blob.colour = k;
+      if (kept != i) out.blobs[kept] = std::move(blob);
+      ++kept;
     }
+    out.blobs.resize(kept);
   }
 }
 

@@ -9,7 +9,9 @@
 //
 // Invariants: the classification is a lookup table over RGB quantised to 6 bits a channel,
 // built once; a blob's pixels all carry its colour's label; blobs smaller than
-// min_blob_pixels are dropped and their pixels labelled none.
+// min_blob_pixels are dropped and their pixels labelled none. The opening and the blobs
+// are computed inside each thing colour's bounding box (grown by the opening's radius),
+// which gives exactly the whole image's result at a fraction of its cost.
 #pragma once
 
 #include <array>
@@ -45,6 +47,11 @@ struct ColourSegmentation {
   int width = 0, height = 0;
   std::vector<std::int16_t> label;  // per pixel: index of a known colour, -1 none
   std::vector<ColourBlob> blobs;    // thing colours only
+
+  // The segmenter's working storage, kept between frames.
+  std::vector<std::array<int, 4>> boxes_;  // each colour's pixels' bounding box
+  std::vector<std::uint8_t> mask_;
+  std::vector<std::int32_t> components_;
 };
 
 class ColourSegmenter {
@@ -59,6 +66,7 @@ class ColourSegmenter {
   std::vector<KnownColour> colours_;
   ColourSegmentationOptions options_;
   std::vector<std::int16_t> table_;  // 64^3 entries
+  std::vector<std::uint8_t> thing_;  // colours_[k].thing
 };
 
 // Refuses, as rtamp::Error at the class's `colours:` entry (else its first thing or the

@@ -4,7 +4,12 @@
 // a noisy depth never goes below 0 (it reads 0 then). Edges are found on the clean image.
 // The Gaussian deviates are entries of a fixed table of 2^16 unit normals picked by a
 // fast generator seeded from `rng` (per-pixel std::normal_distribution cost most of a
-// frame's budget; docs/benchmarks.md "Camera frames").
+// frame's budget; docs/benchmarks.md "Camera frames"); the dropouts' coin is `rng`'s.
+//
+// Invariants: the same `rng` state gives the same image; no allocation once `noisy` has
+// the image's size. The edges are found branch-free a row chunk at a time (vectorised);
+// the draws keep one order (pixels in raster order: an edge pixel's coin, then a kept
+// pixel's deviate), so a seed gives the images it gave when each pixel was done in turn.
 #pragma once
 
 #include <random>
@@ -14,8 +19,8 @@
 
 namespace rtamp::sim {
 
-// `depth`: width*height metres, row-major, 0 = no reading.
-void apply_depth_noise(std::vector<float>& depth, int width, int height, const world::DepthNoise& noise,
-                       std::mt19937_64& rng);
+// `clean`: width*height metres, row-major, 0 = no reading. `noisy` is resized to it.
+void apply_depth_noise(const std::vector<float>& clean, std::vector<float>& noisy, int width, int height,
+                       const world::DepthNoise& noise, std::mt19937_64& rng);
 
 }  // namespace rtamp::sim
