@@ -69,7 +69,6 @@ void bind_worlds(py::module_& m) {
              sim::SessionOptions so;
              so.seed = seed;
              so.perception.source = sim::parse_perception_source(perception);
-             so.perception.camera = world::primary_camera(world::cameras_of(s)).name;
              py::gil_scoped_release release;
              return std::make_unique<episode::SimWorld>(s, so);
            }),
