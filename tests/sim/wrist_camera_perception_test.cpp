@@ -1,7 +1,7 @@
 // The belief fed by the wrist camera (it moves with the arm and sees only part of the
 // table), alone and beside a fixed camera narrowed to one region, in MuJoCo,
 // against the truth: with the arm posed over a thing the wrist camera believes what it
-// sees where it is and removes nothing; with the arm moved over every thing in turn no
+// sees where it is and removes nothing (its frames taken where the flange is); with the arm moved over every thing in turn no
 // thing is ever believed removed or added, and things only the wrist camera sees are
 // kept; a block removed while only the wrist camera could see its spot is kept while the
 // wrist looks elsewhere and believed removed once the wrist looks at its spot again.
@@ -77,6 +77,17 @@ bool in_region(const world::Region& r, const Eigen::Vector3d& p) {
   return std::abs(p.x() - r.center[0]) <= r.size[0] / 2 && std::abs(p.y() - r.center[1]) <= r.size[1] / 2;
 }
 
+// The last frame's camera (the wrist's) sits over thing i, looking straight down: its
+// extrinsics were read where the flange is now.
+void expect_wrist_over(const CameraPerception& eyes, Simulation& sim, int i) {
+  ASSERT_EQ(eyes.camera_name(), "wrist");
+  const Extrinsics& e = eyes.image().extrinsics;
+  const Eigen::Vector3d centre = e.to_world(Eigen::Vector3d::Zero()), p = sim.position(i);
+  EXPECT_LT(std::hypot(centre.x() - p.x(), centre.y() - p.y()), 0.1);
+  EXPECT_GT(centre.z() - p.z(), kAbove);
+  EXPECT_GT(e.R.row(2).dot(Eigen::Vector3d(0, 0, -1)), 0.999);  // the optical axis points down
+}
+
 std::size_t state_count(const world::Belief& b, world::ThingState s) {
   std::size_t n = 0;
   for (const auto& t : b.things()) n += t.state == s;
@@ -98,6 +109,7 @@ TEST(WristCamera, ArmPosedOverAThingSeesItWhereItIsAndRemovesNothing) {
     CameraPerception eyes(sim, {.cameras = {"wrist"}, .seed = seed});
     ASSERT_EQ(eyes.cameras().size(), 1u);
     watch(sim, eyes, 3);
+    expect_wrist_over(eyes, sim, i);
     EXPECT_EQ(eyes.belief().placement(), truth(sim));
     const world::BelievedThing* b = eyes.belief().find(sim.thing(i).name);
     ASSERT_NE(b, nullptr);
@@ -130,6 +142,7 @@ TEST(WristCamera, MovingOverEveryThingBesideANarrowFixedCameraNeverRemovesOrAdds
       watch(sim, eyes, 1);
       EXPECT_EQ(eyes.belief().placement(), before) << "over " << t.name << ", frame " << k;
     }
+    expect_wrist_over(eyes, sim, static_cast<int>(i));
     const world::BelievedThing* b = eyes.belief().find(t.name);
     ASSERT_NE(b, nullptr);
     wrist_only += b->state == world::ThingState::Visible && !in_region(s.regions.back(), sim.position(static_cast<int>(i)));
