@@ -36,6 +36,7 @@ using Clock = std::chrono::steady_clock;
 
 struct BatchArgs {
   std::string scenario, world = "mujoco", perception = "truth";
+  std::vector<std::string> perception_cameras;
   std::vector<std::string> merge;
   int trials = 30;
   std::vector<std::string> changes;
@@ -149,6 +150,8 @@ int run_batch(const BatchArgs& a) {
   opt.mcap = a.mcap;
   opt.episode = batch::batch_episode_defaults(a.world);
   opt.episode.world_settings.perception = a.perception;
+  opt.episode.world_settings.perception_cameras = a.perception_cameras;
+  episode::perception_cameras(scenario, opt.episode.world_settings);  // refused once, not run as failed trials
   opt.episode.outputs.mcap_image_period = a.mcap_image_period;
   opt.episode.loop.max_time = a.max_time;
   opt.episode.loop.planner.cost = a.cost;
@@ -296,6 +299,7 @@ rtamp::cli::Registrar reg{
       rtamp::cli::add_choice(sub, "--world", a->world, rtamp::cli::world_choices(), "World:");
       rtamp::cli::add_choice(sub, "--perception", a->perception, rtamp::cli::perception_choices(),
                              "How the robot perceives:");
+      rtamp::cli::add_perception_cameras(sub, a->perception_cameras);
       sub.add_flag("--scripted", a->scripted, "Also apply the scenario's own operator script in every episode");
       sub.add_flag("--no-randomize", a->no_randomize, "Keep the scenario's initial object positions");
       sub.add_flag("--quiet,-q", a->quiet, "No progress on standard error");

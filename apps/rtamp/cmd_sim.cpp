@@ -3,8 +3,10 @@
 //   rtamp sim 3-block-tray --do "move o1 r3; move r3 r2" [--json] [--seed N]
 //        [--snapshot out.png] [--video out.mp4] [--operator] [--mjcf model.xml]
 //        [--camera NAME] [--depth depth.png] [--segmentation seg.png] [--perception camera]
-// With --perception camera the robot perceives through the camera (--camera, else the
-// scenario's primary one) and a belief (sim/perception.hpp); "perceived" is then the belief.
+//        [--perception-cameras NAME,...]
+// With --perception camera the robot perceives through the cameras (--perception-cameras,
+// else --camera, else the scenario's primary one) and a belief (sim/perception.hpp);
+// "perceived" is then the belief.
 // With --camera (or --depth / --segmentation, which use the scenario's primary
 // camera when no --camera is given), --snapshot writes that camera's RGB instead of
 // the overview picture (sim/camera_snapshot.hpp).
@@ -14,7 +16,9 @@
 #include <nlohmann/json.hpp>
 
 #include "command.hpp"
+#include "episode_args.hpp"
 #include "options.hpp"
+#include "rtamp/episode/world_registry.hpp"
 #include "rtamp/sim/action_check.hpp"
 #include "rtamp/sim/camera_perception.hpp"
 #include "rtamp/sim/camera_snapshot.hpp"
@@ -33,6 +37,7 @@ struct SimArgs {
   std::string camera, depth, segmentation;
   std::string video;
   std::string perception = "truth";
+  std::vector<std::string> perception_cameras;
   bool json = false;
   bool scripted = false;
   double random_rate = 0;
@@ -68,6 +73,7 @@ rtamp::cli::Registrar reg{
                      "How the robot perceives: truth (the simulation's poses) or camera (RGB-D frames of --camera, "
                      "else the primary camera, segmented and fitted from pixels and kept in a belief)")
           ->check(CLI::IsMember({"truth", "camera"}));
+      rtamp::cli::add_perception_cameras(sub, a->perception_cameras);
       sub.add_option("--snapshot", a->snapshot, "Render the final scene to this PNG file");
       sub.add_option("--camera", a->camera,
                      "Write --snapshot from this camera of the scenario (docs/perception.md) instead of the overview");
@@ -88,6 +94,9 @@ rtamp::cli::Registrar reg{
         const std::string camera_name =
             a->camera.empty() ? world::primary_camera(cameras).name
                               : world::find_camera(cameras, a->camera, SourceLocation{"--camera", 1, 1}).name;
+        std::vector<std::string> perceiving = episode::perception_cameras(
+            scenario, episode::WorldSettings{.perception = a->perception, .perception_cameras = a->perception_cameras});
+        if (perceiving.empty()) perceiving.push_back(camera_name);
         // Outputs first: a bad path is refused before the simulation starts.
         if (!a->depth.empty()) rtamp::cli::check_output_file("--depth", a->depth);
         if (!a->segmentation.empty()) rtamp::cli::check_output_file("--segmentation", a->segmentation);
@@ -101,7 +110,7 @@ rtamp::cli::Registrar reg{
         opt.perception.position_sigma = a->noise;
         opt.perception.miss_probability = a->miss;
         opt.perception.source = sim::parse_perception_source(a->perception);
-        opt.perception.camera = camera_name;
+        opt.perception.cameras = perceiving;
         opt.video_path = a->video;
         opt.render.width = a->width;
         opt.render.height = a->height;

@@ -52,6 +52,7 @@ void add_episode_options(CLI::App& app, EpisodeArgs& a, const std::string& log_h
   add_real(app, "--failures", o.world_settings.failure_probability, {0, 1},
            "Symbolic world: probability that a move fails");
   add_choice(app, "--perception", o.world_settings.perception, perception_choices(), "How the robot perceives:");
+  add_perception_cameras(app, o.world_settings.perception_cameras);
   add_integer(app, "--cycles", loop.cycles, 0, 1000000,
               "Recurring tasks (plans that cycle through moves): succeed after K completed cycles "
               "(0: run until --max-time)");
@@ -68,6 +69,15 @@ void add_episode_options(CLI::App& app, EpisodeArgs& a, const std::string& log_h
       "Compression of the --mcap file's chunks:");
   add_mcap_image_period(app, o.outputs.mcap_image_period);
   app.add_option("--trees", o.outputs.trees, "Write the tree as BehaviorTree.CPP XML after each change into DIR");
+}
+
+CLI::Option* add_perception_cameras(CLI::App& app, std::vector<std::string>& target) {
+  return app.add_option("--perception-cameras", target,
+                        "With --perception camera: the scenario's cameras that perceive, comma-separated, each at its "
+                        "own rate into one belief (e.g. overhead,wrist; default: the primary camera; "
+                        "docs/perception.md)")
+      ->delimiter(',')
+      ->type_name("NAMES");
 }
 
 CLI::Option* add_mcap_image_period(CLI::App& app, double& target) {

@@ -28,6 +28,8 @@ struct EpisodeArgs {
 void add_episode_options(CLI::App& app, EpisodeArgs& args, const std::string& log_help);
 // --mcap-image-period S (>= 0 or inf), into `target` (also `rtamp batch`'s).
 CLI::Option* add_mcap_image_period(CLI::App& app, double& target);
+// --perception-cameras NAME,NAME,... into `target`.
+CLI::Option* add_perception_cameras(CLI::App& app, std::vector<std::string>& target);
 
 // The episode's options after parsing: without --planning, the world's
 // planning mode (world_registry.hpp). No timeline, no interrupt flag: the command sets those.

@@ -63,17 +63,22 @@ void bind_worlds(py::module_& m) {
       "The simulated UR5 in MuJoCo as a World: moves are the pick and place skills, perception maps\n"
       "body poses to regions, and a person's interventions are carried out between physics steps\n"
       "(apply(); a Person drives it through PersonWorld). Options: seed, perception ('truth': the\n"
-      "simulation's poses; 'camera': the scenario's primary camera and a belief). Use run_episode(...,\n"
-      "video=...) to film.")
-      .def(py::init([](const world::Scenario& s, std::uint64_t seed, const std::string& perception) {
+      "simulation's poses; 'camera': the scenario's cameras and a belief), cameras (with 'camera': the\n"
+      "names of the cameras that perceive, e.g. ['overhead', 'wrist']; default: the primary one). Use\n"
+      "run_episode(..., video=...) to film.")
+      .def(py::init([](const world::Scenario& s, std::uint64_t seed, const std::string& perception,
+                       const std::vector<std::string>& cameras) {
              sim::SessionOptions so;
              so.seed = seed;
              so.perception.source = sim::parse_perception_source(perception);
-             so.perception.camera = world::primary_camera(world::cameras_of(s)).name;
+             if (so.perception.source != sim::PerceptionSource::Camera && !cameras.empty())
+               throw Error("cameras: they perceive only with perception='camera'");
+             so.perception.cameras = cameras;
              py::gil_scoped_release release;
              return std::make_unique<episode::SimWorld>(s, so);
            }),
-           py::arg("scenario"), py::kw_only(), py::arg("seed") = 1, py::arg("perception") = "truth")
+           py::arg("scenario"), py::kw_only(), py::arg("seed") = 1, py::arg("perception") = "truth",
+           py::arg("cameras") = std::vector<std::string>{})
       .def("apply", &episode::SimWorld::apply, py::arg("intervention"), py::call_guard<py::gil_scoped_release>(),
            "Applies an intervention now, as a person would; returns the WorldEvent (applied or refused).")
       .def("true_placement", &episode::SimWorld::true_placement, py::call_guard<py::gil_scoped_release>(),

@@ -1,7 +1,8 @@
 """A MujocoWorld's cameras as NumPy arrays (rtamp.Camera, docs/python.md), checked
 against what the scene is: the blocks' colour where the segmentation pass says a
 block is, the point cloud on the table top and on the blocks' tops, the camera
-matrix projecting a block's centre into its pixels; and scenario colours."""
+matrix projecting a block's centre into its pixels; scenario colours; and a world
+perceiving through several cameras (overhead and wrist) into one belief."""
 
 import numpy as np
 import pytest
@@ -79,3 +80,12 @@ def test_colours_of_classes(tray):
     s.validate()  # fine for the truth ...
     with pytest.raises(rtamp.Error, match="look alike to the camera"):
         rtamp.MujocoWorld(s, perception="camera")  # ... not for the camera
+
+
+def test_several_cameras_perceive_into_one_belief(tray):
+    w = rtamp.MujocoWorld(tray, seed=1, perception="camera", cameras=["overhead", "wrist"])
+    assert w.observe() == rtamp.initial_placement(tray)
+    with pytest.raises(rtamp.Error, match="unknown camera 'ceiling'"):
+        rtamp.MujocoWorld(tray, perception="camera", cameras=["ceiling"])
+    with pytest.raises(rtamp.Error, match="only with perception='camera'"):
+        rtamp.MujocoWorld(tray, cameras=["wrist"])

@@ -524,6 +524,18 @@ void camera_cases(std::vector<Case>& t) {
   add(c + "}\n" + c + "}", "c,", "duplicate camera name 'c'", kTaskLine + 3);
   t.push_back({"camera", {"sim", "3-block-tray", "--camera", "ceiling", "--snapshot", "c.png"}, "--camera:1:1:",
                "unknown camera 'ceiling' (cameras: overhead, wrist)", {"c.png"}});
+  // Perceiving cameras: unknown (at its column), repeated, or without camera perception.
+  t.push_back({"camera", {"run", "3-block-tray", "--perception", "camera", "--perception-cameras", "overhead,ceiling",
+                          "--log", "c1.jsonl"},
+               "--perception-cameras:1:10:", "unknown camera 'ceiling' (cameras: overhead, wrist)", {"c1.jsonl"}});
+  t.push_back({"camera", {"batch", "3-block-tray", "--perception", "camera", "--perception-cameras", "ceiling",
+                          "--trials", "1", "-o", "c2.csv"},
+               "--perception-cameras:1:1:", "unknown camera 'ceiling'", {"c2.csv"}});
+  t.push_back({"camera", {"sim", "3-block-tray", "--perception", "camera", "--perception-cameras", "wrist,wrist",
+                          "--snapshot", "c3.png"},
+               "--perception-cameras:1:7:", "camera 'wrist' is listed twice", {"c3.png"}});
+  t.push_back({"camera", {"serve", "3-block-tray", "--perception-cameras", "wrist", "--port", "0", "--log", "c4.jsonl"},
+               "--perception-cameras:1:1:", "only with --perception camera", {"c4.jsonl"}});
   // Camera perception: an unknown source (in any world), noise asked of a camera.
   t.push_back({"perception", {"sim", "3-block", "--perception", "eyes", "--snapshot", "p0.png"}, "--perception", "",
                {"p0.png"}});

@@ -2,7 +2,8 @@
 // out of view), a thing is removed only after it was Missing for the configured time, new
 // things only after k sightings, a thing that vanished and shows up elsewhere keeps its
 // name (also shortly after it was believed removed), the held thing follows the tool, a
-// container's contents move with it, carried too; and the
+// container's contents move with it, carried too; a frame that sees a thing only through
+// another camera (Elsewhere) leaves its state and Missing clock alone; and the
 // placement read from the belief equals the scenario's when every thing is seen where it is.
 #include <gtest/gtest.h>
 
@@ -27,10 +28,11 @@ Scenario scene() {
 
 // Every spot in view and uncovered, except the things named.
 struct Spots : Visibility {
-  std::set<std::string> covered, outside;
+  std::set<std::string> covered, outside, elsewhere;
   Sight sight(const BelievedThing& t) const override {
     if (covered.count(t.name)) return Sight::Occluded;
     if (outside.count(t.name)) return Sight::OutOfView;
+    if (elsewhere.count(t.name)) return Sight::Elsewhere;
     return Sight::Visible;
   }
 };
@@ -132,6 +134,41 @@ TEST(Belief, RemovedAtTheFrameThatEndsTheConfiguredTimeDespiteRounding) {
   }
   b.update(frames[3], d, Spots{}, {});
   EXPECT_EQ(b.find("b2"), nullptr);
+}
+
+TEST(Belief, AFrameThatSeesAThingOnlyThroughAnotherCameraLeavesItAsItWas) {
+  const Scenario s = scene();
+  BeliefOptions o;
+  o.remove_after = 0.3;
+  Belief b(s, o);
+  b.update(0.9, all_seen(s), Spots{}, {});
+  auto d = all_seen(s);
+  d.erase(d.begin() + 2);  // b2 gone; one camera sees its spot, the other looks elsewhere
+  Spots other;
+  other.elsewhere = {"b2"};
+  // The other camera's frames between: b2 stays as it was, Visible, then Missing with its
+  // clock running; and never removed on a frame that does not see its spot.
+  b.update(0.95, d, other, {});
+  EXPECT_EQ(b.find("b2")->state, ThingState::Visible);
+  b.update(1.0, d, Spots{}, {});
+  EXPECT_EQ(b.find("b2")->state, ThingState::Missing);
+  b.update(1.35, d, other, {});
+  ASSERT_NE(b.find("b2"), nullptr);
+  EXPECT_EQ(b.find("b2")->state, ThingState::Missing);
+  EXPECT_DOUBLE_EQ(b.find("b2")->missing_since, 1.0);
+  b.update(1.4, d, Spots{}, {});
+  EXPECT_EQ(b.find("b2"), nullptr);
+  // Out of every camera's view: the clock stops (the thing is kept).
+  auto e = all_seen(s);
+  e.erase(e.begin() + 3);  // b3 gone
+  b.update(2.0, e, Spots{}, {});
+  EXPECT_EQ(b.find("b3")->state, ThingState::Missing);
+  Spots outside;
+  outside.outside = {"b3"};
+  b.update(2.2, e, outside, {});
+  b.update(2.4, e, Spots{}, {});
+  ASSERT_NE(b.find("b3"), nullptr);
+  EXPECT_DOUBLE_EQ(b.find("b3")->missing_since, 2.4);
 }
 
 TEST(Belief, ANewThingAfterKSightingsWithANameNeverUsed) {

@@ -129,9 +129,16 @@ Episode::Episode(const world::Scenario& input, const EpisodeOptions& opt, const 
     sim::Perception& perception = sim_world_->session().perception();
     if (perception.camera() && std::isfinite(out.mcap_image_period)) {
       // After the log's observer: a frame's `camera` record, then its image.
-      mcap_camera_ = std::make_unique<McapCamera>(*mcap_, perception.camera()->camera_name(), out.mcap_image_period);
-      perception.add_frame_observer([m = mcap_camera_.get(), sw = sim_world_](const sim::CameraPerception& frame) {
-        m->frame(sw->session().sim().time(), frame);
+      // One writer a perceiving camera, each with its own channels and period.
+      std::vector<McapCamera*> writers;
+      for (const world::Camera& c : perception.camera()->cameras()) {
+        mcap_cameras_.push_back(std::make_unique<McapCamera>(*mcap_, c.name, out.mcap_image_period));
+        writers.push_back(mcap_cameras_.back().get());
+      }
+      perception.add_frame_observer([writers, sw = sim_world_](const sim::CameraPerception& frame) {
+        const auto& cameras = frame.cameras();
+        for (std::size_t k = 0; k < cameras.size(); ++k)
+          if (cameras[k].name == frame.camera_name()) writers[k]->frame(sw->session().sim().time(), frame);
       });
     }
   }

@@ -108,7 +108,7 @@ class Episode {
   std::unique_ptr<EpisodeMcap> mcap_;  // fed by log_'s sink
   std::unique_ptr<exec::EpisodeLog> log_;
   std::unique_ptr<McapArm> mcap_arm_;  // the MuJoCo arm's joint angles into mcap_
-  std::unique_ptr<McapCamera> mcap_camera_;  // camera perception's images into mcap_
+  std::vector<std::unique_ptr<McapCamera>> mcap_cameras_;  // camera perception's images into mcap_, per camera
   std::unique_ptr<exec::TreeDump> trees_;
   std::unique_ptr<exec::Timeline> timeline_;
   std::unique_ptr<world::Person> person_;

@@ -1,5 +1,6 @@
 #include "rtamp/episode/world_registry.hpp"
 
+#include <algorithm>
 #include <utility>
 
 #include "rtamp/episode/sim_world.hpp"
@@ -8,6 +9,7 @@
 #include "rtamp/util/error.hpp"
 #include "rtamp/util/format.hpp"
 #include "rtamp/util/named_registry.hpp"
+#include "rtamp/world/camera.hpp"
 #include "rtamp/world/suggest.hpp"
 
 namespace rtamp::episode {
@@ -21,7 +23,7 @@ std::unique_ptr<exec::World> make_mujoco(const world::Scenario& s, std::uint64_t
   sim::SessionOptions so;
   so.seed = seed;
   so.perception.source = sim::parse_perception_source(w.perception);
-  so.perception.camera = world::primary_camera(world::cameras_of(s)).name;
+  so.perception.cameras = perception_cameras(s, w);
   return std::make_unique<SimWorld>(s, so);
 }
 
@@ -46,6 +48,21 @@ NamedRegistry<WorldInfo>& registry() {
 }
 
 }  // namespace
+
+std::vector<std::string> perception_cameras(const world::Scenario& s, const WorldSettings& w) {
+  if (w.perception != "camera" && !w.perception_cameras.empty())
+    throw Error("the cameras perceive only with --perception camera", SourceLocation{"--perception-cameras", 1, 1});
+  const std::vector<world::Camera> cameras = world::cameras_of(s);
+  std::vector<std::string> out;
+  int column = 1;
+  for (const std::string& name : w.perception_cameras) {
+    const SourceLocation where{"--perception-cameras", 1, column};
+    if (std::find(out.begin(), out.end(), name) != out.end()) throw Error("camera '" + name + "' is listed twice", where);
+    out.push_back(world::find_camera(cameras, name, where).name);
+    column += static_cast<int>(name.size()) + 1;
+  }
+  return out;
+}
 
 void register_world(WorldInfo info) {
   if (info.name.empty() || !info.make) throw Error("a world needs a name and a factory");

@@ -28,9 +28,17 @@ namespace rtamp::episode {
 struct WorldSettings {
   double failure_probability = 0;  // worlds that draw move failures (symbolic): chance that a move fails
   // How the robot perceives (mujoco): "truth" (the simulation's poses) or "camera" (the
-  // scenario's primary camera and a belief, sim/perception.hpp).
+  // scenario's cameras and a belief, sim/perception.hpp).
   std::string perception = "truth";
+  // With "camera": which of the scenario's cameras perceive, each at its own rate (empty:
+  // the primary one). An unknown one is refused at "--perception-cameras" with its column.
+  std::vector<std::string> perception_cameras;
 };
+
+// The cameras `w` asks to perceive through, checked against the scenario's (throws
+// rtamp::Error at "--perception-cameras" on an unknown or repeated one, or any with
+// perception other than "camera"); empty: the primary camera.
+std::vector<std::string> perception_cameras(const world::Scenario& s, const WorldSettings& w);
 
 // Builds the world for a scenario (throws rtamp::Error on bad settings, before anything runs).
 using WorldFactory =

@@ -261,7 +261,9 @@ void LiveEpisode::after_slice() {
 }
 
 void LiveEpisode::camera_frame(const sim::CameraPerception& f) {
-  // Encoded whether or not a page is connected: a page that joins gets the latest.
+  // Encoded whether or not a page is connected: a page that joins gets the latest. The
+  // page shows one camera: the first that perceives.
+  if (f.camera_name() != f.cameras().front().name) return;
   const auto now = Clock::now();
   if (now < next_camera_) return;
   next_camera_ = now + kCameraInterval;

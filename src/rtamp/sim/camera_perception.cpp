@@ -1,32 +1,69 @@
 #include "rtamp/sim/camera_perception.hpp"
 
+#include <algorithm>
 #include <cmath>
+
+#include "rtamp/util/error.hpp"
 
 namespace rtamp::sim {
 
-namespace {
+struct CameraPerception::Eye {
+  std::size_t rig_index;
+  CameraDetector detector;
+  DepthVisibility visibility;
+  CameraImage image;
+  bool seen = false;  // a frame was taken
+};
 
-world::DepthNoise noise_of(const std::vector<world::Camera>& cameras, const std::string& name) {
-  for (const auto& c : cameras)
-    if (c.name == name) return c.noise;
-  return {};
-}
+// Camera k's frame, and where it cannot see, the other cameras' last frames.
+class CameraPerception::Views : public world::Visibility {
+ public:
+  Views(const std::vector<std::unique_ptr<Eye>>& eyes, std::size_t k) : eyes_(eyes), k_(k) {}
+  world::Sight sight(const world::BelievedThing& t) const override {
+    const world::Sight s = eyes_[k_]->visibility.sight(t);
+    if (s != world::Sight::OutOfView) return s;
+    for (std::size_t j = 0; j < eyes_.size(); ++j)
+      if (j != k_ && eyes_[j]->seen && eyes_[j]->visibility.sight(t) != world::Sight::OutOfView)
+        return world::Sight::Elsewhere;
+    return world::Sight::OutOfView;
+  }
 
-}  // namespace
+ private:
+  const std::vector<std::unique_ptr<Eye>>& eyes_;
+  std::size_t k_;
+};
 
 CameraPerception::CameraPerception(const Simulation& sim, CameraPerceptionOptions options)
-    : sim_(sim),
-      rig_(sim, world::cameras_of(sim.scenario()), options.seed),
-      camera_(rig_.index(options.camera, {})),
-      detector_(sim.scenario(), noise_of(rig_.cameras(), options.camera)),
-      visibility_(noise_of(rig_.cameras(), options.camera)),
-      belief_(sim.scenario(), options.belief) {}
+    : sim_(sim), rig_(sim, world::cameras_of(sim.scenario()), options.seed), belief_(sim.scenario(), options.belief) {
+  if (options.cameras.empty()) options.cameras.push_back(world::primary_camera(rig_.cameras()).name);
+  for (std::size_t i = 0; i < options.cameras.size(); ++i) {
+    const std::string& name = options.cameras[i];
+    if (std::find(options.cameras.begin(), options.cameras.begin() + static_cast<std::ptrdiff_t>(i), name) !=
+        options.cameras.begin() + static_cast<std::ptrdiff_t>(i))
+      throw Error("camera '" + name + "' is listed twice");
+    const std::size_t index = rig_.index(name, {});
+    const world::Camera& c = rig_.cameras()[index];
+    perceiving_.push_back(c);
+    eyes_.push_back(std::make_unique<Eye>(Eye{index, CameraDetector(sim.scenario(), c.noise), DepthVisibility(c.noise), {}}));
+  }
+}
+
+CameraPerception::~CameraPerception() = default;
+
+const CameraImage& CameraPerception::image() const { return eyes_[last_]->image; }
 
 void CameraPerception::frame() {
-  rig_.render(camera_, image_, {.noise = true, .segmentation = false});
+  for (std::size_t k = 0; k < eyes_.size(); ++k) frame(k);
+}
+
+void CameraPerception::frame(std::size_t k) {
+  Eye& eye = *eyes_.at(k);
+  rig_.render(eye.rig_index, eye.image, {.noise = true, .segmentation = false});
   ++frames_;
-  detector_.detect(image_, detections_);
-  visibility_.set_frame(image_);
+  last_ = k;
+  eye.seen = true;
+  eye.detector.detect(eye.image, detections_);
+  eye.visibility.set_frame(eye.image);
   world::Gripper gripper;
   const Eigen::Vector3d tool = sim_.tool_pose().translation();
   gripper.tool = {tool.x(), tool.y(), tool.z()};
@@ -43,7 +80,7 @@ void CameraPerception::frame() {
         }
   }
   gripper.holds = held_name_;
-  belief_.update(sim_.time(), detections_, visibility_, gripper);
+  belief_.update(sim_.time(), detections_, Views(eyes_, k), gripper);
 }
 
 }  // namespace rtamp::sim

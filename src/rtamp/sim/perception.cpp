@@ -5,6 +5,7 @@
 #include "rtamp/sim/camera_perception.hpp"
 #include "rtamp/sim/colour_segmentation.hpp"
 #include "rtamp/util/error.hpp"
+#include "rtamp/world/camera.hpp"
 
 namespace rtamp::sim {
 
@@ -35,21 +36,27 @@ Perception::Perception(const Simulation& sim, PerceptionOptions options)
   if (options_.position_sigma != 0 || options_.miss_probability != 0)
     throw Error("position noise and misses are for truth perception; a camera's errors are its own");
   check_scene_colours(sim.scenario());
+  const std::vector<world::Camera> cameras = world::cameras_of(sim.scenario());
+  for (const std::string& name : options_.cameras) world::find_camera(cameras, name, {});  // before any context
   camera_ = std::make_unique<CameraPerception>(
-      sim, CameraPerceptionOptions{.camera = options_.camera, .belief = options_.belief, .seed = options_.seed});
-  for (const auto& c : world::cameras_of(sim.scenario()))
-    if (c.name == options_.camera) frame_period_ = 1.0 / c.rate;
-  next_frame_ = sim.time();
+      sim, CameraPerceptionOptions{.cameras = options_.cameras, .belief = options_.belief, .seed = options_.seed});
+  for (const world::Camera& c : camera_->cameras()) {
+    frame_period_.push_back(1.0 / c.rate);
+    next_frame_.push_back(sim.time());
+  }
 }
 
 Perception::~Perception() = default;
 Perception::Perception(Perception&&) noexcept = default;
 
 void Perception::advance() {
-  if (!camera_ || sim_.time() + 1e-9 < next_frame_) return;
-  camera_->frame();
-  for (const FrameObserver& f : frame_observers_) f(*camera_);
-  while (next_frame_ <= sim_.time() + 1e-9) next_frame_ += frame_period_;
+  if (!camera_) return;
+  for (std::size_t k = 0; k < next_frame_.size(); ++k) {
+    if (sim_.time() + 1e-9 < next_frame_[k]) continue;
+    camera_->frame(k);
+    for (const FrameObserver& f : frame_observers_) f(*camera_);
+    while (next_frame_[k] <= sim_.time() + 1e-9) next_frame_[k] += frame_period_[k];
+  }
 }
 
 Percept Perception::observe() {

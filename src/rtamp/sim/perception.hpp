@@ -2,9 +2,9 @@
 // body poses from the simulation and maps them to symbolic locations with
 // world::Geometry — the same geometric abstraction the planner uses to read a scenario
 // (paper Section II's partition of the workspace into regions) — with optional noise.
-// `Camera` sees as the paper's robot did (Section V): one of the scenario's cameras,
-// rendered at its rate of world time (advance()), segmented and fitted from pixels, and
-// kept in a world::Belief (camera_perception.hpp); a percept then lists the believed
+// `Camera` sees as the paper's robot did (Section V): one or more of the scenario's
+// cameras, each rendered at its own rate of world time (advance()), segmented and fitted
+// from pixels, and kept in one world::Belief (camera_perception.hpp); a percept then lists the believed
 // things at their believed poses, under the belief's names (a thing a person added is
 // named by the belief, e.g. "block_seen1").
 //
@@ -43,7 +43,8 @@ struct PerceptionOptions {
   double position_sigma = 0;    // Truth: m, standard deviation of x and y noise
   double miss_probability = 0;  // Truth: chance a present thing is not detected
   std::uint64_t seed = 1;
-  std::string camera = "overhead";  // Camera: which of world::cameras_of(scenario)
+  // Camera: which of world::cameras_of(scenario) perceive; empty: the primary one.
+  std::vector<std::string> cameras;
   world::BeliefOptions belief;      // Camera
 };
 
@@ -68,21 +69,22 @@ struct Percept {
 
 class Perception {
  public:
-  // Throws rtamp::Error on an unknown camera, noise asked of the camera source, or (camera)
-  // when offscreen rendering is unavailable.
+  // Throws rtamp::Error on an unknown or repeated camera, noise asked of the camera
+  // source, or (camera) when offscreen rendering is unavailable.
   explicit Perception(const Simulation& sim, PerceptionOptions options = {});
   ~Perception();
   Perception(Perception&&) noexcept;
   Percept observe();
   // The same into `out`, reusing its storage.
   void observe(Percept& out);
-  // Camera: takes a frame when one is due at the simulation's time; call it after each
-  // step. Truth: nothing.
+  // Camera: takes a frame of each camera that is due at the simulation's time (in the
+  // order the cameras were asked); call it after each step. Truth: nothing.
   void advance();
   const PerceptionOptions& options() const { return options_; }
   // The camera pipeline (nullptr for Truth).
   const CameraPerception* camera() const { return camera_.get(); }
-  // Camera: `f` is called after each frame, with the pipeline (its detections and belief).
+  // Camera: `f` is called after each frame of any camera, with the pipeline (that frame's
+  // camera, image and detections, and the belief after it).
   using FrameObserver = std::function<void(const CameraPerception&)>;
   void add_frame_observer(FrameObserver f) { frame_observers_.push_back(std::move(f)); }
 
@@ -94,7 +96,7 @@ class Perception {
   std::vector<std::string> known_containers_;
   std::unique_ptr<CameraPerception> camera_;
   std::vector<FrameObserver> frame_observers_;
-  double frame_period_ = 0, next_frame_ = 0;
+  std::vector<double> frame_period_, next_frame_;  // per perceiving camera
 };
 
 }  // namespace rtamp::sim

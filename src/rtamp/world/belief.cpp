@@ -20,6 +20,9 @@ const char* to_string(ThingState s) {
 
 namespace {
 
+// matched_[i] after judge_unseen: the frame found the thing's spot in plain view and empty.
+constexpr char kJudgedMissing = 2;
+
 // In the table's plane: things rest on surfaces, and a partly seen thing's height is the least sure.
 double distance(const Vec3& a, const Vec3& b) { return std::hypot(a[0] - b[0], a[1] - b[1]); }
 
@@ -190,21 +193,29 @@ void Belief::judge_unseen(double time, const Visibility& visibility) {
         t.state = ThingState::Occluded;
         t.missing_since = -1;
         break;
+      case Sight::Elsewhere:
+        break;  // another camera's to judge
       case Sight::Visible:
         if (t.state != ThingState::Missing) t.state = ThingState::Missing, t.missing_since = time;
+        matched_[i] = kJudgedMissing;
         break;
     }
   }
-  // Missing long enough: believed removed (a container's contents stay where they are).
-  const auto gone = [&](const BelievedThing& t) {
-    return t.state == ThingState::Missing && time - t.missing_since >= options_.remove_after - kTimeTolerance;
-  };
-  for (const auto& t : things_)
-    if (gone(t)) {
+  // Missing long enough, and judged so by this frame: believed removed (a container's
+  // contents stay where they are).
+  std::size_t k = 0;
+  for (std::size_t i = 0; i < things_.size(); ++i) {
+    const BelievedThing& t = things_[i];
+    if (matched_[i] == kJudgedMissing && time - t.missing_since >= options_.remove_after - kTimeTolerance) {
       if (t.container) geometry_.remove_container(t.name);
       removed_.push_back({t, time});
+      continue;
     }
-  std::erase_if(things_, gone);
+    if (k != i) things_[k] = std::move(things_[i]), matched_[k] = matched_[i];
+    ++k;
+  }
+  things_.resize(k);
+  matched_.resize(k);
   std::erase_if(removed_, [&](const Removed& r) { return time - r.time > options_.reidentify_within + kTimeTolerance; });
 }
 

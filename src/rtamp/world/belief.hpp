@@ -10,7 +10,8 @@
 //    match_radius in the table's plane (greedily, nearest pairs first); a complete
 //    detection sets the pose, an incomplete one (within the thing's half diagonal) only
 //    says the thing is there.
-//  - A thing is believed removed only after it has been Missing for remove_after seconds.
+//  - A thing is believed removed only after it has been Missing for remove_after seconds,
+//    on a frame that judges it Missing (never on one that does not see its spot).
 //  - A detection no thing explains is a candidate (at its last complete pose, if any); after
 //    confirm_sightings sightings
 //    (each within candidate_timeout of the last) it is a Missing thing of its class that
@@ -61,7 +62,10 @@ struct BelievedThing {
 
 // What a camera could say of a spot where a thing is believed to be: it would be seen
 // there (Visible), something covers it (Occluded), or it lies outside the image (OutOfView).
-enum class Sight { Visible, Occluded, OutOfView };
+// With several cameras, a spot outside this frame's image but inside another camera's
+// (at that camera's last frame) is Elsewhere: this frame says nothing of the thing, whose
+// state and Missing clock stay as the camera that sees it left them.
+enum class Sight { Visible, Occluded, OutOfView, Elsewhere };
 
 // The camera side of the belief: a user's own perception implements it.
 class Visibility {
