@@ -99,7 +99,7 @@ void apply_depth_noise(const std::vector<float>& clean, std::vector<float>& nois
         const double t = (q + kTwo52) - kTwo52;
         const double rounded = (t - (t > q ? 1.0 : 0.0)) * quantum;
         const double w = quantum > 0 ? rounded : v;
-        out[x] = (kept[x - x0] != 0) & (v > 0) ? static_cast<float>(w) : 0.0f;
+        out[x] = ((kept[x - x0] != 0) & (v > 0)) ? static_cast<float>(w) : 0.0f;
       }
     }
   }
