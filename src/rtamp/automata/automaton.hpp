@@ -64,7 +64,12 @@ class Automaton {
   std::uint32_t atom_index(const std::string& atom);
   // -1 if absent.
   int find_atom(const std::string& atom) const;
-  Marks all_marks() const { return num_sets >= 32 ? ~Marks{0} : ((Marks{1} << num_sets) - 1); }
+  // Sets 0..n-1 as marks.
+  static Marks marks_below(std::uint32_t n) { return n >= 32 ? ~Marks{0} : ((Marks{1} << n) - 1); }
+  Marks all_marks() const { return marks_below(num_sets); }
+  // The acceptance sets its edges' marks speak of: num_sets, or one when state-based
+  // (the edges leaving an accepting state carry set 0).
+  std::uint32_t edge_sets() const { return state_based ? 1u : num_sets; }
   // State-based: q is accepting. Transition-based automata: false.
   bool is_accepting_state(std::uint32_t q) const { return state_based && state_accepting[q]; }
   // Büchi acceptance as a property of edges (state-based, or num_sets <= 1):

@@ -4,18 +4,12 @@
 
 namespace rtamp::automata {
 
-namespace {
-
-std::uint32_t sets_of(const Automaton& a) { return a.state_based ? 1u : a.num_sets; }
-
-}  // namespace
-
 Automaton product(const Automaton& a, const Automaton& b) {
   Automaton p;
   p.atoms = a.atoms;
   p.state_based = false;
-  const std::uint32_t na = sets_of(a);
-  p.num_sets = na + sets_of(b);
+  const std::uint32_t na = a.edge_sets();
+  p.num_sets = na + b.edge_sets();
   detail::PairStates pairs(p);
   p.initial = pairs.intern(a.initial, b.initial);
   for (std::size_t i = 0; i < pairs.size(); ++i) {

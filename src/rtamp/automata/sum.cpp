@@ -6,13 +6,9 @@ namespace rtamp::automata {
 
 namespace {
 
-std::uint32_t sets_of(const Automaton& a) { return a.state_based ? 1u : a.num_sets; }
-
-Marks first_sets(std::uint32_t n) { return n >= 32 ? ~Marks{0} : (Marks{1} << n) - 1; }
-
 // Marks of an edge of an automaton with `own` sets, padded to `all` sets.
 Marks pad(Marks m, std::uint32_t own, std::uint32_t all) {
-  const Marks extra = first_sets(all) & ~first_sets(own);
+  const Marks extra = Automaton::marks_below(all) & ~Automaton::marks_below(own);
   if (own == 0 || (m >> (own - 1) & 1u)) m |= extra;
   return m;
 }
@@ -23,7 +19,7 @@ Automaton sum(const Automaton& a, const Automaton& b) {
   Automaton s;
   s.atoms = a.atoms;
   s.state_based = false;
-  const std::uint32_t na = sets_of(a), nb = sets_of(b);
+  const std::uint32_t na = a.edge_sets(), nb = b.edge_sets();
   s.num_sets = std::max(na, nb);
   s.initial = s.add_state();
   auto copy = [&s](const Automaton& x, std::uint32_t own) {

@@ -7,8 +7,6 @@ namespace rtamp::automata {
 
 namespace {
 
-std::uint32_t sets_of(const Automaton& a) { return a.state_based ? 1u : a.num_sets; }
-
 constexpr std::uint32_t kIdle = ~std::uint32_t{0};  // s not running
 
 }  // namespace
@@ -20,8 +18,8 @@ Automaton suspended_product(const Automaton& a, const Automaton& s) {
   Automaton p;
   p.atoms = a.atoms;
   p.state_based = false;
-  const std::uint32_t na = sets_of(a);
-  p.num_sets = na + sets_of(s);
+  const std::uint32_t na = a.edge_sets();
+  p.num_sets = na + s.edge_sets();
   detail::PairStates pairs(p);
   p.initial = pairs.intern(a.initial, running(a.initial) ? s.initial : kIdle);
   for (std::size_t i = 0; i < pairs.size(); ++i) {

@@ -119,11 +119,8 @@ void PerceptionErrorWorld::make_consistent(const world::Placement& truth) {
 
 void PerceptionErrorWorld::update(const world::Placement& truth) {
   const double now = inner_.time();
-  std::set<std::string> names;
-  for (const auto& [name, thing] : truth.things) names.insert(name);
-  for (const auto& [name, thing] : shown_.things) names.insert(name);
   double batch_due = -1;  // the changes noticed together show together
-  for (const auto& name : names) {
+  const auto notice = [&](const std::string& name) {
     const auto t = truth.things.find(name);
     const auto s = shown_.things.find(name);
     if (t != truth.things.end() && s != shown_.things.end() && t->second == s->second) {
@@ -135,7 +132,13 @@ void PerceptionErrorWorld::update(const world::Placement& truth) {
         batch_due = now + (rng_.unit() < errors_.late_probability ? errors_.late_delay : errors_.delay);
       due_[name] = batch_due;
     }
-  }
+  };
+  for (const auto& [name, thing] : truth.things) notice(name);
+  // Shown but no longer true (gone): collected first, since show() would change shown_.
+  gone_.clear();
+  for (const auto& [name, thing] : shown_.things)
+    if (!truth.things.count(name)) gone_.push_back(name);
+  for (const std::string& name : gone_) notice(name);
   for (auto it = due_.begin(); it != due_.end();) {
     const std::string name = it->first;
     ++it;

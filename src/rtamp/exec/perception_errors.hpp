@@ -23,6 +23,7 @@
 #include <memory>
 #include <set>
 #include <string>
+#include <vector>
 
 #include "rtamp/exec/forwarding_world.hpp"
 #include "rtamp/util/splitmix.hpp"
@@ -85,6 +86,7 @@ class PerceptionErrorWorld final : public ForwardingWorld {
   world::Placement shown_;                // what is perceived (before false removals)
   std::map<std::string, double> due_;     // a change not shown yet: when it will be
   std::map<std::string, double> hidden_;  // falsely removed: until when
+  std::vector<std::string> gone_;         // update()'s scratch: shown things the truth lacks
   double next_false_removal_;
   Move move_;           // the robot's last move
   bool started_ = false;

@@ -161,9 +161,7 @@ void ReactiveLoop::record_run_step(const world::Placement& next, bool things_cha
       if (!doubtful_) doubtful_ = Doubtful{run_.size() - 1, before};
       return;
     }
-    finish(EndReason::Unsatisfiable,
-           "the task can no longer be satisfied: no run of its automaton is consistent with what happened "
-           "and can still be accepted" + caused_by());
+    finish_violated();
     return;
   }
   // A cycle counts where the run closes it, whichever plans it took (a replan
@@ -458,9 +456,7 @@ bool ReactiveLoop::step() {
     // move is still polled, an idle tree waits. A tree that has succeeded waits
     // for the completion check (once the arm is free), not for another pass.
     if (doubtful_ && settled()) {
-      finish(EndReason::Unsatisfiable,
-             "the task can no longer be satisfied: no run of its automaton is consistent with what happened "
-             "and can still be accepted" + caused_by());
+      finish_violated();
       return false;
     }
     if (replan_when_settled_ && !pending_ && settled()) {
@@ -737,6 +733,12 @@ void ReactiveLoop::on_tree_done() {
     return;
   }
   request_plan("every step is done but the task is not");
+}
+
+void ReactiveLoop::finish_violated() {
+  finish(EndReason::Unsatisfiable,
+         "the task can no longer be satisfied: no run of its automaton is consistent with what happened "
+         "and can still be accepted" + caused_by());
 }
 
 bool ReactiveLoop::settled() const {

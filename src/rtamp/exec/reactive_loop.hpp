@@ -187,6 +187,7 @@ class ReactiveLoop {
   // a cycle was counted.
   bool count_cycle();
   bool settled() const;  // the percept has not changed for options_.settle
+  void finish_violated();  // ends: the run so far leaves the task no accepting future
   bool cycle_satisfies(std::size_t from) const;
   void wait_for_worker();
 
