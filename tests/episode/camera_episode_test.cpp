@@ -41,7 +41,9 @@ Outcome run(const std::string& scenario, const std::vector<std::string>& cameras
   o.world_settings.perception = "camera";
   o.world_settings.perception_cameras = cameras;
   o.loop.max_time = 300;
-  o.outputs.log = (std::filesystem::temp_directory_path() / ("rtamp_camera_episode_" + scenario + ".jsonl")).string();
+  // One file per test: ctest runs this binary's tests side by side.
+  const std::string test = ::testing::UnitTest::GetInstance()->current_test_info()->name();
+  o.outputs.log = (std::filesystem::temp_directory_path() / ("rtamp_camera_episode_" + test + ".jsonl")).string();
   Outcome r{run_episode(s, o), read_log(o.outputs.log)};
   std::filesystem::remove(o.outputs.log);
   return r;

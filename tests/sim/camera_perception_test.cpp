@@ -15,21 +15,15 @@
 #include "rtamp/robot/ur5_kinematics.hpp"
 #include "rtamp/sim/camera_perception.hpp"
 #include "rtamp/sim/perception.hpp"
+#include "camera_test_helpers.hpp"
 #include "test_scenarios.hpp"
 
 namespace rtamp::sim {
 namespace {
 
-// `frames` frames at 10 Hz of simulated time.
-void watch(Simulation& sim, CameraPerception& eyes, int frames) {
-  const int steps = static_cast<int>(std::lround(0.1 / sim.timestep()));
-  for (int k = 0; k < frames; ++k) {
-    sim.step(steps);
-    eyes.frame();
-  }
-}
-
-world::Placement truth(Simulation& sim) { return Perception(sim).observe().placement(); }
+using testing::hover;
+using testing::truth;
+using testing::watch;
 
 TEST(CameraPerception, StaticScenesAreBelievedAsTheyAreUnderTheirOwnNames) {
   int things = 0;
@@ -52,26 +46,6 @@ TEST(CameraPerception, StaticScenesAreBelievedAsTheyAreUnderTheirOwnNames) {
 class ArmOver : public ::testing::Test {
  protected:
   static constexpr double kAbove = 0.03;  // m between the tool and the thing's top (a pre-grasp)
-  // The tool `above` m over the top of thing i, gripper pointing down.
-  static bool hover(Simulation& sim, int i, double above) {
-    robot::Ur5Kinematics::Config cfg;
-    cfg.base = robot::Ur5Kinematics::base_pose(sim.scenario().robot);
-    cfg.tool_offset = sim.options().mjcf.arm.tool_offset;
-    const robot::Ur5Kinematics arm(cfg);
-    const Thing& t = sim.thing(i);
-    Eigen::Vector3d top = sim.position(i);
-    top.z() += t.container ? t.size[2] : t.size[2] / 2;
-    top.z() += above;
-    robot::IkSolutions q;
-    const robot::Joints now = sim.arm_q();
-    arm.ik_tool(robot::top_down_pose(top, 0), q, &now);
-    for (const robot::Joints& c : q)
-      if (!sim.config_collides(c)) {
-        sim.set_arm_configuration(c);
-        return true;
-      }
-    return false;
-  }
 };
 
 TEST_F(ArmOver, EachThingInTurnIsNeverBelievedRemoved) {

@@ -16,61 +16,20 @@
 #include "rtamp/robot/ur5_kinematics.hpp"
 #include "rtamp/sim/camera_perception.hpp"
 #include "rtamp/sim/perception.hpp"
+#include "camera_test_helpers.hpp"
 #include "test_scenarios.hpp"
 
 namespace rtamp::sim {
 namespace {
 
+using testing::hover;
+using testing::narrow_overhead;
+using testing::pose_tool;
+using testing::truth;
+using testing::watch;
+
 constexpr double kAbove = 0.25;  // m from a thing's top up to the tool: the wrist camera about 0.4 m up
 
-// `frames` frames at 10 Hz of simulated time, every perceiving camera each.
-void watch(Simulation& sim, CameraPerception& eyes, int frames) {
-  const int steps = static_cast<int>(std::lround(0.1 / sim.timestep()));
-  for (int k = 0; k < frames; ++k) {
-    sim.step(steps);
-    eyes.frame();
-  }
-}
-
-world::Placement truth(Simulation& sim) { return Perception(sim).observe().placement(); }
-
-// The tool at `tool`, gripper (and so the wrist camera) pointing down.
-bool pose_tool(Simulation& sim, const Eigen::Vector3d& tool) {
-  robot::Ur5Kinematics::Config cfg;
-  cfg.base = robot::Ur5Kinematics::base_pose(sim.scenario().robot);
-  cfg.tool_offset = sim.options().mjcf.arm.tool_offset;
-  const robot::Ur5Kinematics arm(cfg);
-  robot::IkSolutions q;
-  const robot::Joints now = sim.arm_q();
-  arm.ik_tool(robot::top_down_pose(tool, 0), q, &now);
-  for (const robot::Joints& c : q)
-    if (!sim.config_collides(c)) {
-      sim.set_arm_configuration(c);
-      return true;
-    }
-  return false;
-}
-
-// The tool `above` m over the top of thing i.
-bool hover(Simulation& sim, int i, double above) {
-  const Thing& t = sim.thing(i);
-  Eigen::Vector3d top = sim.position(i);
-  top.z() += (t.container ? t.size[2] : t.size[2] / 2) + above;
-  return pose_tool(sim, top);
-}
-
-// The scene's default cameras, the fixed one narrowed to the last region alone (the
-// generated scenes put their blocks in the first).
-world::Scenario narrow_overhead(world::Scenario s) {
-  std::vector<world::Camera> cams = world::default_cameras(s);
-  world::Camera& o = cams.at(0);
-  const world::Region& r = s.regions.back();
-  o.look_at = {r.center[0], r.center[1], r.center[2]};
-  o.position = {r.center[0] - 0.05, r.center[1], r.center[2] + 0.9};
-  o.fovy = 2 * std::atan(0.5 * std::max(r.size[0], r.size[1]) / 0.9 * 0.75) * 180 / M_PI;  // the region, barely
-  s.cameras = cams;
-  return s;
-}
 
 // Whether `p` lies in the scene's region `r`, in the table's plane.
 bool in_region(const world::Region& r, const Eigen::Vector3d& p) {

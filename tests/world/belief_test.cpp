@@ -3,7 +3,8 @@
 // things only after k sightings, a thing that vanished and shows up elsewhere keeps its
 // name (also shortly after it was believed removed), the held thing follows the tool, a
 // container's contents move with it, carried too; a frame that sees a thing only through
-// another camera (Elsewhere) leaves its state and Missing clock alone; and the
+// another camera (Elsewhere) leaves its state and Missing clock alone; a grasp that closed
+// on nothing where a thing is believed removes it at once; and the
 // placement read from the belief equals the scenario's when every thing is seen where it is.
 #include <gtest/gtest.h>
 
@@ -232,6 +233,54 @@ TEST(Belief, AThingRemovedAMomentAgoThatTurnsUpKeepsItsName) {
   ASSERT_NE(b.find("b3"), nullptr);
   EXPECT_EQ(b.placement().things.at("b3").location, "r1");
   EXPECT_EQ(b.things().size(), 4u);
+}
+
+TEST(Belief, AGraspThatClosedOnNothingWhereAThingIsBelievedRemovesItAtOnce) {
+  const Scenario s = scene();
+  Belief b(s);
+  auto d = all_seen(s);
+  b.update(0.1, d, Spots{}, {});
+  d.erase(d.begin() + 2);  // b2 taken while the arm covered it
+  Spots cover;
+  cover.covered = {"b2"};
+  b.update(0.2, d, cover, {});
+  ASSERT_NE(b.find("b2"), nullptr);
+  // The fingers closed on nothing beside b2 (outside its box by more than the slack): no evidence.
+  Gripper g;
+  g.empty_grasp_at = 0.25;
+  g.empty_grasp_tool = {0.35 + 0.02 + 0.006, 0.3, 0.02};
+  b.update(0.3, d, cover, g);
+  ASSERT_NE(b.find("b2"), nullptr);
+  EXPECT_EQ(b.find("b2")->state, ThingState::Occluded);
+  // Where b2 is believed, though still covered (the arm is there): removed at once.
+  g.empty_grasp_at = 0.35;
+  g.empty_grasp_tool = {0.35, 0.3, 0.02};
+  b.update(0.4, d, cover, g);
+  EXPECT_EQ(b.find("b2"), nullptr);
+  EXPECT_EQ(b.things().size(), 3u);
+  // Seen again a moment later a little aside (the grasp had pushed it): the same thing.
+  d.push_back(at("block", 0.35, 0.36));
+  for (double t = 1.0; t < 1.15; t += 0.1) b.update(t, d, Spots{}, g);
+  ASSERT_NE(b.find("b2"), nullptr);
+  EXPECT_NEAR(b.find("b2")->base[1], 0.36, 1e-12);
+}
+
+TEST(Belief, AnEmptyGraspIsNoEvidenceAgainstAThingSeenInThatFrameOrTakenTwice) {
+  const Scenario s = scene();
+  Belief b(s);
+  auto d = all_seen(s);
+  Gripper g;
+  g.empty_grasp_at = 0.05;
+  g.empty_grasp_tool = {0.45, 0.3, 0.02};  // b3's box, but b3 is seen
+  b.update(0.1, d, Spots{}, g);
+  ASSERT_NE(b.find("b3"), nullptr);
+  // The same grasp reported again by later frames is not new evidence.
+  d.erase(d.begin() + 3);
+  Spots cover;
+  cover.covered = {"b3"};
+  for (double t = 0.2; t < 1.0; t += 0.1) b.update(t, d, cover, g);
+  ASSERT_NE(b.find("b3"), nullptr);
+  EXPECT_EQ(b.find("b3")->state, ThingState::Occluded);
 }
 
 TEST(Belief, TheHeldThingFollowsTheToolAndIsPutDownWhereTheToolLeftIt) {

@@ -96,12 +96,14 @@ void SimWorld::start(const exec::Move& m) {
   why_.clear();
   phase_ = Phase::Picking;
   // With a camera the arm goes where the thing is seen.
-  std::optional<robot::ThingPose> seen;
+  std::optional<sim::SeenThing> seen;
   if (const sim::CameraPerception* eyes = session_.perception().camera())
     if (const world::BelievedThing* b = eyes->belief().find(m.thing)) {
       seen.emplace();
-      seen->position = Eigen::Vector3d(b->base[0], b->base[1], b->base[2]);
-      seen->yaw = b->yaw;
+      seen->pose.position = Eigen::Vector3d(b->base[0], b->base[1], b->base[2]);
+      seen->pose.yaw = b->yaw;
+      seen->size = b->size;
+      seen->container = b->container;
     }
   if (!session_.skills().start_pick(move_.thing, seen)) end(exec::MoveStatus::Failed, session_.controller().reason());
 }
@@ -129,7 +131,8 @@ bool SimWorld::place_somewhere(const std::string& preferred) {
   return false;
 }
 
-// A failed move must not leave its thing in the gripper: put it somewhere valid first.
+// A failed move must not leave its thing in the gripper: put it somewhere valid first. A
+// failed pick backs the empty gripper off (out of the camera's way).
 void SimWorld::fail_or_recover(const std::string& why) {
   failure_ = why;
   if (phase_ != Phase::Recovering && holds(move_.thing)) {
@@ -137,7 +140,10 @@ void SimWorld::fail_or_recover(const std::string& why) {
     if (place_somewhere(move_.from)) return;
     session_.sim().detach();
   }
-  end(exec::MoveStatus::Failed, why);
+  if (phase_ == Phase::Picking && session_.sim().held() < 0 && session_.skills().start_retreat() &&
+      session_.controller().status() == sim::Status::Running)
+    returning_ = true;
+  end(exec::MoveStatus::Failed, failure_);  // `why` may be the controller's reason, which the retreat cleared
 }
 
 exec::MoveStatus SimWorld::poll(std::string* why) {

@@ -11,12 +11,13 @@
 //    spot — then reports Failed;
 //  - a place whose destination vanished (a tray removed mid-carry) fails the
 //    same way;
-//  - a thing taken out of the gripper ends the move with Failed and the empty
-//    gripper backs off;
+//  - a thing taken out of the gripper, or a pick that failed (a missed grasp), ends
+//    the move with Failed and the empty gripper backs off;
 //  - halt() stops the arm, puts a held thing back the same way, or backs the
 //    empty gripper straight up; busy() is true until that is done.
 // With camera perception (sim/perception.hpp) the loop's names are the belief's: a move
-// picks at the thing's perceived pose, and the simulation's body it acts on is the one of
+// picks at the thing's perceived pose (even where no body is left: the fingers then close
+// on nothing, and the belief takes that as evidence), and the simulation's body it acts on is the one of
 // that class nearest where the thing is believed (a thing a person added has a name of
 // the belief's own).
 // Invariants: at most one move runs; hand() is where the last place ended.

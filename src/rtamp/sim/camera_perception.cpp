@@ -80,6 +80,9 @@ void CameraPerception::frame(std::size_t k) {
         }
   }
   gripper.holds = held_name_;
+  const Simulation::EmptyGrasp& empty = sim_.last_empty_grasp();
+  gripper.empty_grasp_at = empty.time;
+  gripper.empty_grasp_tool = {empty.tool.x(), empty.tool.y(), empty.tool.z()};
   belief_.update(sim_.time(), detections_, Views(eyes_, k), gripper);
 }
 

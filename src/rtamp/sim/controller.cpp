@@ -30,7 +30,8 @@ void Controller::start(MotionPlan plan) {
   object_ = plan_.object.empty() ? -1 : sim_.find(plan_.object);
   holding_ = false;
   if (plan_.trajectory.empty()) return finish(Status::Failure, "empty motion plan");
-  if (!plan_.object.empty() && (object_ < 0 || !sim_.thing(object_).present))
+  if (object_ >= 0 && !sim_.thing(object_).present) object_ = -1;
+  if (!plan_.object.empty() && object_ < 0 && !plan_.absent_ok)
     return finish(Status::Failure, "'" + plan_.object + "' is not in the scene");
   // A plan whose first gripper event is "open" starts with the object in hand.
   if (!plan_.events.empty() && !plan_.events.front().close) {
@@ -43,6 +44,9 @@ void Controller::start(MotionPlan plan) {
   const robot::Joints q = sim_.arm_q();
   if (robot::max_joint_delta(q, plan_.trajectory.start()) > options_.tracking_limit)
     return finish(Status::Failure, "the plan starts away from the arm's configuration");
+  // A pick approaches with open fingers (a missed grasp left them closed).
+  if (!holding_ && !plan_.events.empty() && plan_.events.front().close && sim_.held() < 0)
+    sim_.set_finger_target(sim_.finger_max());
 }
 
 void Controller::fail(std::string why) {
@@ -83,9 +87,9 @@ Status Controller::update() {
 
   // Gripper actions in progress pause the trajectory clock.
   if (gripper_ == Gripper::Closing) {
-    if (object_ < 0 || !sim_.thing(object_).present)
+    if (object_ >= 0 && !sim_.thing(object_).present)
       return finish(Status::Failure, "'" + plan_.object + "' vanished before the grasp"), status_;
-    if (sim_.fingers_touch(object_)) {
+    if (object_ >= 0 && sim_.fingers_touch(object_)) {
       sim_.attach(object_);
       holding_ = true;
       grasp_rel_ = sim_.tool_pose().inverse() * sim_.pose(object_);
@@ -93,6 +97,7 @@ Status Controller::update() {
       sim_.set_finger_target(std::max(0.0, sim_.finger_opening() - 0.003));
       gripper_ = Gripper::Idle;
     } else if (sim_.finger_opening() < 0.002 || now - gripper_t0_ > options_.gripper_timeout) {
+      sim_.note_empty_grasp();
       return finish(Status::Failure, "grasp of '" + plan_.object + "' missed (the fingers closed on nothing)"),
              status_;
     }
@@ -108,7 +113,7 @@ Status Controller::update() {
       const GripperEvent& e = plan_.events[next_event_++];
       gripper_t0_ = now;
       if (e.close) {
-        if (object_ < 0) return finish(Status::Failure, "nothing to grasp"), status_;
+        if (object_ < 0 && !plan_.absent_ok) return finish(Status::Failure, "nothing to grasp"), status_;
         sim_.set_finger_target(options_.closed_opening);
         gripper_ = Gripper::Closing;
       } else {

@@ -7,13 +7,15 @@
 //
 // Failure conditions (each with a reason string):
 //  - the plan is empty / the target was unreachable (the caller passes the reason);
-//  - the fingers closed without touching the object (grasp missed);
+//  - the fingers closed without touching the object (grasp missed; the simulation
+//    records the empty grasp, Simulation::last_empty_grasp, as the robot's evidence);
 //  - the object left the hand while it had to be held (taken away by the operator,
 //    hidden, or slipped more than slip_tolerance from its grasp pose);
 //  - the object to grasp vanished before the grasp;
 //  - tracking diverged (joint error above tracking_limit, e.g. the arm is blocked).
 // The trajectory clock pauses while the gripper is closing or opening, so plans need no
-// exact gripper timing. halt() stops where the arm is (a BT preemption).
+// exact gripper timing. halt() stops where the arm is (a BT preemption). A pick opens
+// the fingers as it starts (a missed grasp left them closed).
 // Invariants: at most one plan runs; after SUCCESS of a plan ending with the object in
 // hand, sim.held() is that object; after a release, it is -1.
 #pragma once
@@ -39,6 +41,7 @@ struct MotionPlan {
   robot::Trajectory trajectory;
   std::vector<GripperEvent> events;  // sorted by time
   std::string object;                // grasped by a close event, released by an open one
+  bool absent_ok = false;            // a pick toward where `object` is perceived: it may not be there
   double cost = 0;                   // motion cost (tool path length, m), for reports
   std::string skill;                 // "pick", "place", ... (for reports)
 };

@@ -135,6 +135,15 @@ class Simulation {
   void attach(int thing);               // weld at the current relative pose
   void detach();  // also frees the reserved spot
   int held() const { return held_; }
+  // The last grasp whose fingers closed on nothing (time < 0: none yet): when, and where
+  // the tool point was. The controller notes it as it attaches a grasped thing; it is
+  // what the robot knows of its gripper, and camera perception takes it as evidence.
+  struct EmptyGrasp {
+    double time = -1;
+    Eigen::Vector3d tool = Eigen::Vector3d::Zero();
+  };
+  void note_empty_grasp() { empty_grasp_ = {time(), tool_pose().translation()}; }
+  const EmptyGrasp& last_empty_grasp() const { return empty_grasp_; }
   // The spot the arm is about to put the held thing on (footprint, gap included):
   // free_spot() treats it as taken, so the operator does not put things there.
   void reserve_spot(const world::Footprint& f) { reserved_ = f; }
@@ -173,6 +182,7 @@ class Simulation {
   long torque_limited_steps_ = 0;
   double finger_target_ = 0;
   int held_ = -1;
+  EmptyGrasp empty_grasp_;
   std::optional<world::Footprint> reserved_;
   int gripper_body_ = -1, left_body_ = -1, right_body_ = -1;
   int tcp_site_ = -1, flange_site_ = -1;

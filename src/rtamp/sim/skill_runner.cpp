@@ -12,14 +12,15 @@ SkillRunner::SkillRunner(Simulation& sim, Controller& controller, SkillRunnerOpt
   arm_ = robot::Ur5Kinematics(cfg);
 }
 
-robot::Grasp SkillRunner::grasp_for(int i) const {
-  const Thing& t = sim_.thing(i);
-  if (!t.container) return robot::Grasp::block(t.size);
+robot::Grasp SkillRunner::grasp_for(int i) const { return grasp_for(sim_.thing(i).size, sim_.thing(i).container); }
+
+robot::Grasp SkillRunner::grasp_for(const world::Vec3& size, bool container) {
+  if (!container) return robot::Grasp::block(size);
   // A long rim (+y side; 2-fold: or the -y side), fingers closing across it (tool y
   // along the tray's y), tool point 1 cm below the rim top.
   robot::Grasp g;
-  const double h = std::max(t.size[2], kTrayPlate + 0.005);
-  g.offset = Eigen::Vector3d(0, t.size[1] / 2 - kTrayRim / 2, std::max(kTrayPlate + 0.006, h - 0.01));
+  const double h = std::max(size[2], kTrayPlate + 0.005);
+  g.offset = Eigen::Vector3d(0, size[1] / 2 - kTrayRim / 2, std::max(kTrayPlate + 0.006, h - 0.01));
   g.yaw = 0;
   g.yaw_symmetry = 2;
   return g;
@@ -60,9 +61,10 @@ std::optional<world::Vec3> SkillRunner::place_spot(int i, const std::string& loc
   return free_spot(sim_, location, {t.size, t.container}, exclude, options_.place_gap, keep_clear);
 }
 
-bool SkillRunner::start_pick(const std::string& object, const std::optional<robot::ThingPose>& seen) {
-  const int i = sim_.find(object);
-  if (i < 0 || !sim_.thing(i).present) {
+bool SkillRunner::start_pick(const std::string& object, const std::optional<SeenThing>& seen) {
+  const int found = sim_.find(object);
+  const int i = found >= 0 && sim_.thing(found).present ? found : -1;
+  if (i < 0 && !seen) {
     controller_.fail("'" + object + "' is not in the scene");
     return false;
   }
@@ -71,10 +73,10 @@ bool SkillRunner::start_pick(const std::string& object, const std::optional<robo
     return false;
   }
   carried_.clear();
-  if (sim_.thing(i).container) carried_ = contents_of(sim_, i);
-  const robot::Grasp g = grasp_for(i);
+  if (i >= 0 && sim_.thing(i).container) carried_ = contents_of(sim_, i);
+  const robot::Grasp g = i >= 0 ? grasp_for(i) : grasp_for(seen->size, seen->container);
   SimCollisionChecker checker(sim_, carried_);
-  robot::SkillPlan p = robot::plan_pick(arm_, sim_.arm_q(), seen ? *seen : thing_pose(sim_, i), g, options_.skill,
+  robot::SkillPlan p = robot::plan_pick(arm_, sim_.arm_q(), seen ? seen->pose : thing_pose(sim_, i), g, options_.skill,
                                         options_.collision_checking ? &checker : nullptr);
   if (!p.ok) {
     controller_.fail("cannot pick '" + object + "': " + p.why);
@@ -84,6 +86,7 @@ bool SkillRunner::start_pick(const std::string& object, const std::optional<robo
   m.trajectory = std::move(p.trajectory);
   for (const auto& e : p.events) m.events.push_back({e.time, e.kind == robot::GripperEvent::Kind::Close});
   m.object = object;
+  m.absent_ok = seen.has_value();
   m.cost = p.cost;
   m.skill = "pick";
   controller_.start(std::move(m));

@@ -48,6 +48,14 @@ struct ActionResult {
   double duration = 0; // sim time it took
 };
 
+// Where the robot perceives a thing (camera perception): its base and yaw, and the box
+// it believes the thing has.
+struct SeenThing {
+  robot::ThingPose pose;
+  world::Vec3 size{};
+  bool container = false;
+};
+
 struct SkillRunnerOptions {
   robot::SkillOptions skill;
   double place_gap = world::kPlaceGap;  // clearance between placed things (room for the fingers)
@@ -65,11 +73,14 @@ class SkillRunner {
   const robot::Ur5Kinematics& arm() const { return arm_; }
   // The grasp used for a thing (blocks: around the middle; trays: a long rim).
   robot::Grasp grasp_for(int thing) const;
+  static robot::Grasp grasp_for(const world::Vec3& size, bool container);
 
   // Plan and start a pick of `object` where it is, or where the robot `seen` it (its
   // perceived base and yaw: a pose that is off makes the grasp miss, as on a real robot).
+  // With `seen`, the object need not be in the scene at all (a thing removed where the
+  // camera could not see): the arm goes there and its fingers close on nothing.
   // False (controller in FAILURE) if planning failed.
-  bool start_pick(const std::string& object, const std::optional<robot::ThingPose>& seen = {});
+  bool start_pick(const std::string& object, const std::optional<SeenThing>& seen = {});
   // Plan and start placing the held object into `location` (region or container). False
   // (controller in FAILURE) if the rule book refuses it there ("cannot place o3: r2 has no
   // room (capacity 2)", sim::space_refusal), there is no free spot or no plan.

@@ -94,6 +94,7 @@ void Belief::update(double time, const std::vector<Detection>& seen, const Visib
   for (const auto& t : things_) before_.push_back(t.base);
   follow_gripper(gripper);
   match(time, seen);
+  feel_empty_grasp(time, gripper);
   judge_unseen(time, visibility);
   promote(time, seen);
   locate_all();
@@ -177,6 +178,26 @@ void Belief::carry_contents(const std::vector<Vec3>& before) {
       if (t.container || matched_[i] || t.on != box.name) continue;
       for (int k = 0; k < 3; ++k) t.base[static_cast<std::size_t>(k)] += d[static_cast<std::size_t>(k)];
     }
+  }
+}
+
+void Belief::feel_empty_grasp(double time, const Gripper& g) {
+  if (g.empty_grasp_at < 0 || g.empty_grasp_at <= empty_grasp_at_) return;
+  empty_grasp_at_ = g.empty_grasp_at;
+  constexpr double kSlack = 0.005;  // m around the believed box
+  for (std::size_t i = 0; i < things_.size(); ++i) {
+    BelievedThing& t = things_[i];
+    if (matched_[i] || t.name == held_) continue;
+    const double dx = g.empty_grasp_tool[0] - t.base[0], dy = g.empty_grasp_tool[1] - t.base[1];
+    const double c = std::cos(t.yaw), s = std::sin(t.yaw);
+    const double along = c * dx + s * dy, across = -s * dx + c * dy;
+    const double up = g.empty_grasp_tool[2] - t.base[2];
+    if (std::abs(along) > t.size[0] / 2 + kSlack || std::abs(across) > t.size[1] / 2 + kSlack ||
+        up < -kSlack || up > t.size[2] + kSlack)
+      continue;
+    t.state = ThingState::Missing;
+    t.missing_since = time - options_.remove_after;
+    matched_[i] = kJudgedMissing;
   }
 }
 

@@ -20,6 +20,9 @@
 //    after waiting up to hidden_wait while a thing of its class is occluded (it may be
 //    that one, moved) — a new thing. A thing not seen yet matches within
 //    first_sight_radius of where the scenario declares it.
+//  - A grasp that closed on nothing is a look with the fingers: a thing believed where the
+//    tool point was (inside its box) and not seen in that frame is believed removed at
+//    once (and, seen again within reidentify_within, is the same thing where it is seen).
 //  - A container's contents move with it (carried in the gripper too); the held thing
 //    keeps the offset to the tool it had when grasped. A detection in the air (base above
 //    rest_height) matches only a thing believed in the air, and never starts a candidate;
@@ -78,6 +81,9 @@ class Visibility {
 struct Gripper {
   std::string holds;  // the thing it grasped ("" when empty)
   Vec3 tool{};        // the tool point (world)
+  // The last grasp whose fingers closed on nothing: when (< 0: none) and the tool point then.
+  double empty_grasp_at = -1;
+  Vec3 empty_grasp_tool{};
 };
 
 struct BeliefOptions {
@@ -115,6 +121,7 @@ class Belief {
   };
   void follow_gripper(const Gripper& g);
   void match(double time, const std::vector<Detection>& seen);
+  void feel_empty_grasp(double time, const Gripper& g);
   void judge_unseen(double time, const Visibility& visibility);
   void carry_contents(const std::vector<Vec3>& before);
   void promote(double time, const std::vector<Detection>& seen);
@@ -138,6 +145,7 @@ class Belief {
   std::vector<ClassInfo> classes_;
   std::string held_;
   Vec3 held_offset_{};
+  double empty_grasp_at_ = -1;  // the last empty grasp taken as evidence
   double time_ = 0;
   int added_ = 0;  // things the belief has named
   // Per frame scratch, kept to spare allocations.
