@@ -27,6 +27,7 @@ void Controller::start(MotionPlan plan) {
   done_at_ = -1;
   next_event_ = 0;
   gripper_ = Gripper::Idle;
+  failing_.clear();
   object_ = plan_.object.empty() ? -1 : sim_.find(plan_.object);
   holding_ = false;
   if (plan_.trajectory.empty()) return finish(Status::Failure, "empty motion plan");
@@ -44,7 +45,7 @@ void Controller::start(MotionPlan plan) {
   const robot::Joints q = sim_.arm_q();
   if (robot::max_joint_delta(q, plan_.trajectory.start()) > options_.tracking_limit)
     return finish(Status::Failure, "the plan starts away from the arm's configuration");
-  // A pick approaches with open fingers (a missed grasp left them closed).
+  // A pick approaches with open fingers (a grasp halted while closing leaves them closed).
   if (!holding_ && !plan_.events.empty() && plan_.events.front().close && sim_.held() < 0)
     sim_.set_finger_target(sim_.finger_max());
 }
@@ -53,6 +54,13 @@ void Controller::fail(std::string why) {
   plan_ = MotionPlan{};
   t0_ = sim_.time();
   finish(Status::Failure, std::move(why));
+}
+
+void Controller::fail_open(std::string why) {
+  failing_ = std::move(why);
+  gripper_t0_ = sim_.time();
+  sim_.set_finger_target(sim_.finger_max());
+  gripper_ = Gripper::Opening;
 }
 
 void Controller::finish(Status s, std::string why) {
@@ -96,14 +104,17 @@ Status Controller::update() {
       // Squeeze lightly: a target a little inside the object.
       sim_.set_finger_target(std::max(0.0, sim_.finger_opening() - 0.003));
       gripper_ = Gripper::Idle;
-    } else if (sim_.finger_opening() < 0.002 || now - gripper_t0_ > options_.gripper_timeout) {
+    } else if (sim_.finger_opening() < 0.002) {
       sim_.note_empty_grasp();
-      return finish(Status::Failure, "grasp of '" + plan_.object + "' missed (the fingers closed on nothing)"),
-             status_;
+      fail_open("grasp of '" + plan_.object + "' missed (the fingers closed on nothing)");
+    } else if (now - gripper_t0_ > options_.gripper_timeout) {
+      fail_open("grasp of '" + plan_.object + "' failed (the fingers stopped without holding it)");
     }
   } else if (gripper_ == Gripper::Opening) {
-    if (sim_.finger_opening() > 0.9 * sim_.finger_max() || now - gripper_t0_ > options_.gripper_timeout)
+    if (sim_.finger_opening() > 0.9 * sim_.finger_max() || now - gripper_t0_ > options_.gripper_timeout) {
       gripper_ = Gripper::Idle;
+      if (!failing_.empty()) return finish(Status::Failure, std::move(failing_)), status_;
+    }
   }
 
   if (gripper_ == Gripper::Idle) {

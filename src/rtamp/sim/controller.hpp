@@ -8,14 +8,16 @@
 // Failure conditions (each with a reason string):
 //  - the plan is empty / the target was unreachable (the caller passes the reason);
 //  - the fingers closed without touching the object (grasp missed; the simulation
-//    records the empty grasp, Simulation::last_empty_grasp, as the robot's evidence);
+//    records the empty grasp, Simulation::last_empty_grasp, as the robot's evidence),
+//    or stopped without both touching it (on a neighbour, say): either way the
+//    fingers open again before the failure is reported, so nothing rides along;
 //  - the object left the hand while it had to be held (taken away by the operator,
 //    hidden, or slipped more than slip_tolerance from its grasp pose);
 //  - the object to grasp vanished before the grasp;
 //  - tracking diverged (joint error above tracking_limit, e.g. the arm is blocked).
 // The trajectory clock pauses while the gripper is closing or opening, so plans need no
 // exact gripper timing. halt() stops where the arm is (a BT preemption). A pick opens
-// the fingers as it starts (a missed grasp left them closed).
+// the fingers as it starts (a grasp halted while closing leaves them closed).
 // Invariants: at most one plan runs; after SUCCESS of a plan ending with the object in
 // hand, sim.held() is that object; after a release, it is -1.
 #pragma once
@@ -77,6 +79,7 @@ class Controller {
  private:
   enum class Gripper { Idle, Closing, Opening };
   void finish(Status s, std::string why = {});
+  void fail_open(std::string why);  // opens the fingers, then fails with `why`
   bool must_hold() const;
 
   Simulation& sim_;
@@ -92,6 +95,7 @@ class Controller {
   std::size_t next_event_ = 0;
   Gripper gripper_ = Gripper::Idle;
   bool holding_ = false;  // the plan has grasped the object and not released it yet
+  std::string failing_;   // a failed grasp's reason, reported once the fingers are open
   Eigen::Isometry3d grasp_rel_ = Eigen::Isometry3d::Identity();
 };
 
