@@ -47,7 +47,8 @@ TEST(MissedGrasp, AMoveOfAThingTakenOutOfSightClosesOnNothingWhereItWasBelieved)
   EXPECT_EQ(status, exec::MoveStatus::Failed);
   EXPECT_NE(why.find("missed"), std::string::npos) << why;
   // The fingers closed where o2 was believed, after the arm had got there.
-  const Simulation::EmptyGrasp& grasp = sim.last_empty_grasp();
+  const Simulation::FailedGrasp& grasp = sim.last_failed_grasp();
+  EXPECT_TRUE(grasp.empty);
   EXPECT_GT(grasp.time, t0 + 0.5);
   EXPECT_LT(std::hypot(grasp.tool.x() - believed.base[0], grasp.tool.y() - believed.base[1]), 0.005);
   // Backed off, and the belief has let o2 go: what is perceived is the truth again.
@@ -68,7 +69,7 @@ TEST(MissedGrasp, WithTheTruthPerceivedAMoveOfAThingNotThereFailsAtOnce) {
   std::string why;
   EXPECT_EQ(w.poll(&why), exec::MoveStatus::Failed);
   EXPECT_EQ(why, "'o2' is not in the scene");
-  EXPECT_LT(sim.last_empty_grasp().time, 0);
+  EXPECT_LT(sim.last_failed_grasp().time, 0);
 }
 
 }  // namespace

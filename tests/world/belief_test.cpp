@@ -4,7 +4,8 @@
 // name (also shortly after it was believed removed), the held thing follows the tool, a
 // container's contents move with it, carried too; a frame that sees a thing only through
 // another camera (Elsewhere) leaves its state and Missing clock alone; a grasp that closed
-// on nothing where a thing is believed removes it at once; and the
+// on nothing where a thing is believed removes it at once, one that stopped on something
+// lets the next partial sighting set its pose; and the
 // placement read from the belief equals the scenario's when every thing is seen where it is.
 #include <gtest/gtest.h>
 
@@ -247,14 +248,15 @@ TEST(Belief, AGraspThatClosedOnNothingWhereAThingIsBelievedRemovesItAtOnce) {
   ASSERT_NE(b.find("b2"), nullptr);
   // The fingers closed on nothing beside b2 (outside its box by more than the slack): no evidence.
   Gripper g;
-  g.empty_grasp_at = 0.25;
-  g.empty_grasp_tool = {0.35 + 0.02 + 0.006, 0.3, 0.02};
+  g.failed_grasp_empty = true;
+  g.failed_grasp_at = 0.25;
+  g.failed_grasp_tool = {0.35 + 0.02 + 0.006, 0.3, 0.02};
   b.update(0.3, d, cover, g);
   ASSERT_NE(b.find("b2"), nullptr);
   EXPECT_EQ(b.find("b2")->state, ThingState::Occluded);
   // Where b2 is believed, though still covered (the arm is there): removed at once.
-  g.empty_grasp_at = 0.35;
-  g.empty_grasp_tool = {0.35, 0.3, 0.02};
+  g.failed_grasp_at = 0.35;
+  g.failed_grasp_tool = {0.35, 0.3, 0.02};
   b.update(0.4, d, cover, g);
   EXPECT_EQ(b.find("b2"), nullptr);
   EXPECT_EQ(b.things().size(), 3u);
@@ -270,8 +272,9 @@ TEST(Belief, AnEmptyGraspIsNoEvidenceAgainstAThingSeenInThatFrameOrTakenTwice) {
   Belief b(s);
   auto d = all_seen(s);
   Gripper g;
-  g.empty_grasp_at = 0.05;
-  g.empty_grasp_tool = {0.45, 0.3, 0.02};  // b3's box, but b3 is seen
+  g.failed_grasp_empty = true;
+  g.failed_grasp_at = 0.05;
+  g.failed_grasp_tool = {0.45, 0.3, 0.02};  // b3's box, but b3 is seen
   b.update(0.1, d, Spots{}, g);
   ASSERT_NE(b.find("b3"), nullptr);
   // The same grasp reported again by later frames is not new evidence.
@@ -281,6 +284,35 @@ TEST(Belief, AnEmptyGraspIsNoEvidenceAgainstAThingSeenInThatFrameOrTakenTwice) {
   for (double t = 0.2; t < 1.0; t += 0.1) b.update(t, d, cover, g);
   ASSERT_NE(b.find("b3"), nullptr);
   EXPECT_EQ(b.find("b3")->state, ThingState::Occluded);
+}
+
+TEST(Belief, AGraspThatStoppedOnSomethingLetsTheNextPartialSightingSetThePose) {
+  const Scenario s = scene();
+  Belief b(s);
+  auto d = all_seen(s);
+  b.update(0.1, d, Spots{}, {});
+  // Seen only in part, 2 cm off: the pose stays (an incomplete fit is not trusted).
+  d[2] = {"block", {0.37, 0.3, 0}, 0.3, false};
+  b.update(0.2, d, Spots{}, {});
+  EXPECT_DOUBLE_EQ(b.find("b2")->base[0], 0.35);
+  // A grasp at the believed pose stopped on something it could not hold: that pose is
+  // wrong, so the next sighting, partial as it is, sets it — once.
+  Gripper g;
+  g.failed_grasp_at = 0.25;
+  g.failed_grasp_tool = {0.35, 0.3, 0.02};
+  Spots cover;
+  cover.covered = {"b2"};
+  auto hidden = d;
+  hidden.erase(hidden.begin() + 2);
+  b.update(0.3, hidden, cover, g);
+  ASSERT_NE(b.find("b2"), nullptr) << "something is there: no removal";
+  EXPECT_DOUBLE_EQ(b.find("b2")->base[0], 0.35);
+  b.update(0.4, d, Spots{}, g);
+  EXPECT_DOUBLE_EQ(b.find("b2")->base[0], 0.37);
+  EXPECT_DOUBLE_EQ(b.find("b2")->yaw, 0.3);
+  d[2].base[0] = 0.38;
+  b.update(0.5, d, Spots{}, g);
+  EXPECT_DOUBLE_EQ(b.find("b2")->base[0], 0.37);
 }
 
 TEST(Belief, TheHeldThingFollowsTheToolAndIsPutDownWhereTheToolLeftIt) {

@@ -80,9 +80,10 @@ void CameraPerception::frame(std::size_t k) {
         }
   }
   gripper.holds = held_name_;
-  const Simulation::EmptyGrasp& empty = sim_.last_empty_grasp();
-  gripper.empty_grasp_at = empty.time;
-  gripper.empty_grasp_tool = {empty.tool.x(), empty.tool.y(), empty.tool.z()};
+  const Simulation::FailedGrasp& failed = sim_.last_failed_grasp();
+  gripper.failed_grasp_at = failed.time;
+  gripper.failed_grasp_tool = {failed.tool.x(), failed.tool.y(), failed.tool.z()};
+  gripper.failed_grasp_empty = failed.empty;
   belief_.update(sim_.time(), detections_, Views(eyes_, k), gripper);
 }
 

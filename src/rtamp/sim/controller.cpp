@@ -105,9 +105,10 @@ Status Controller::update() {
       sim_.set_finger_target(std::max(0.0, sim_.finger_opening() - 0.003));
       gripper_ = Gripper::Idle;
     } else if (sim_.finger_opening() < 0.002) {
-      sim_.note_empty_grasp();
+      sim_.note_failed_grasp(true);
       fail_open("grasp of '" + plan_.object + "' missed (the fingers closed on nothing)");
     } else if (now - gripper_t0_ > options_.gripper_timeout) {
+      sim_.note_failed_grasp(false);
       fail_open("grasp of '" + plan_.object + "' failed (the fingers stopped without holding it)");
     }
   } else if (gripper_ == Gripper::Opening) {

@@ -7,10 +7,10 @@
 //
 // Failure conditions (each with a reason string):
 //  - the plan is empty / the target was unreachable (the caller passes the reason);
-//  - the fingers closed without touching the object (grasp missed; the simulation
-//    records the empty grasp, Simulation::last_empty_grasp, as the robot's evidence),
-//    or stopped without both touching it (on a neighbour, say): either way the
-//    fingers open again before the failure is reported, so nothing rides along;
+//  - the fingers closed without touching the object (grasp missed), or stopped
+//    without both touching it (on a neighbour, say): the simulation records which,
+//    and where (Simulation::last_failed_grasp, the robot's evidence), and the fingers
+//    open again before the failure is reported, so nothing rides along;
 //  - the object left the hand while it had to be held (taken away by the operator,
 //    hidden, or slipped more than slip_tolerance from its grasp pose);
 //  - the object to grasp vanished before the grasp;

@@ -135,15 +135,17 @@ class Simulation {
   void attach(int thing);               // weld at the current relative pose
   void detach();  // also frees the reserved spot
   int held() const { return held_; }
-  // The last grasp whose fingers closed on nothing (time < 0: none yet): when, and where
-  // the tool point was. The controller notes it as it attaches a grasped thing; it is
-  // what the robot knows of its gripper, and camera perception takes it as evidence.
-  struct EmptyGrasp {
+  // The last grasp that failed (time < 0: none yet): when, where the tool point was, and
+  // whether the fingers closed on nothing (else they stopped on something they could not
+  // hold). The controller notes it as it attaches a grasped thing; it is what the robot
+  // knows of its gripper, and camera perception takes it as evidence.
+  struct FailedGrasp {
     double time = -1;
     Eigen::Vector3d tool = Eigen::Vector3d::Zero();
+    bool empty = false;
   };
-  void note_empty_grasp() { empty_grasp_ = {time(), tool_pose().translation()}; }
-  const EmptyGrasp& last_empty_grasp() const { return empty_grasp_; }
+  void note_failed_grasp(bool empty) { failed_grasp_ = {time(), tool_pose().translation(), empty}; }
+  const FailedGrasp& last_failed_grasp() const { return failed_grasp_; }
   // The spot the arm is about to put the held thing on (footprint, gap included):
   // free_spot() treats it as taken, so the operator does not put things there.
   void reserve_spot(const world::Footprint& f) { reserved_ = f; }
@@ -182,7 +184,7 @@ class Simulation {
   long torque_limited_steps_ = 0;
   double finger_target_ = 0;
   int held_ = -1;
-  EmptyGrasp empty_grasp_;
+  FailedGrasp failed_grasp_;
   std::optional<world::Footprint> reserved_;
   int gripper_body_ = -1, left_body_ = -1, right_body_ = -1;
   int tcp_site_ = -1, flange_site_ = -1;

@@ -94,7 +94,7 @@ void Belief::update(double time, const std::vector<Detection>& seen, const Visib
   for (const auto& t : things_) before_.push_back(t.base);
   follow_gripper(gripper);
   match(time, seen);
-  feel_empty_grasp(time, gripper);
+  feel_failed_grasp(time, gripper);
   judge_unseen(time, visibility);
   promote(time, seen);
   locate_all();
@@ -159,7 +159,7 @@ void Belief::match(double time, const std::vector<Detection>& seen) {
       t.state = ThingState::Visible;
       t.last_seen = time;
       t.missing_since = -1;
-      if (seen[j].complete) t.base = seen[j].base, t.yaw = seen[j].yaw;
+      if (seen[j].complete || t.doubted) t.base = seen[j].base, t.yaw = seen[j].yaw, t.doubted = false;
     }
   }
   // Whatever else is in the air is in the gripper: never a new thing.
@@ -181,20 +181,24 @@ void Belief::carry_contents(const std::vector<Vec3>& before) {
   }
 }
 
-void Belief::feel_empty_grasp(double time, const Gripper& g) {
-  if (g.empty_grasp_at < 0 || g.empty_grasp_at <= empty_grasp_at_) return;
-  empty_grasp_at_ = g.empty_grasp_at;
+void Belief::feel_failed_grasp(double time, const Gripper& g) {
+  if (g.failed_grasp_at < 0 || g.failed_grasp_at <= failed_grasp_at_) return;
+  failed_grasp_at_ = g.failed_grasp_at;
   constexpr double kSlack = 0.005;  // m around the believed box
   for (std::size_t i = 0; i < things_.size(); ++i) {
     BelievedThing& t = things_[i];
     if (matched_[i] || t.name == held_) continue;
-    const double dx = g.empty_grasp_tool[0] - t.base[0], dy = g.empty_grasp_tool[1] - t.base[1];
+    const double dx = g.failed_grasp_tool[0] - t.base[0], dy = g.failed_grasp_tool[1] - t.base[1];
     const double c = std::cos(t.yaw), s = std::sin(t.yaw);
     const double along = c * dx + s * dy, across = -s * dx + c * dy;
-    const double up = g.empty_grasp_tool[2] - t.base[2];
+    const double up = g.failed_grasp_tool[2] - t.base[2];
     if (std::abs(along) > t.size[0] / 2 + kSlack || std::abs(across) > t.size[1] / 2 + kSlack ||
         up < -kSlack || up > t.size[2] + kSlack)
       continue;
+    if (!g.failed_grasp_empty) {
+      t.doubted = true;
+      continue;
+    }
     t.state = ThingState::Missing;
     t.missing_since = time - options_.remove_after;
     matched_[i] = kJudgedMissing;

@@ -23,6 +23,8 @@
 //  - A grasp that closed on nothing is a look with the fingers: a thing believed where the
 //    tool point was (inside its box) and not seen in that frame is believed removed at
 //    once (and, seen again within reidentify_within, is the same thing where it is seen).
+//    A grasp that failed otherwise proves its pose wrong: the next sighting of the thing,
+//    even an incomplete one, sets it.
 //  - A container's contents move with it (carried in the gripper too); the held thing
 //    keeps the offset to the tool it had when grasped. A detection in the air (base above
 //    rest_height) matches only a thing believed in the air, and never starts a candidate;
@@ -61,6 +63,7 @@ struct BelievedThing {
   double last_seen = -1;      // world time of the last match; < 0: never seen
   double missing_since = -1;  // world time it became Missing
   std::string on;             // the container it rested in at the last frame ("" if none)
+  bool doubted = false;       // a grasp at this pose failed: the next sighting sets the pose
 };
 
 // What a camera could say of a spot where a thing is believed to be: it would be seen
@@ -81,9 +84,11 @@ class Visibility {
 struct Gripper {
   std::string holds;  // the thing it grasped ("" when empty)
   Vec3 tool{};        // the tool point (world)
-  // The last grasp whose fingers closed on nothing: when (< 0: none) and the tool point then.
-  double empty_grasp_at = -1;
-  Vec3 empty_grasp_tool{};
+  // The last grasp that failed: when (< 0: none), the tool point then, and whether the
+  // fingers closed on nothing (else they stopped on something they could not hold).
+  double failed_grasp_at = -1;
+  Vec3 failed_grasp_tool{};
+  bool failed_grasp_empty = false;
 };
 
 struct BeliefOptions {
@@ -121,7 +126,7 @@ class Belief {
   };
   void follow_gripper(const Gripper& g);
   void match(double time, const std::vector<Detection>& seen);
-  void feel_empty_grasp(double time, const Gripper& g);
+  void feel_failed_grasp(double time, const Gripper& g);
   void judge_unseen(double time, const Visibility& visibility);
   void carry_contents(const std::vector<Vec3>& before);
   void promote(double time, const std::vector<Detection>& seen);
@@ -145,7 +150,7 @@ class Belief {
   std::vector<ClassInfo> classes_;
   std::string held_;
   Vec3 held_offset_{};
-  double empty_grasp_at_ = -1;  // the last empty grasp taken as evidence
+  double failed_grasp_at_ = -1;  // the last empty grasp taken as evidence
   double time_ = 0;
   int added_ = 0;  // things the belief has named
   // Per frame scratch, kept to spare allocations.
