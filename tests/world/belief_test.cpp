@@ -267,6 +267,23 @@ TEST(Belief, AGraspThatClosedOnNothingWhereAThingIsBelievedRemovesItAtOnce) {
   EXPECT_NEAR(b.find("b2")->base[1], 0.36, 1e-12);
 }
 
+TEST(Belief, AnEmptyGraspAtABlockOnATrayRemovesTheBlockNotTheTray) {
+  const Scenario s = scene();
+  Belief b(s);
+  auto d = all_seen(s);
+  b.update(0.1, d, Spots{}, {});
+  Spots cover;
+  cover.covered = {"t1", "b1"};  // the arm over b1, which lies on t1
+  d.erase(d.begin(), d.begin() + 2);
+  Gripper g;
+  g.failed_grasp_empty = true;
+  g.failed_grasp_at = 0.15;
+  g.failed_grasp_tool = {0.45, -0.3, 0.03};  // inside b1's box, and inside t1's
+  b.update(0.2, d, cover, g);
+  EXPECT_EQ(b.find("b1"), nullptr);
+  EXPECT_NE(b.find("t1"), nullptr);
+}
+
 TEST(Belief, AnEmptyGraspIsNoEvidenceAgainstAThingSeenInThatFrameOrTakenTwice) {
   const Scenario s = scene();
   Belief b(s);

@@ -46,7 +46,7 @@ void Controller::start(MotionPlan plan) {
   if (robot::max_joint_delta(q, plan_.trajectory.start()) > options_.tracking_limit)
     return finish(Status::Failure, "the plan starts away from the arm's configuration");
   // A pick approaches with open fingers (a grasp halted while closing leaves them closed).
-  if (!holding_ && !plan_.events.empty() && plan_.events.front().close && sim_.held() < 0)
+  if (!plan_.events.empty() && plan_.events.front().close && sim_.held() < 0)
     sim_.set_finger_target(sim_.finger_max());
 }
 

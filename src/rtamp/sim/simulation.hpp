@@ -137,8 +137,8 @@ class Simulation {
   int held() const { return held_; }
   // The last grasp that failed (time < 0: none yet): when, where the tool point was, and
   // whether the fingers closed on nothing (else they stopped on something they could not
-  // hold). The controller notes it as it attaches a grasped thing; it is what the robot
-  // knows of its gripper, and camera perception takes it as evidence.
+  // hold). The controller notes it (as it attaches a thing it grasped): it is what the
+  // robot knows of its gripper, and camera perception takes it as evidence.
   struct FailedGrasp {
     double time = -1;
     Eigen::Vector3d tool = Eigen::Vector3d::Zero();

@@ -184,9 +184,13 @@ void Belief::carry_contents(const std::vector<Vec3>& before) {
 void Belief::feel_failed_grasp(double time, const Gripper& g) {
   if (g.failed_grasp_at < 0 || g.failed_grasp_at <= failed_grasp_at_) return;
   failed_grasp_at_ = g.failed_grasp_at;
+  // The grasp was for the thing whose box holds the tool point, a block before a container
+  // (a block on a tray, not the tray), the nearest before the others.
   constexpr double kSlack = 0.005;  // m around the believed box
+  std::size_t target = things_.size();
+  double nearest = INFINITY;
   for (std::size_t i = 0; i < things_.size(); ++i) {
-    BelievedThing& t = things_[i];
+    const BelievedThing& t = things_[i];
     if (matched_[i] || t.name == held_) continue;
     const double dx = g.failed_grasp_tool[0] - t.base[0], dy = g.failed_grasp_tool[1] - t.base[1];
     const double c = std::cos(t.yaw), s = std::sin(t.yaw);
@@ -195,14 +199,20 @@ void Belief::feel_failed_grasp(double time, const Gripper& g) {
     if (std::abs(along) > t.size[0] / 2 + kSlack || std::abs(across) > t.size[1] / 2 + kSlack ||
         up < -kSlack || up > t.size[2] + kSlack)
       continue;
-    if (!g.failed_grasp_empty) {
-      t.doubted = true;
-      continue;
-    }
-    t.state = ThingState::Missing;
-    t.missing_since = time - options_.remove_after;
-    matched_[i] = kJudgedMissing;
+    const double rank = std::hypot(dx, dy) + (t.container ? 1e3 : 0);  // m; containers last
+    if (rank >= nearest) continue;
+    nearest = rank;
+    target = i;
   }
+  if (target == things_.size()) return;
+  BelievedThing& t = things_[target];
+  if (!g.failed_grasp_empty) {
+    t.doubted = true;
+    return;
+  }
+  t.state = ThingState::Missing;
+  t.missing_since = time - options_.remove_after;
+  matched_[target] = kJudgedMissing;
 }
 
 void Belief::judge_unseen(double time, const Visibility& visibility) {

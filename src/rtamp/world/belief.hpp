@@ -20,9 +20,9 @@
 //    after waiting up to hidden_wait while a thing of its class is occluded (it may be
 //    that one, moved) — a new thing. A thing not seen yet matches within
 //    first_sight_radius of where the scenario declares it.
-//  - A grasp that closed on nothing is a look with the fingers: a thing believed where the
-//    tool point was (inside its box) and not seen in that frame is believed removed at
-//    once (and, seen again within reidentify_within, is the same thing where it is seen).
+//  - A grasp that closed on nothing is a look with the fingers: the thing believed where
+//    the tool point was (inside its box; a block before the tray it lies on) and not seen
+//    in that frame is believed removed at once (and, seen again within reidentify_within, is the same thing where it is seen).
 //    A grasp that failed otherwise proves its pose wrong: the next sighting of the thing,
 //    even an incomplete one, sets it.
 //  - A container's contents move with it (carried in the gripper too); the held thing
