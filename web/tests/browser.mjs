@@ -335,8 +335,10 @@ const cases = {
         }
       }
       assert.ok(held, 'took a thing from the gripper while the robot held it');
-      const { intervention } = await reaction(ws, (x) => x.ev === 'intervention' && x.kind === 'take-from-gripper', 'the take and the reaction');
-      assert.equal(intervention.applied, true, JSON.stringify(intervention));
+      // A refused attempt is logged too (applied: false): the reaction is to the applied one.
+      const { intervention } = await reaction(ws, (x) => x.ev === 'intervention' && x.kind === 'take-from-gripper' && x.applied, 'the take and the reaction');
+      const refused = logRecords(ws).filter((x) => x.ev === 'intervention' && x.kind === 'take-from-gripper' && !x.applied);
+      for (const r of refused) assert.match(r.detail, /nothing in the gripper/, JSON.stringify(r));
       assert.equal(intervention.subject, held);
       await waitFor(async () => (await page.evaluate(() => window.rtamp.things())).find((t) => t.name === held && t.at === 'r1'), `${held} drawn in r1`);
     });
