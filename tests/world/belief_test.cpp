@@ -1,7 +1,8 @@
 // The belief's rules on hand-made frames: what a camera cannot see now is kept (occluded,
 // out of view), a thing is removed only after it was Missing for the configured time, new
 // things only after k sightings, a thing that vanished and shows up elsewhere keeps its
-// name (also shortly after it was believed removed), the held thing follows the tool, a
+// name (also shortly after it was believed removed, or found where it went only once the arm
+// that covered it moved on), a new thing waits at most hidden_wait for a hidden one, the held thing follows the tool, a
 // container's contents move with it, carried too; a frame that sees a thing only through
 // another camera (Elsewhere) leaves its state and Missing clock alone; a grasp that closed
 // on nothing where a thing is believed removes it at once, one that stopped on something
@@ -234,6 +235,52 @@ TEST(Belief, AThingRemovedAMomentAgoThatTurnsUpKeepsItsName) {
   ASSERT_NE(b.find("b3"), nullptr);
   EXPECT_EQ(b.placement().things.at("b3").location, "r1");
   EXPECT_EQ(b.things().size(), 4u);
+}
+
+TEST(Belief, AThingMovedWhileTheArmCoveredItKeepsItsNameAfterALongCover) {
+  // Under the arm for 5 s (a grasp of its neighbour covers a block that long: up to
+  // 6 s in the camera episodes), it turns up in r1 at once: not a new block, but b3,
+  // known as soon as its spot is seen empty.
+  const Scenario s = scene();
+  Belief b(s);
+  auto d = all_seen(s);
+  d[3] = at("block", 0.3, -0.35);
+  Spots arm;
+  arm.covered = {"b3"};
+  for (double t = 0.1; t < 5.05; t += 0.1) {
+    b.update(t, d, arm, {});
+    ASSERT_EQ(b.things().size(), 4u) << "a new thing at t = " << t;
+  }
+  for (double t = 5.1; t < 5.55; t += 0.1) b.update(t, d, Spots{}, {});
+  ASSERT_EQ(b.things().size(), 4u);
+  EXPECT_EQ(b.placement().things.at("b3").location, "r1");
+  EXPECT_EQ(b.find("b3")->state, ThingState::Visible);
+}
+
+TEST(Belief, ANewThingWaitsForAHiddenThingOfItsClassOnlyUpToTheHiddenWait) {
+  const Scenario s = scene();
+  BeliefOptions o;
+  o.hidden_wait = 1;
+  Belief b(s, o);
+  auto d = all_seen(s);
+  d[3] = at("block", 0.3, -0.35);
+  Spots arm;
+  arm.covered = {"b3"};  // covered for good (present under the arm, not seen)
+  b.update(0.1, d, arm, {});
+  b.update(0.2, d, arm, {});
+  EXPECT_EQ(b.things().size(), 4u);  // confirmed, but b3 may have moved there
+  for (double t = 0.3; t < 1.05; t += 0.1) b.update(t, d, arm, {});
+  EXPECT_EQ(b.things().size(), 4u);
+  b.update(1.1, d, arm, {});  // 1 s after the first sighting
+  ASSERT_EQ(b.things().size(), 5u);
+  EXPECT_EQ(b.things().back().name, "block_seen1");
+  EXPECT_EQ(b.find("b3")->state, ThingState::Occluded);
+  // With nothing of its class hidden, a new thing is new once confirmed.
+  d.push_back(at("tray", 0.3, 0.2));
+  b.update(1.2, d, arm, {});
+  b.update(1.3, d, arm, {});
+  ASSERT_EQ(b.things().size(), 6u);
+  EXPECT_EQ(b.things().back().cls, "tray");
 }
 
 TEST(Belief, AGraspThatClosedOnNothingWhereAThingIsBelievedRemovesItAtOnce) {

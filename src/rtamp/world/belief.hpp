@@ -98,7 +98,7 @@ struct BeliefOptions {
   double candidate_timeout = 0.5; // s between a candidate's sightings at most
   double rest_height = 0.05;      // m: a base higher than this is in the air
   double reidentify_within = 5;   // s: a thing removed this recently may turn up again
-  double hidden_wait = 2;         // s a confirmed candidate waits while a thing of its class is occluded
+  double hidden_wait = 8;         // s a confirmed candidate waits at most while a thing of its class is occluded
   double first_sight_radius = 0.3;  // m: a thing never seen yet matches this far from where it was declared
 };
 
