@@ -17,7 +17,9 @@
 // satisfy the task under the direct LTL semantics (ltl/lasso.hpp), labels by
 // the world layer's reference evaluator. Slow: about 60 MuJoCo episodes.
 // RTAMP_SEQUENCING_ONLY=<task>/<kind>/<phase> (e.g. tray-red/remove-container/place)
-// runs the matching episodes alone, with their timeline.
+// runs the matching episodes alone, with their timeline. RTAMP_SEQUENCING_PERCEPTION=camera
+// runs them all with camera perception and keeps every log (scripts/perception-latency
+// then says whether each intervention was perceived, and counts phantoms).
 #include <gtest/gtest.h>
 #include <unistd.h>
 
@@ -328,9 +330,16 @@ struct Outcome {
   std::vector<json> log;
 };
 
+// The perception the episodes run with: RTAMP_SEQUENCING_PERCEPTION, else the truth.
+std::string perception() {
+  const char* p = std::getenv("RTAMP_SEQUENCING_PERCEPTION");
+  return p ? p : "truth";
+}
+
 Outcome run_one(const world::Scenario& s, std::uint64_t seed, const std::string& log_path, bool verbose) {
   EpisodeOptions o;
   o.world = "mujoco";
+  o.world_settings.perception = perception();
   o.seed = seed;
   o.loop.max_time = 300;
   o.outputs.log = log_path;
@@ -410,11 +419,12 @@ TEST(SequencingEpisodes, MidMoveInterventionsOfEveryKind) {
                   << " replans, " << e.metrics.actions_failed << " failed moves\n";
         ++episodes;
         applied += e.metrics.interventions_applied;
-        if (!::testing::Test::HasFailure() && !only) std::filesystem::remove(log);
+        if (!::testing::Test::HasFailure() && !only && perception() == "truth") std::filesystem::remove(log);
       }
     }
-    if (!::testing::Test::HasFailure()) std::filesystem::remove(base_log);
+    if (!::testing::Test::HasFailure() && perception() == "truth") std::filesystem::remove(base_log);
   }
+  if (perception() != "truth") std::cout << "logs kept in " << dir.string() << '\n';
   std::cout << episodes << " disturbed episodes, " << applied << " interventions applied\n";
   if (!only) {
     EXPECT_GE(episodes, 50);

@@ -5,7 +5,8 @@
 // that covered it moved on), a new thing waits at most hidden_wait for a hidden one, the held thing follows the tool, a
 // container's contents move with it, carried too; a frame that sees a thing only through
 // another camera (Elsewhere) leaves its state and Missing clock alone; a grasp that closed
-// on nothing where a thing is believed removes it at once, one that stopped on something
+// on nothing where a thing is believed removes it at once, and so does a hand that lets go of
+// a thing in the air (unless seen there); one that stopped on something
 // lets the next partial sighting set its pose; and the
 // placement read from the belief equals the scenario's when every thing is seen where it is.
 #include <gtest/gtest.h>
@@ -407,6 +408,57 @@ TEST(Belief, TheHeldThingFollowsTheToolAndIsPutDownWhereTheToolLeftIt) {
   b.update(1.2, d, Spots{}, {});
   EXPECT_EQ(b.find("b2")->state, ThingState::Visible);
   EXPECT_EQ(b.things().size(), 4u);
+}
+
+TEST(Belief, AThingLetGoOfInTheAirIsRemovedAtOnceAndKeepsItsNameWhereItTurnsUp) {
+  const Scenario s = scene();
+  Belief b(s);
+  auto d = all_seen(s);
+  b.update(0.1, d, Spots{}, {});
+  Gripper g{"b2", {0.35, 0.3, 0.15}};
+  d.erase(d.begin() + 2);
+  b.update(0.2, d, Spots{}, g);
+  g.tool = {0.35, 0.0, 0.3};  // carried, 30 cm up between r1 and r2
+  b.update(0.3, d, Spots{}, g);
+  // Taken from the gripper: the hand is empty where it was, the arm covers the spot.
+  Spots arm;
+  arm.covered = {"b2"};
+  b.update(0.4, d, arm, Gripper{"", g.tool});
+  EXPECT_EQ(b.find("b2"), nullptr) << "believed floating under the arm";
+  // Put down in r1 by the person: seen there, it is b2 again.
+  d.push_back(at("block", 0.3, -0.35));
+  for (double t = 0.5; t < 0.65; t += 0.1) b.update(t, d, arm, Gripper{"", g.tool});
+  ASSERT_NE(b.find("b2"), nullptr);
+  EXPECT_EQ(b.placement().things.at("b2").location, "r1");
+  EXPECT_EQ(b.things().size(), 4u);
+}
+
+TEST(Belief, ALoadedTrayLetGoOfInTheAirGoesWithItsLoadUnlessSeenThere) {
+  const Scenario s = scene();
+  Belief b(s);
+  auto d = all_seen(s);
+  b.update(0.1, d, Spots{}, {});
+  Gripper g{"t1", {0.45, -0.22, 0.1}};
+  b.update(0.2, d, Spots{}, g);
+  g.tool[2] = 0.3;
+  d[0].base[2] += 0.2;
+  d[1].base[2] += 0.2;
+  for (double t = 0.3; t < 0.65; t += 0.1) b.update(t, d, Spots{}, g);
+  ASSERT_EQ(b.placement().things.at("b1").location, "t1");
+  // Let go of but still seen in the air (a person holds it up): kept.
+  b.update(0.7, d, Spots{}, Gripper{"", g.tool});
+  EXPECT_NE(b.find("t1"), nullptr);
+  EXPECT_NE(b.find("b1"), nullptr);
+  // Grasped again, then let go of with the tray and its block out of sight under the arm.
+  g.tool = {0.45, -0.22, 0.3};
+  b.update(0.8, d, Spots{}, g);
+  Spots arm;
+  arm.covered = {"t1", "b1"};
+  d.erase(d.begin(), d.begin() + 2);
+  b.update(0.9, d, arm, Gripper{"", g.tool});
+  EXPECT_EQ(b.find("t1"), nullptr);
+  EXPECT_EQ(b.find("b1"), nullptr);
+  EXPECT_EQ(b.things().size(), 2u);
 }
 
 TEST(Belief, TheContentsOfAHeldContainerAreCarriedAndSeenInTheAir) {

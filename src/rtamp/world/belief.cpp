@@ -94,6 +94,7 @@ void Belief::update(double time, const std::vector<Detection>& seen, const Visib
   for (const auto& t : things_) before_.push_back(t.base);
   follow_gripper(gripper);
   match(time, seen);
+  feel_let_go(time);
   feel_failed_grasp(time, gripper);
   judge_unseen(time, visibility);
   promote(time, seen);
@@ -103,7 +104,10 @@ void Belief::update(double time, const std::vector<Detection>& seen, const Visib
 void Belief::follow_gripper(const Gripper& g) {
   if (g.holds != held_) {
     for (auto& t : things_) {
-      if (!held_.empty() && t.name == held_) t.state = ThingState::Occluded;  // put down where the tool left it
+      if (!held_.empty() && t.name == held_) {
+        t.state = ThingState::Occluded;  // put down where the tool left it
+        if (t.base[2] > options_.rest_height) let_go_ = t.name;  // ...unless that is in the air
+      }
       if (!g.holds.empty() && t.name == g.holds)
         held_offset_ = {t.base[0] - g.tool[0], t.base[1] - g.tool[1], t.base[2] - g.tool[2]};
     }
@@ -213,6 +217,20 @@ void Belief::feel_failed_grasp(double time, const Gripper& g) {
   t.state = ThingState::Missing;
   t.missing_since = time - options_.remove_after;
   matched_[target] = kJudgedMissing;
+}
+
+void Belief::feel_let_go(double time) {
+  if (let_go_.empty()) return;
+  // Nothing rests in the air: the thing (and what it carried) is not where the hand let it
+  // go, unless this frame sees it there. Seen elsewhere soon, it is re-identified.
+  for (std::size_t i = 0; i < things_.size(); ++i) {
+    BelievedThing& t = things_[i];
+    if (matched_[i] || t.base[2] <= options_.rest_height || (t.name != let_go_ && t.on != let_go_)) continue;
+    t.state = ThingState::Missing;
+    t.missing_since = time - options_.remove_after;
+    matched_[i] = kJudgedMissing;
+  }
+  let_go_.clear();
 }
 
 void Belief::judge_unseen(double time, const Visibility& visibility) {

@@ -26,7 +26,10 @@
 //    A grasp that failed otherwise proves its pose wrong: the next sighting of the thing,
 //    even an incomplete one, sets it.
 //  - A container's contents move with it (carried in the gripper too); the held thing
-//    keeps the offset to the tool it had when grasped. A detection in the air (base above
+//    keeps the offset to the tool it had when grasped. A thing the hand lets go of in the
+//    air (its base above rest_height: taken from the gripper, say), with what it carried,
+//    and not seen there in that frame is believed removed at once (and re-identified if
+//    seen again within reidentify_within). A detection in the air (base above
 //    rest_height) matches only a thing believed in the air, and never starts a candidate;
 //    one below the table (a side face taken for a top) is no evidence at all.
 // The belief never reads the truth: it sees detections, a visibility model and what the
@@ -126,6 +129,7 @@ class Belief {
   };
   void follow_gripper(const Gripper& g);
   void match(double time, const std::vector<Detection>& seen);
+  void feel_let_go(double time);
   void feel_failed_grasp(double time, const Gripper& g);
   void judge_unseen(double time, const Visibility& visibility);
   void carry_contents(const std::vector<Vec3>& before);
@@ -151,6 +155,7 @@ class Belief {
   std::string held_;
   Vec3 held_offset_{};
   double failed_grasp_at_ = -1;  // the last empty grasp taken as evidence
+  std::string let_go_;          // the thing the hand let go of in the air this frame
   double time_ = 0;
   int added_ = 0;  // things the belief has named
   // Per frame scratch, kept to spare allocations.
