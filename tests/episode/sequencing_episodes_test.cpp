@@ -311,7 +311,11 @@ ltl::LassoWord run_word(const world::Scenario& s, const std::vector<json>& log, 
     world::Placement p;
     d << "  t=" << r.at("t").get<double>() << ":";
     for (const auto& [name, loc] : r.at("state").items()) {
-      auto k = kinds.count(name) ? kinds.at(name) : world::Placement::Thing{"", "block", false};
+      // A name the scenario does not know is the added thing's (a camera's belief names it).
+      const bool added = iv && (iv->kind == Kind::Add || iv->kind == Kind::AddContainer);
+      auto k = kinds.count(name) ? kinds.at(name)
+               : added           ? world::Placement::Thing{"", iv->cls, iv->kind == Kind::AddContainer}
+                                 : world::Placement::Thing{"", "block", false};
       p.set(name, loc.get<std::string>(), k.cls, k.container);
       d << ' ' << name << '@' << loc.get<std::string>();
     }
