@@ -433,24 +433,30 @@ TEST(Belief, AThingLetGoOfInTheAirIsRemovedAtOnceAndKeepsItsNameWhereItTurnsUp) 
   EXPECT_EQ(b.things().size(), 4u);
 }
 
-TEST(Belief, ALoadedTrayLetGoOfInTheAirGoesWithItsLoadUnlessSeenThere) {
-  const Scenario s = scene();
-  Belief b(s);
-  auto d = all_seen(s);
+// The tray t1 (b1 on it) grasped at its rim and lifted 20 cm, seen in the gripper with b1
+// on it, frames every 0.1 s until `until`; the gripper then. `d` is every thing seen (scene()).
+Gripper lift_tray(Belief& b, std::vector<Detection>& d, double until) {
   b.update(0.1, d, Spots{}, {});
   Gripper g{"t1", {0.45, -0.22, 0.1}};
   b.update(0.2, d, Spots{}, g);
   g.tool[2] = 0.3;
-  d[0].base[2] += 0.2;
-  d[1].base[2] += 0.2;
-  for (double t = 0.3; t < 0.65; t += 0.1) b.update(t, d, Spots{}, g);
+  d[0].base[2] += 0.2;  // the tray in the gripper, seen
+  d[1].base[2] += 0.2;  // b1 on it
+  for (double t = 0.3; t < until; t += 0.1) b.update(t, d, Spots{}, g);
+  return g;
+}
+
+TEST(Belief, ALoadedTrayLetGoOfInTheAirGoesWithItsLoadUnlessSeenThere) {
+  const Scenario s = scene();
+  Belief b(s);
+  auto d = all_seen(s);
+  const Gripper g = lift_tray(b, d, 0.65);
   ASSERT_EQ(b.placement().things.at("b1").location, "t1");
   // Let go of but still seen in the air (a person holds it up): kept.
   b.update(0.7, d, Spots{}, Gripper{"", g.tool});
   EXPECT_NE(b.find("t1"), nullptr);
   EXPECT_NE(b.find("b1"), nullptr);
   // Grasped again, then let go of with the tray and its block out of sight under the arm.
-  g.tool = {0.45, -0.22, 0.3};
   b.update(0.8, d, Spots{}, g);
   Spots arm;
   arm.covered = {"t1", "b1"};
@@ -465,14 +471,7 @@ TEST(Belief, TheContentsOfAHeldContainerAreCarriedAndSeenInTheAir) {
   const Scenario s = scene();
   Belief b(s);
   auto d = all_seen(s);
-  b.update(0.1, d, Spots{}, {});
-  // The tray t1 (b1 on it) grasped at its rim and lifted 20 cm: b1 is seen in the air above its old place.
-  Gripper g{"t1", {0.45, -0.22, 0.1}};
-  b.update(0.2, d, Spots{}, g);
-  g.tool[2] = 0.3;
-  d[0].base[2] += 0.2;  // the tray in the gripper, seen
-  d[1].base[2] += 0.2;  // b1 on it
-  for (double t = 0.3; t < 1.0; t += 0.1) b.update(t, d, Spots{}, g);
+  lift_tray(b, d, 1.0);
   ASSERT_NE(b.find("b1"), nullptr);
   EXPECT_EQ(b.find("b1")->state, ThingState::Visible);
   EXPECT_NEAR(b.find("b1")->base[2], 0.21, 1e-12);
