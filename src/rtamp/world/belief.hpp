@@ -154,7 +154,7 @@ class Belief {
   std::vector<ClassInfo> classes_;
   std::string held_;
   Vec3 held_offset_{};
-  double failed_grasp_at_ = -1;  // the last empty grasp taken as evidence
+  double failed_grasp_at_ = -1;  // the last failed grasp taken as evidence
   std::string let_go_;          // the thing the hand let go of in the air this frame
   double time_ = 0;
   int added_ = 0;  // things the belief has named
