@@ -6,7 +6,9 @@
 //   BM_CameraFrame/1/1   RGB + depth + noise + the segmentation pass (a second render; tests only)
 //   BM_DepthNoise        the depth noise alone, on one frame's clean depth
 //   BM_SegmentAndFit     colour segmentation, top faces and box fits of one rendered frame
-//   BM_PerceptionFrame   a whole frame: render with noise, detect, visibility, belief update
+//   BM_PerceptionFrame/C a whole frame: render with noise, detect, visibility, belief update,
+//                        of C = 0 the overhead camera, 1 the wrist camera (424x240, arm at
+//                        home), 2 both (one frame of each)
 // Counter fps = frames per second of wall time; things = boxes fitted a frame.
 #include <benchmark/benchmark.h>
 
@@ -67,12 +69,15 @@ void BM_PerceptionFrame(benchmark::State& state) {
   const world::Scenario s = world::load_scenario("3-block-tray");
   sim::Simulation sim(s);
   sim.step(50);
-  sim::CameraPerception eyes(sim);
+  sim::CameraPerceptionOptions o;
+  const std::vector<std::vector<std::string>> sets{{"overhead"}, {"wrist"}, {"overhead", "wrist"}};
+  o.cameras = sets.at(static_cast<std::size_t>(state.range(0)));
+  sim::CameraPerception eyes(sim, o);
   for (auto _ : state) eyes.frame();
   state.counters["fps"] = benchmark::Counter(static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
   state.counters["things"] = static_cast<double>(eyes.belief().things().size());
 }
-BENCHMARK(BM_PerceptionFrame)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_PerceptionFrame)->Arg(0)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 }  // namespace
 

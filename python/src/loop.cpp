@@ -28,7 +28,7 @@ MoveStatus as_status(const py::handle& h) {
 // The trampoline: exec::World's methods from a Python subclass. Required:
 // time, advance, observe, start, poll, halt. Optional: next_event_time
 // (default infinity: the loop ticks every tick_period), busy (False), hand
-// (''), distance_travelled (0), take_events ([]); and the intervention
+// (''), distance_travelled (0), take_events ([]), confirming (False); and the intervention
 // capability (exec/intervenable.hpp): a subclass that defines both
 // true_placement() and apply(intervention) can be driven by a Person.
 class PyWorld : public exec::World, public exec::Intervenable {
@@ -91,6 +91,7 @@ class PyWorld : public exec::World, public exec::Intervenable {
     return f ? f().cast<std::string>() : std::string();
   }
   double distance_travelled() const override { PYBIND11_OVERRIDE(double, exec::World, distance_travelled, ); }
+  bool confirming() const override { PYBIND11_OVERRIDE(bool, exec::World, confirming, ); }
   std::vector<exec::WorldEvent> take_events() override {
     PYBIND11_OVERRIDE(std::vector<exec::WorldEvent>, exec::World, take_events, );
   }
@@ -256,7 +257,8 @@ void bind_loop(py::module_& m) {
       "  halt()                        stop the move; make the arm safe (busy() until done)\n"
       "optional: next_event_time() (default inf: ticked every tick_period; a discrete-event world\n"
       "returns when it next changes), busy() (False), hand() ('' = home: where the last place ended),\n"
-      "distance_travelled() (0), take_events() ([] of WorldEvent).\n"
+      "distance_travelled() (0), take_events() ([] of WorldEvent), confirming() (False: True while\n"
+      "its perception has seen a change it does not report yet; the task is not judged meanwhile).\n"
       "To let a simulated person act on it (rtamp.PersonWorld), define both true_placement() ->\n"
       "{thing: location} (where things truly are) and apply(intervention) -> WorldEvent | bool\n"
       "(carry it out now, or refuse it), and report the events from take_events().\n"
@@ -274,6 +276,8 @@ void bind_loop(py::module_& m) {
       .def("next_event_time", &exec::World::next_event_time,
            "When something next happens by itself (a discrete-event world); inf: tick at the loop's rate.")
       .def("observe", &exec::World::observe, "What perception sees now: where every thing is.")
+      .def("confirming", &exec::World::confirming,
+           "True while perception has seen a change it does not report in observe() yet (it is making sure).")
       .def("start", &exec::World::start, py::arg("move"), "Starts a Move (one at a time).")
       .def("poll",
            [](exec::World& w) {

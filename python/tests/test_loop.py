@@ -150,6 +150,20 @@ def test_continuous_python_world(tray):
     assert m.success and m.world_time > 0.7
 
 
+class ConfirmingWorld(ContinuousWorld):
+    """Its perception is making sure of something it saw until t = 3: the task is not judged before."""
+
+    def confirming(self):
+        return self.t < 3.0
+
+
+def test_the_task_is_not_judged_while_a_python_world_is_confirming(tray):
+    m = rtamp.ReactiveLoop(ContinuousWorld(tray), tray, planning="inline", tick_period=0.05).run()
+    assert m.success and m.world_time < 3.0
+    m = rtamp.ReactiveLoop(ConfirmingWorld(tray), tray, planning="inline", tick_period=0.05).run()
+    assert m.success and m.world_time >= 3.0
+
+
 class BrokenWorld(ContinuousWorld):
     def observe(self):
         raise RuntimeError("camera unplugged")

@@ -73,6 +73,30 @@ TEST(PerceptionErrors, APersonsChangeShowsExactlyTheDelayLate) {
   EXPECT_FALSE(w.differs());
 }
 
+// A change is being confirmed in the last `delay` before it shows (the camera sees it,
+// the belief makes sure); before that, a late change is hidden from the camera.
+TEST(PerceptionErrors, AChangeIsConfirmedOnlyInTheLastDelayBeforeItShows) {
+  const world::Scenario s = scene();
+  SymbolicWorld truth(s);
+  PerceptionErrors e;
+  e.delay = 0.4;
+  e.late_probability = 1;
+  e.late_delay = 2;
+  PerceptionErrorWorld w(truth, s, e);
+  EXPECT_FALSE(w.confirming());
+  ASSERT_TRUE(truth.apply(iv(Kind::Relocate, "o3", "r1")).applied);
+  EXPECT_EQ(where(w, "o3"), "r2");  // noticed now, shown at 2
+  EXPECT_FALSE(w.confirming());
+  truth.advance(1.5);
+  EXPECT_FALSE(w.confirming());
+  truth.advance(0.1);
+  EXPECT_TRUE(w.confirming());
+  EXPECT_EQ(where(w, "o3"), "r2");
+  truth.advance(0.4);
+  EXPECT_EQ(where(w, "o3"), "r1");
+  EXPECT_FALSE(w.confirming());
+}
+
 TEST(PerceptionErrors, ChangesMadeTogetherShowTogetherAndConsistently) {
   const world::Scenario s = scene();
   SymbolicWorld truth(s);

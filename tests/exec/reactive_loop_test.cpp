@@ -597,6 +597,33 @@ TEST(ReactiveLoop, TheTaskIsJudgedOnlyOnASettledPercept) {
   }
 }
 
+// A percept is not settled while the world is confirming a change it has seen (a
+// camera's belief making sure a new thing is one): o2, unseen at first, shows at
+// t = 12 after being confirmed since t = 0.1. A world that does not say so has the
+// task judged done on o1 alone, with o2 still in r1.
+TEST(ReactiveLoop, APerceptIsNotSettledWhileTheWorldIsConfirmingAChange) {
+  const world::Scenario s = scene("F G all_in_r2", 2);
+  struct Confirming : Glitch {
+    bool says;
+    Confirming(World& w, bool say) : Glitch(w, "o2", "", 0, 12), says(say) {}
+    bool confirming() const override { return says && inner_.time() >= 0.1 && inner_.time() < 12; }
+  };
+  for (const bool says : {false, true}) {
+    SCOPED_TRACE(says ? "says it is confirming" : "does not say");
+    SymbolicWorld inner(s);
+    Confirming w(inner, says);
+    LoopOptions o = inline_options();
+    o.settle = 0.5;
+    ReactiveLoop loop(w, s, o);
+    const EpisodeMetrics& m = loop.run();
+    EXPECT_EQ(m.end, EndReason::TaskDone) << m.reason;
+    EXPECT_EQ(*inner.truth().location_of("o1"), "r2");
+    EXPECT_EQ(*inner.truth().location_of("o2"), says ? "r2" : "r1");
+    if (says) EXPECT_GT(m.world_time, 12);
+    else EXPECT_LT(m.world_time, 12);
+  }
+}
+
 // An end caused by a person's intervention names it.
 TEST(ReactiveLoop, AnEndCausedByAnInterventionNamesIt) {
   const world::Scenario s = scene("F G all_in_r2 & G !o1_in_r3");

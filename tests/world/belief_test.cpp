@@ -99,8 +99,10 @@ TEST(Belief, RemovedOnlyAfterMissingForTheConfiguredTime) {
   Belief b(s, o);
   auto d = all_seen(s);
   d.erase(d.begin() + 2);  // b2 gone, its spot in view
+  EXPECT_FALSE(b.confirming());
   b.update(1.0, d, Spots{}, {});
   EXPECT_EQ(b.find("b2")->state, ThingState::Missing);
+  EXPECT_TRUE(b.confirming());  // that it is gone
   b.update(1.2, d, Spots{}, {});
   ASSERT_NE(b.find("b2"), nullptr);
   // Covered meanwhile: the clock starts again when the spot is in view.
@@ -113,6 +115,7 @@ TEST(Belief, RemovedOnlyAfterMissingForTheConfiguredTime) {
   ASSERT_NE(b.find("b2"), nullptr);
   b.update(1.8, d, Spots{}, {});
   EXPECT_EQ(b.find("b2"), nullptr);
+  EXPECT_FALSE(b.confirming());
   EXPECT_EQ(b.placement().things.count("b2"), 0u);
 }
 
@@ -186,8 +189,10 @@ TEST(Belief, ANewThingAfterKSightingsWithANameNeverUsed) {
   b.update(0.1, d, Spots{}, {});
   b.update(0.2, d, Spots{}, {});
   EXPECT_EQ(b.things().size(), 4u);
+  EXPECT_TRUE(b.confirming());  // that the sighting is a thing
   b.update(0.3, d, Spots{}, {});
   ASSERT_EQ(b.things().size(), 5u);
+  EXPECT_FALSE(b.confirming());
   const BelievedThing& n = b.things().back();
   EXPECT_EQ(n.name, "block_seen1");
   EXPECT_EQ(b.placement().things.at("block_seen1").location, "r2");
@@ -207,7 +212,9 @@ TEST(Belief, ASightingThatDoesNotRecurIsForgotten) {
   auto flash = d;
   flash.push_back(at("block", 0.5, 0.25));
   b.update(0.1, flash, Spots{}, {});
+  EXPECT_TRUE(b.confirming());
   b.update(0.7, d, Spots{}, {});
+  EXPECT_FALSE(b.confirming());  // forgotten
   b.update(0.8, flash, Spots{}, {});
   EXPECT_EQ(b.things().size(), 4u);
 }
@@ -272,8 +279,10 @@ TEST(Belief, ANewThingWaitsForAHiddenThingOfItsClassOnlyUpToTheHiddenWait) {
   EXPECT_EQ(b.things().size(), 4u);  // confirmed, but b3 may have moved there
   for (double t = 0.3; t < 1.05; t += 0.1) b.update(t, d, arm, {});
   EXPECT_EQ(b.things().size(), 4u);
+  EXPECT_TRUE(b.confirming());  // the whole wait
   b.update(1.1, d, arm, {});  // 1 s after the first sighting
   ASSERT_EQ(b.things().size(), 5u);
+  EXPECT_FALSE(b.confirming());
   EXPECT_EQ(b.things().back().name, "block_seen1");
   EXPECT_EQ(b.find("b3")->state, ThingState::Occluded);
   // With nothing of its class hidden, a new thing is new once confirmed.

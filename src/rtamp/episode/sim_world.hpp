@@ -41,6 +41,7 @@ class SimWorld final : public exec::World, public exec::Intervenable, public exe
   double time() const override { return session_.sim().time(); }
   void advance(double dt) override;
   world::Placement observe() override;
+  bool confirming() const override { return session_.perception().confirming(); }
   void start(const exec::Move& m) override;
   exec::MoveStatus poll(std::string* why) override;
   void halt() override;

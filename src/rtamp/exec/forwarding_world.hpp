@@ -16,6 +16,7 @@ class ForwardingWorld : public World {
   void advance(double dt) override { inner_.advance(dt); }
   double next_event_time() const override { return inner_.next_event_time(); }
   world::Placement observe() override { return inner_.observe(); }
+  bool confirming() const override { return inner_.confirming(); }
   void start(const Move& m) override { inner_.start(m); }
   MoveStatus poll(std::string* why) override { return inner_.poll(why); }
   void halt() override { inner_.halt(); }

@@ -168,6 +168,13 @@ world::Placement PerceptionErrorWorld::observe() {
   return out;
 }
 
+bool PerceptionErrorWorld::confirming() const {
+  const double now = inner_.time();
+  for (const auto& [name, due] : due_)
+    if (due <= now + errors_.delay + kTimeTolerance) return true;
+  return inner_.confirming();
+}
+
 void PerceptionErrorWorld::start(const Move& m) {
   const world::Placement truth = inner_.observe();
   // The arm goes to the thing and to where it goes, and sees what is there.

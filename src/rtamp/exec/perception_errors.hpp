@@ -9,6 +9,8 @@
 //    `false_removal_duration` seconds, at `false_removal_rate` per thing-second;
 //  - a move of a thing, or to a container, whose change is not shown yet
 //    reveals it (the arm goes there and the camera sees): it shows at once.
+// A change due to show within `delay` is being confirmed (confirming()): the
+// camera sees it and its belief is making sure; a late one is hidden till then.
 // What the robot's gripper does shows at once (the belief follows the
 // gripper): its move's thing going into the hand and out of it, wherever to.
 // Invariants: observe() is always a consistent placement (a thing is in a
@@ -66,6 +68,7 @@ class PerceptionErrorWorld final : public ForwardingWorld {
 
   double next_event_time() const override;
   world::Placement observe() override;
+  bool confirming() const override;
   void start(const Move& m) override;
 
   const PerceptionErrors& errors() const { return errors_; }

@@ -742,7 +742,7 @@ void ReactiveLoop::finish_violated() {
 }
 
 bool ReactiveLoop::settled() const {
-  return world_.time() - percept_changed_at_ >= options_.settle - 1e-9;
+  return world_.time() - percept_changed_at_ >= options_.settle - 1e-9 && !world_.confirming();
 }
 
 bool ReactiveLoop::count_cycle() {

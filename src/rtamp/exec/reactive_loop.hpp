@@ -88,7 +88,8 @@ struct LoopOptions {
   // s the perceived placement must have stayed the same (but for the robot's
   // own moves) before the task is judged done or impossible, or the last
   // cycle ends: perception that may still be catching up with a change (a
-  // camera's belief) settles first. 0: at once.
+  // camera's belief) settles first. 0: at once. Never settled while the world
+  // is confirming a change it has seen (World::confirming).
   double settle = 0;
   int cycles = 0;              // recurring tasks: succeed after this many cycles (0: never)
   std::uint64_t seed = 0;      // reported in the metrics
@@ -186,7 +187,7 @@ class ReactiveLoop {
   // it, and once the episode's cycles are done stop starting moves. True if
   // a cycle was counted.
   bool count_cycle();
-  bool settled() const;  // the percept has not changed for options_.settle
+  bool settled() const;  // the percept has not changed for options_.settle, nor is a change being confirmed
   void finish_violated();  // ends: the run so far leaves the task no accepting future
   bool cycle_satisfies(std::size_t from) const;
   void wait_for_worker();

@@ -6,7 +6,7 @@
 //
 // The loop only ever
 //  - asks what time it is and lets time pass (advance),
-//  - observes where every present thing is (observe),
+//  - observes where every present thing is (observe, confirming),
 //  - starts one move at a time, polls it, and may halt it (start / poll / halt / busy).
 // People act on the world on their own: the loop learns of their interventions
 // by observing; take_events() only reports them for the log. A world a
@@ -85,6 +85,11 @@ class World {
 
   // Where every present thing is (see the contract above).
   virtual world::Placement observe() = 0;
+  // Whether the world's perception has seen a change it does not report in observe()
+  // yet, because it is still confirming it (a camera's belief making sure a new thing is
+  // one, or that a thing is gone). The loop judges the task on a settled percept, and a
+  // percept is not settled while this holds. It must not hold for long (a few seconds).
+  virtual bool confirming() const { return false; }
 
   virtual void start(const Move& m) = 0;
   // Status of the last started move; on Failed `why` (if not null) gets the reason.

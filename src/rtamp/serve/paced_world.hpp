@@ -37,6 +37,7 @@ class PacedWorld final : public exec::World {
   void advance(double dt) override;
   double next_event_time() const override { return inner_.next_event_time(); }
   world::Placement observe() override { return inner_.observe(); }
+  bool confirming() const override { return inner_.confirming(); }
   void start(const exec::Move& m) override { inner_.start(m); }
   exec::MoveStatus poll(std::string* why) override { return inner_.poll(why); }
   void halt() override { inner_.halt(); }

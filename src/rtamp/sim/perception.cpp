@@ -59,6 +59,8 @@ void Perception::advance() {
   }
 }
 
+bool Perception::confirming() const { return camera_ && camera_->belief().confirming(); }
+
 Percept Perception::observe() {
   Percept p;
   observe(p);

@@ -81,6 +81,9 @@ class Perception {
   // order the cameras were asked); call it after each step. Truth: nothing.
   void advance();
   const PerceptionOptions& options() const { return options_; }
+  // Camera: the belief is confirming a change it has seen (world::Belief::confirming).
+  // Truth: never.
+  bool confirming() const;
   // The camera pipeline (nullptr for Truth).
   const CameraPerception* camera() const { return camera_.get(); }
   // Camera: `f` is called after each frame of any camera, with the pipeline (that frame's

@@ -370,6 +370,13 @@ void Belief::promote(double time, const std::vector<Detection>& seen) {
     }
 }
 
+bool Belief::confirming() const {
+  if (!candidates_.empty()) return true;
+  for (const auto& t : things_)
+    if (t.state == ThingState::Missing) return true;
+  return false;
+}
+
 std::string Belief::fresh_name(const std::string& cls) {
   for (;;) {
     std::string name = cls + "_seen" + std::to_string(++added_);

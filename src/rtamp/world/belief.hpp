@@ -119,6 +119,10 @@ class Belief {
   // Every believed thing's location: the held one "hand", the others where their base lies.
   Placement placement() const;
   const BeliefOptions& options() const { return options_; }
+  // Whether a change is seen but not believed yet: a sighting not yet a thing (a
+  // candidate, waiting for its sightings or for a hidden thing of its class), or a thing
+  // Missing not yet long enough to be removed. At most hidden_wait after it began.
+  bool confirming() const;
 
  private:
   struct Candidate {
