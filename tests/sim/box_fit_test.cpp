@@ -1,6 +1,6 @@
 // Poses from pixels against the truth: in generated static scenes (2-5 regions, 1-8
 // blocks, 0-2 trays with blocks on them; arm at home; seeds 1-12, or 1-N with
-// RTAMP_BOX_FIT_SCENES=N) the default overhead camera's image with its depth noise goes
+// RTAMP_CAMERA_SCENES=N) the default overhead camera's image with its depth noise goes
 // through the detector (sim::CameraDetector: colour segments, top faces, touching blocks
 // cut apart, a tray's rims joined, a box of the class's size fitted). Every thing gets
 // one complete fit; its base lies within 5 mm of the truth (median within 2 mm), and
@@ -10,7 +10,6 @@
 
 #include <algorithm>
 #include <cstdio>
-#include <cstdlib>
 #include <numbers>
 
 #include "rtamp/sim/box_fit.hpp"
@@ -33,9 +32,7 @@ Eigen::Vector3d truth_base(const Simulation& sim, int i) {
 TEST(BoxFit, StaticScenesArePerceivedAsTheyAre) {
   std::vector<double> errors;
   int scenes = 0;
-  const char* env = std::getenv("RTAMP_BOX_FIT_SCENES");
-  const std::uint64_t last = env ? std::strtoull(env, nullptr, 10) : 12;
-  for (std::uint64_t seed = 1; seed <= last; ++seed) {
+  for (std::uint64_t seed = 1; seed <= testing::camera_scene_count(); ++seed) {
     const world::Scenario s = testing::camera_scene(seed);
     SCOPED_TRACE("seed " + std::to_string(seed));
     Simulation sim(s);

@@ -27,7 +27,7 @@ using testing::watch;
 
 TEST(CameraPerception, StaticScenesAreBelievedAsTheyAreUnderTheirOwnNames) {
   int things = 0;
-  for (std::uint64_t seed = 1; seed <= 12; ++seed) {
+  for (std::uint64_t seed = 1; seed <= testing::camera_scene_count(); ++seed) {
     SCOPED_TRACE("seed " + std::to_string(seed));
     const world::Scenario s = testing::camera_scene(seed);
     Simulation sim(s);

@@ -55,7 +55,7 @@ Score score_scene(const world::Scenario& s, const std::function<void(Simulation&
 
 TEST(ColourSegmentation, AgreesWithTheSegmentationPassPixelByPixel) {
   Score total;
-  for (std::uint64_t seed = 1; seed <= 12; ++seed) {
+  for (std::uint64_t seed = 1; seed <= testing::camera_scene_count(); ++seed) {
     const world::Scenario s = testing::camera_scene(seed);
     SCOPED_TRACE("seed " + std::to_string(seed));
     const Score sc = score_scene(s);

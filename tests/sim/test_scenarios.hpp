@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <cstdlib>
 
 #include "rtamp/world/generator.hpp"
 #include "rtamp/world/scenario.hpp"
@@ -24,6 +25,14 @@ inline world::Scenario three_block(bool with_tray = false) {
   s.objects.push_back({"o2", "block", {0.50, -0.30, 0}, {0.04, 0.04, 0.04}, {}});
   s.objects.push_back({"o3", "block", {0.40, -0.24, 0}, {0.04, 0.04, 0.04}, {}});
   return s;
+}
+
+// How many of camera_scene's seeds (1..N) the static-scene tests run: 12, or
+// RTAMP_CAMERA_SCENES=N to look wider by hand.
+inline std::uint64_t camera_scene_count() {
+  const char* env = std::getenv("RTAMP_CAMERA_SCENES");
+  const std::uint64_t n = env ? std::strtoull(env, nullptr, 10) : 0;
+  return n > 0 ? n : 12;
 }
 
 // The camera tests' scenes: 2-5 regions on a line, 1-8 blocks, 0-2 trays (with blocks on
