@@ -16,13 +16,32 @@ void SimWorld::advance(double dt) {
   const int steps = std::max(1, static_cast<int>(std::lround(dt / sim.timestep())));
   Eigen::Vector3d last = sim.tool_pose().translation();
   for (int k = 0; k < steps; ++k) {
+    park_if_idle();
     session_.controller().update();
     sim.step();
     session_.perception().advance();
     const Eigen::Vector3d tool = sim.tool_pose().translation();
     travelled_ += (tool - last).norm();  // the tool path actually travelled
     last = tool;
+    if (parking_ && session_.controller().status() != sim::Status::Running) {
+      parking_ = false;
+      if (session_.controller().status() == sim::Status::Success) hand_.clear();  // home
+    }
   }
+}
+
+void SimWorld::park_if_idle() {
+  if (parking_ || park_refused_ || returning_ || !session_.perception().camera()) return;
+  if ((phase_ != Phase::Idle && phase_ != Phase::Done) || session_.sim().held() >= 0) return;
+  if (session_.sim().time() - idle_since_ < kParkAfter - 1e-9) return;
+  auto& controller = session_.controller();
+  if (controller.status() == sim::Status::Running) return;
+  if (!session_.skills().start_park()) {
+    park_refused_ = true;
+    return;
+  }
+  parking_ = controller.status() == sim::Status::Running;
+  park_refused_ = !parking_;  // home already
 }
 
 void SimWorld::note(const sim::OperatorEvent& e) {
@@ -63,6 +82,8 @@ void SimWorld::end(exec::MoveStatus s, const std::string& why) {
   status_ = s;
   why_ = why;
   phase_ = Phase::Done;
+  idle_since_ = session_.sim().time();
+  park_refused_ = false;
 }
 
 std::string SimWorld::body_of(const std::string& believed) const {
@@ -86,6 +107,10 @@ std::string SimWorld::body_of(const std::string& believed) const {
 }
 
 void SimWorld::start(const exec::Move& m) {
+  if (parking_) {  // the move takes over from where the arm is
+    session_.controller().halt();
+    parking_ = false;
+  }
   move_ = m;
   move_.thing = body_of(m.thing);
   move_.from = body_of(m.from);

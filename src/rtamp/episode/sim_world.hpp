@@ -19,8 +19,10 @@
 // picks at the thing's perceived pose (even where no body is left: the fingers then close
 // on nothing, and the belief takes that as evidence), and the simulation's body it acts on is the one of
 // that class nearest where the thing is believed (a thing a person added has a name of
-// the belief's own).
-// Invariants: at most one move runs; hand() is where the last place ended.
+// the belief's own). An arm left idle for kParkAfter with its gripper empty goes home, out
+// of the fixed camera's view, so that what it covered is seen (a person's change under it
+// would otherwise wait for the next move there); a move started meanwhile takes over.
+// Invariants: at most one move runs; hand() is where the last place ended ("" once parked).
 #pragma once
 
 #include <memory>
@@ -68,6 +70,11 @@ class SimWorld final : public exec::World, public exec::Intervenable, public exe
   sim::Session& session() { return session_; }
   const sim::Session& session() const { return session_; }
 
+  // With camera perception: the seconds an idle, empty arm waits before it parks.
+  static constexpr double kParkAfter = 0.3;
+  // The arm is on its way home (parking).
+  bool parking() const { return parking_; }
+
  private:
   enum class Phase { Idle, Picking, Placing, Recovering, Done };
 
@@ -79,6 +86,7 @@ class SimWorld final : public exec::World, public exec::Intervenable, public exe
   // Starts placing the held thing at `preferred`, else the closest region with room; false if none.
   bool place_somewhere(const std::string& preferred);
   void end(exec::MoveStatus s, const std::string& why);
+  void park_if_idle();
 
   sim::Session session_;
   sim::Percept percept_;
@@ -91,6 +99,9 @@ class SimWorld final : public exec::World, public exec::Intervenable, public exe
   bool taken_ = false;  // a person took the carried thing
   std::string back_thing_;
   double travelled_ = 0;
+  double idle_since_ = 0;      // world time the last move ended
+  bool parking_ = false;
+  bool park_refused_ = false;  // since the last move: not tried again
   std::vector<exec::WorldEvent> events_;
 };
 

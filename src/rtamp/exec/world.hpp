@@ -28,6 +28,9 @@
 //    busy() is true until that is done; poll() reports Failed ("halted").
 //  - A thing taken out of the gripper by a person ends the running move with
 //    Failed.
+//  - While no move runs, a world may move its empty arm on its own (the MuJoCo
+//    world with a camera parks it out of the camera's view); start() then takes
+//    over from where the arm is, and hand() says where the arm is.
 //  - next_event_time() lets a discrete-event world say when something will
 //    next happen; continuous worlds return infinity and are ticked at the
 //    loop's tick period. The loop is live: it ticks the tree before it lets

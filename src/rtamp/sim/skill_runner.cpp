@@ -1,5 +1,6 @@
 #include "rtamp/sim/skill_runner.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 namespace rtamp::sim {
@@ -165,6 +166,54 @@ bool SkillRunner::start_retreat(double height) {
   m.trajectory.append_polyline(*line, options_.skill.limits);
   m.cost = robot::tool_path_length(arm_, m.trajectory, options_.skill.cost_joint_step);
   m.skill = "retreat";
+  controller_.start(std::move(m));
+  return controller_.status() == Status::Running;
+}
+
+robot::Joints SkillRunner::home() const {
+  const mjModel* m = sim_.model();
+  const int key = mj_name2id(m, mjOBJ_KEY, "home");
+  robot::Joints q{};
+  for (int j = 0; j < 6; ++j) q[j] = key >= 0 ? m->key_qpos[key * m->nq + j] : m->qpos0[j];
+  return q;
+}
+
+bool SkillRunner::start_park(double height) {
+  if (sim_.held() >= 0) {
+    controller_.fail("cannot park holding '" + sim_.thing(sim_.held()).name + "'");
+    return false;
+  }
+  const robot::Joints q0 = sim_.arm_q(), home_q = home();
+  double far = 0;
+  for (int j = 0; j < 6; ++j) far = std::max(far, std::abs(q0[j] - home_q[j]));
+  if (far < 0.02) return true;  // rad: home already
+  MotionPlan m;
+  m.trajectory = robot::Trajectory(q0);
+  robot::Joints from = q0;
+  Eigen::Isometry3d up = arm_.tool_pose(q0);
+  if (up.translation().z() < height) {
+    up.translation().z() = height;
+    std::string why;
+    const auto line = robot::cartesian_line(arm_, q0, up, options_.skill.cartesian, &why);
+    if (!line) {
+      controller_.fail("cannot park: " + why);
+      return false;
+    }
+    m.trajectory.append_polyline(*line, options_.skill.limits);
+    from = line->back();
+  }
+  SimCollisionChecker checker(sim_);
+  for (int k = 1; k <= 20; ++k) {
+    robot::Joints q;
+    for (int j = 0; j < 6; ++j) q[j] = from[j] + (home_q[j] - from[j]) * k / 20.0;
+    if (checker.config_collides(q)) {
+      controller_.fail("cannot park: the way home collides");
+      return false;
+    }
+  }
+  m.trajectory.append_polyline({from, home_q}, options_.skill.limits);
+  m.cost = robot::tool_path_length(arm_, m.trajectory, options_.skill.cost_joint_step);
+  m.skill = "park";
   controller_.start(std::move(m));
   return controller_.status() == Status::Running;
 }

@@ -90,6 +90,13 @@ class SkillRunner {
   // gripper holds something or the line is not feasible; true if no motion is needed
   // (then the controller is left as it was) or the motion started.
   bool start_retreat(double height = 0.10);
+  // Take the empty arm home (the model's "home" keyframe), out of a fixed camera's view:
+  // straight up to `height` above the table, then in joint space. False (controller in
+  // FAILURE) if the gripper holds something or a part of the path collides; true if the
+  // arm is home already (controller left as it was) or the motion started.
+  bool start_park(double height = 0.25);
+  // The arm's home configuration.
+  robot::Joints home() const;
   // The spot a place into `location` would use for thing `i` (centre of its base).
   std::optional<world::Vec3> place_spot(int thing, const std::string& location) const;
   // The grasp the held thing is actually in (its pose relative to the tool, as welded),
