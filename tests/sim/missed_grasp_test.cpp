@@ -4,6 +4,7 @@
 // not at once — the empty gripper backs off, the belief no longer holds the thing (the
 // grasp was the look the camera could not take), and the next pick grasps.
 // With the truth perceived, such a move still fails at once: nothing is believed there.
+// Two blocks swapped out of sight: a move takes the block where its thing is believed.
 #include <gtest/gtest.h>
 
 #include "camera_test_helpers.hpp"
@@ -58,6 +59,29 @@ TEST(MissedGrasp, AMoveOfAThingTakenOutOfSightClosesOnNothingWhereItWasBelieved)
   // The next pick starts with open fingers and grasps o1 (the missed grasp left them closed).
   w.start({"move(o1, r2)", "o1", "r1", "r2"});
   EXPECT_EQ(finish(w).first, exec::MoveStatus::Succeeded);
+}
+
+// Blocks of one colour look alike: two swapped where no camera sees keep their believed
+// names, so a move of o1 goes where o1 is believed and takes the block that lies there
+// (the simulation's o2), not the body named o1.
+TEST(MissedGrasp, AMoveTakesTheBlockWhereItsThingIsBelievedWhateverItsName) {
+  SessionOptions o;
+  o.perception.source = PerceptionSource::Camera;
+  episode::SimWorld w(testing::narrow_overhead(testing::three_block(), 1), o);
+  Simulation& sim = w.session().sim();
+  const CameraPerception& eyes = *w.session().perception().camera();
+  w.advance(0.5);
+  const int o1 = sim.find("o1"), o2 = sim.find("o2");
+  const Eigen::Isometry3d p1 = sim.pose(o1), p2 = sim.pose(o2);
+  sim.set_pose(o1, p2);  // swapped out of view
+  sim.set_pose(o2, p1);
+  w.advance(1.0);
+  ASSERT_EQ(eyes.belief().find("o1")->state, world::ThingState::OutOfView);
+  w.start({"move(o1, r2)", "o1", "r1", "r2"});
+  ASSERT_EQ(finish(w).first, exec::MoveStatus::Succeeded);
+  EXPECT_EQ(*testing::truth(sim).location_of("o2"), "r2");
+  EXPECT_EQ(*testing::truth(sim).location_of("o1"), "r1");
+  EXPECT_EQ(*w.observe().location_of("o1"), "r2");  // the belief's name for it
 }
 
 TEST(MissedGrasp, WithTheTruthPerceivedAMoveOfAThingNotThereFailsAtOnce) {

@@ -90,8 +90,8 @@ std::string SimWorld::body_of(const std::string& believed) const {
   const sim::CameraPerception* eyes = session_.perception().camera();
   const sim::Simulation& sim = session_.sim();
   if (!eyes || sim.scenario().find_region(believed)) return believed;
-  const int named = sim.find(believed);
-  if (named >= 0 && sim.thing(named).present) return believed;
+  // Not the body of that name: blocks of one colour look alike, and a belief that lost
+  // sight of two of them (let go of in the air together, say) may have swapped their names.
   const world::BelievedThing* b = eyes->belief().find(believed);
   if (!b) return believed;
   std::string body = believed;

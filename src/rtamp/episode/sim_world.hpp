@@ -18,8 +18,8 @@
 // With camera perception (sim/perception.hpp) the loop's names are the belief's: a move
 // picks at the thing's perceived pose (even where no body is left: the fingers then close
 // on nothing, and the belief takes that as evidence), and the simulation's body it acts on is the one of
-// that class nearest where the thing is believed (a thing a person added has a name of
-// the belief's own). An arm left idle for kParkAfter with its gripper empty goes home, out
+// that class nearest where the thing is believed, whatever its name (a thing a person added
+// has a name of the belief's own, and blocks that look alike may swap names). An arm left idle for kParkAfter with its gripper empty goes home, out
 // of the fixed camera's view, so that what it covered is seen (a person's change under it
 // would otherwise wait for the next move there); a move started meanwhile takes over.
 // Invariants: at most one move runs; hand() is where the last place ended ("" once parked).
@@ -79,7 +79,8 @@ class SimWorld final : public exec::World, public exec::Intervenable, public exe
   enum class Phase { Idle, Picking, Placing, Recovering, Done };
 
   bool holds(const std::string& thing) const;
-  // The simulation's body a believed thing's name stands for (the name itself with truth perception).
+  // The simulation's body a believed thing's name stands for: the nearest of its class to
+  // where it is believed (within 10 cm; else the name itself, as with truth perception).
   std::string body_of(const std::string& believed) const;
   void note(const sim::OperatorEvent& e);
   void fail_or_recover(const std::string& why);
