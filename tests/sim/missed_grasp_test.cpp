@@ -28,13 +28,23 @@ std::pair<exec::MoveStatus, std::string> finish(episode::SimWorld& w, double lim
 
 // The overhead camera narrowed to r2: the blocks in r1 lie outside its view, so what the
 // robot believes of them it cannot check by looking — as of a block under the arm.
-TEST(MissedGrasp, AMoveOfAThingTakenOutOfSightClosesOnNothingWhereItWasBelieved) {
-  SessionOptions o;
-  o.perception.source = PerceptionSource::Camera;
-  episode::SimWorld w(testing::narrow_overhead(testing::three_block(), 1), o);
-  Simulation& sim = w.session().sim();
-  const CameraPerception& eyes = *w.session().perception().camera();
-  w.advance(0.5);
+class OutOfSight : public ::testing::Test {
+ protected:
+  OutOfSight() : w(testing::narrow_overhead(testing::three_block(), 1), camera()), sim(w.session().sim()),
+                 eyes(*w.session().perception().camera()) {
+    w.advance(0.5);
+  }
+  static SessionOptions camera() {
+    SessionOptions o;
+    o.perception.source = PerceptionSource::Camera;
+    return o;
+  }
+  episode::SimWorld w;
+  Simulation& sim;
+  const CameraPerception& eyes;
+};
+
+TEST_F(OutOfSight, AMoveOfAThingTakenOutOfSightClosesOnNothingWhereItWasBelieved) {
   ASSERT_EQ(w.observe(), testing::truth(sim));
   ASSERT_EQ(eyes.belief().find("o2")->state, world::ThingState::OutOfView);
   const world::BelievedThing believed = *eyes.belief().find("o2");
@@ -64,13 +74,7 @@ TEST(MissedGrasp, AMoveOfAThingTakenOutOfSightClosesOnNothingWhereItWasBelieved)
 // Blocks of one colour look alike: two swapped where no camera sees keep their believed
 // names, so a move of o1 goes where o1 is believed and takes the block that lies there
 // (the simulation's o2), not the body named o1.
-TEST(MissedGrasp, AMoveTakesTheBlockWhereItsThingIsBelievedWhateverItsName) {
-  SessionOptions o;
-  o.perception.source = PerceptionSource::Camera;
-  episode::SimWorld w(testing::narrow_overhead(testing::three_block(), 1), o);
-  Simulation& sim = w.session().sim();
-  const CameraPerception& eyes = *w.session().perception().camera();
-  w.advance(0.5);
+TEST_F(OutOfSight, AMoveTakesTheBlockWhereItsThingIsBelievedWhateverItsName) {
   const int o1 = sim.find("o1"), o2 = sim.find("o2");
   const Eigen::Isometry3d p1 = sim.pose(o1), p2 = sim.pose(o2);
   sim.set_pose(o1, p2);  // swapped out of view
