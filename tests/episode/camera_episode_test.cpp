@@ -148,9 +148,11 @@ TEST(CameraEpisode, ThreeBlocksEndWhereTheTruthSaysTheyAre) {
   const Outcome r = run("3-block");
   EXPECT_TRUE(r.metrics.success) << r.metrics.reason;
   EXPECT_EQ(names_ever_perceived(r.log), (std::set<std::string>{"o1", "o2", "o3"}));
-  // Every block in the perceived end state is where the truth run ends it.
+  // Every block in the perceived end state is where the truth run ends it, and where the
+  // end record says it truly is.
   const auto& end = r.log.back().at("placement");
   for (const char* b : {"o1", "o2", "o3"}) EXPECT_EQ(end.at(b), "r2") << b;
+  EXPECT_EQ(r.log.back().at("truth"), end);
 }
 
 }  // namespace

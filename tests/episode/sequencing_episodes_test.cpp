@@ -354,6 +354,17 @@ Outcome run_one(const world::Scenario& s, std::uint64_t seed, const std::string&
   return out;
 }
 
+// How many things lie in each region of an end record's placement (a thing in a
+// container counts in the container's region): names aside.
+std::map<std::string, int> per_region(const nlohmann::json& placement) {
+  std::map<std::string, int> n;
+  for (const auto& [name, at] : placement.items()) {
+    const std::string loc = at.get<std::string>();
+    ++n[placement.contains(loc) ? placement.at(loc).get<std::string>() : loc];
+  }
+  return n;
+}
+
 // The checks every episode must pass.
 void check(const world::Scenario& s, const Outcome& e, const world::Intervention* iv, const std::string& about,
            const std::string& log_path) {
@@ -373,6 +384,13 @@ void check(const world::Scenario& s, const Outcome& e, const world::Intervention
     EXPECT_TRUE(ltl::holds(ltl::parse(s.task), w))
         << "succeeded, but the run with its last state repeated violates '" << s.task << "':\n"
         << text << ltl::to_string(w);
+    // Perceived through a camera, a success must be one in the world too: as many things
+    // in each region where they truly are as perceived (the belief names a person's
+    // addition its own way, and look-alike blocks may swap names).
+    const nlohmann::json& end = e.log.back();
+    if (end.contains("truth")) {
+      EXPECT_EQ(per_region(end.at("truth")), per_region(end.at("placement"))) << "the truth at the end: " << end.at("truth");
+    }
   }
 }
 

@@ -8,6 +8,7 @@
 #include "rtamp/episode/camera_record.hpp"
 #include "rtamp/episode/sim_world.hpp"
 #include "rtamp/episode/video_recorder.hpp"
+#include "rtamp/exec/intervenable.hpp"
 #include "rtamp/episode/episode_mcap.hpp"
 #include "rtamp/episode/mcap_arm.hpp"
 #include "rtamp/episode/mcap_camera.hpp"
@@ -121,6 +122,10 @@ Episode::Episode(const world::Scenario& input, const EpisodeOptions& opt, const 
         log->record(sw->session().sim().time(), camera_record(frame));
       });
     }
+    // Perceived imperfectly, the end record also says where things truly were.
+    if (opt.world_settings.perception == "camera")
+      if (exec::Intervenable* truth = world_->intervenable())
+        log_->set_truth([truth] { return truth->true_placement(); });
     loop_->add_observer(*log_);
   }
   if (mcap_ && sim_world_) {

@@ -44,6 +44,9 @@ class EpisodeLog final : public EpisodeObserver {
   void add_end_field(std::string key, std::function<double()> value) {
     end_fields_.emplace_back(std::move(key), std::move(value));
   }
+  // Where things truly were at the end, which the end record also carries as `truth`
+  // (a simulated world perceived imperfectly: its perceived `placement` may differ).
+  void set_truth(std::function<world::Placement()> truth) { truth_ = std::move(truth); }
   bool ticks = true;  // write a record per tick
 
   void on_begin(const EpisodeInfo&) override;
@@ -68,6 +71,7 @@ class EpisodeLog final : public EpisodeObserver {
   std::string path_;
   std::vector<Sink> sinks_;
   std::vector<std::pair<std::string, std::function<double()>>> end_fields_;
+  std::function<world::Placement()> truth_;
 };
 
 }  // namespace rtamp::exec
