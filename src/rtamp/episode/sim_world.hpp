@@ -17,11 +17,12 @@
 //    empty gripper straight up; busy() is true until that is done.
 // With camera perception (sim/perception.hpp) the loop's names are the belief's: a move
 // picks at the thing's perceived pose (even where no body is left: the fingers then close
-// on nothing, and the belief takes that as evidence), and the simulation's body it acts on is the one of
-// that class nearest where the thing is believed, whatever its name (a thing a person added
-// has a name of the belief's own, and blocks that look alike may swap names). An arm left idle for kParkAfter with its gripper empty goes home, out
-// of the fixed camera's view, so that what it covered is seen (a person's change under it
-// would otherwise wait for the next move there); a move started meanwhile takes over.
+// on nothing, and the belief takes that as evidence), and the simulation's body it acts on
+// is the one of that class nearest where the thing is believed, whatever its name (a thing
+// a person added has a name of the belief's own, and blocks that look alike may swap
+// names). An arm left idle for kParkAfter with its gripper empty goes home, out of the
+// fixed camera's view, so that what it covered is seen (a person's change under it would
+// otherwise wait for the next move there); a move started meanwhile takes over.
 // Invariants: at most one move runs; hand() is where the last place ended ("" once parked).
 #pragma once
 
