@@ -32,6 +32,7 @@ struct PlanArgs {
   bool json = false;
   bool no_progress = false;
   bool transition_based = false;
+  std::string generalized = "where-it-pays";
   std::size_t max_nodes = 20'000'000;
   double time_limit = 60;
   double max_memory_gib = double(plan::SearchLimits{}.max_memory_bytes) / double(1ull << 30);  // inf: none
@@ -173,7 +174,14 @@ rtamp::cli::Registrar reg{
                            "experience and cost cache)");
       sub.add_flag("--transition-based", a->transition_based,
                    "Translate the task to a transition-based Büchi automaton and accept on the product's edges "
-                   "(same costs; docs/planning.md)");
+                   "(same costs as state-based on every task measured; docs/planning.md)");
+      sub.add_option("--generalized", a->generalized,
+                     "With --transition-based, when the task's automaton has several acceptance sets: "
+                     "where-it-pays searches it generalized (a cycle takes every set) with --algo dijkstra where it "
+                     "has fewer states than its one-set form (A*'s bounds do better on the one-set form); always; "
+                     "never (one set)")
+          ->check(CLI::IsMember({"where-it-pays", "always", "never"}))
+          ->default_str("where-it-pays");
       sub.add_flag("--no-progress", a->no_progress,
                    "Do not show the progress line that searches longer than 0.5 s print on a terminal's stderr");
       return [a]() -> int {
@@ -182,6 +190,11 @@ rtamp::cli::Registrar reg{
         opt.graph = parse_name(plan::graph_constructions(), a->graph, "graph");
         opt.cost = a->cost;
         opt.transition_based = a->transition_based;
+        opt.generalized = a->generalized == "always"  ? plan::PlannerOptions::Generalized::Always
+                          : a->generalized == "never" ? plan::PlannerOptions::Generalized::Never
+                                                      : plan::PlannerOptions::Generalized::WhereItPays;
+        if (a->generalized != "where-it-pays" && !a->transition_based)
+          throw Error("--generalized " + a->generalized + " needs --transition-based");
         opt.limits.max_nodes = a->max_nodes;
         opt.limits.time_limit = a->time_limit;
         const double max_bytes = a->max_memory_gib * double(1ull << 30);
@@ -201,7 +214,10 @@ rtamp::cli::Registrar reg{
         doc["scenario"] = planner.scenario().name;
         doc["task"] = planner.scenario().task;
         doc["automaton_states"] = planner.automaton().num_states();
-        doc["automaton_acceptance"] = planner.automaton().state_based ? "state" : "transition";
+        const automata::Automaton& ba = planner.automaton();
+        const bool generalized = !ba.state_based && ba.num_sets >= 2;
+        doc["automaton_acceptance"] = ba.state_based ? "state" : generalized ? "generalized" : "transition";
+        doc["automaton_sets"] = ba.state_based ? 1u : ba.num_sets;
         doc["algorithm"] = a->algo;
         doc["graph"] = a->graph;
         doc["cost_model"] = a->cost;
@@ -209,7 +225,10 @@ rtamp::cli::Registrar reg{
         if (!a->json) {
           std::cout << "scenario " << planner.scenario().name << ": task " << planner.scenario().task << " ("
                     << planner.automaton().num_states() << "-state "
-                    << (planner.automaton().state_based ? "" : "transition-based ") << "Büchi automaton)\n"
+                    << (ba.state_based ? ""
+                        : generalized ? "transition-based generalized (" + std::to_string(ba.num_sets) + " sets) "
+                                      : std::string("transition-based "))
+                    << "Büchi automaton)\n"
                     << "algorithm " << a->algo << ", graph " << a->graph << ", cost " << a->cost << "\n\n";
         }
         bool all_found = true;

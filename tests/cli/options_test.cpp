@@ -123,6 +123,22 @@ TEST(CliOptions, TransitionBasedPlansAtTheSameCosts) {
   ASSERT_EQ(text.rc, 0) << text.err;
   EXPECT_NE(text.out.find("-state transition-based Büchi automaton)"), std::string::npos) << text.out;
   expect_refused(run("plan 3-block --transition-based=maybe"), "--transition-based", "--transition-based=maybe");
+  // Generalized where it pays: Dijkstra on the patrol's one-state, two-set automaton.
+  const Result d = run("plan --json --transition-based --algo dijkstra " + patrol);
+  const Result d1 = run("plan --json --transition-based --generalized never --algo dijkstra " + patrol);
+  ASSERT_EQ(d.rc, 0) << d.err;
+  ASSERT_EQ(d1.rc, 0) << d1.err;
+  const auto jd = nlohmann::json::parse(d.out), jd1 = nlohmann::json::parse(d1.out);
+  EXPECT_EQ(jd["automaton_acceptance"], "generalized");
+  EXPECT_EQ(jd["automaton_sets"], 2);
+  EXPECT_EQ(jd["automaton_states"], 1);
+  EXPECT_EQ(jd1["automaton_acceptance"], "transition");
+  EXPECT_NEAR(jd["plans"][0]["cost"].get<double>(), jd1["plans"][0]["cost"].get<double>(), 1e-9);
+  EXPECT_LT(jd["plans"][0]["stats"]["expanded"].get<int>(), jd1["plans"][0]["stats"]["expanded"].get<int>());
+  const Result dt = run("plan --transition-based --algo dijkstra " + patrol);
+  EXPECT_NE(dt.out.find("1-state transition-based generalized (2 sets) Büchi automaton)"), std::string::npos) << dt.out;
+  expect_refused(run("plan 3-block --transition-based --generalized maybe"), "--generalized", "maybe");
+  expect_refused(run("plan 3-block --generalized always"), "--generalized always", "--transition-based");
 }
 
 TEST(CliOptions, TheLargestSeedIsAccepted) {

@@ -210,6 +210,7 @@ struct Product {
   std::vector<Node> nodes;
   std::vector<std::vector<std::pair<int, double>>> adj;
   std::vector<std::vector<int>> adj_moves;  // per edge of adj: 1 for a move, 0 for stay
+  std::vector<std::vector<rtamp::automata::Marks>> adj_marks;  // per edge of adj: Automaton::cycle_marks
 
   // `q0`: the automaton state of the start node (default: the initial state).
   Product(const rtamp::world::Scenario& sc, const rtamp::world::Placement& p, const std::string& hand,
@@ -228,6 +229,7 @@ struct Product {
       nodes.push_back({s, q});
       adj.emplace_back();
       adj_moves.emplace_back();
+      adj_marks.emplace_back();
       return n;
     };
     id(start(w, p, hand), q0 ? *q0 : ba.initial);
@@ -240,6 +242,7 @@ struct Product {
         const int a = id(s, e.dst);
         adj[n].emplace_back(a, 0.0);
         adj_moves[n].push_back(0);
+        adj_marks[n].push_back(ba.cycle_marks(e));
         for (auto [t, to] : moves(w, s)) {
           St s2 = s;
           const double c = move_cost(w, s, t, to, model);
@@ -248,6 +251,7 @@ struct Product {
           const int b = id(s2, e.dst);
           adj[n].emplace_back(b, c);
           adj_moves[n].push_back(1);
+          adj_marks[n].push_back(ba.cycle_marks(e));
         }
       }
     }
@@ -387,6 +391,68 @@ inline std::optional<std::pair<double, int>> min_lasso_lex(const rtamp::world::S
       if (Product::lex_less(back[un], here)) here = back[un];
     }
     if (here.first < INFINITY && (!best || Product::lex_less(here, *best))) best = here;
+  }
+  return best;
+}
+
+// The cheapest closed walk (>= 1 step, in the order (cost, moves)) from node
+// v back to v whose edges carry every set `all` between them: a search over
+// (node, the sets the walk has taken) from v's edges to (v, all).
+inline Product::Lex cheapest_accepting_walk(const Product& g, int v, rtamp::automata::Marks all) {
+  using Lex = Product::Lex;
+  const std::size_t L = std::size_t{all} + 1;
+  std::vector<Lex> d(g.nodes.size() * L, Lex{INFINITY, 0});
+  using QI = std::pair<Lex, std::size_t>;
+  std::priority_queue<QI, std::vector<QI>, std::greater<QI>> pq;
+  const std::size_t goal = static_cast<std::size_t>(v) * L + all;
+  auto relax = [&](std::size_t node, rtamp::automata::Marks taken, const Lex& dv) {
+    for (std::size_t i = 0; i < g.adj[node].size(); ++i) {
+      const std::size_t id = static_cast<std::size_t>(g.adj[node][i].first) * L + (taken | g.adj_marks[node][i]);
+      const Lex nd{dv.first + g.adj[node][i].second, dv.second + g.adj_moves[node][i]};
+      if (Product::lex_less(nd, d[id])) {
+        d[id] = nd;
+        pq.push({nd, id});
+      }
+    }
+  };
+  relax(static_cast<std::size_t>(v), 0, Lex{0, 0});
+  while (!pq.empty()) {
+    auto [dv, id] = pq.top();
+    pq.pop();
+    if (dv != d[id] || id == goal) continue;
+    relax(id / L, static_cast<rtamp::automata::Marks>(id % L), dv);
+  }
+  return d[goal];
+}
+
+// The least lasso in the order (cost, moves) for an automaton of any form,
+// by brute force on the definition of generalized Büchi acceptance
+// (Automaton::cycle_marks): a path from (start, q0) to a node v, then a
+// closed walk from v whose edges carry every acceptance set. Every v is
+// tried, in order of d(start, v) (a lower bound on its lassos).
+inline std::optional<Product::Lex> min_lasso_generalized_lex(const rtamp::world::Scenario& sc,
+                                                             const rtamp::world::Placement& p,
+                                                             const std::string& hand,
+                                                             const rtamp::automata::Automaton& ba,
+                                                             const std::string& model,
+                                                             std::optional<std::uint32_t> q0 = {}) {
+  using Lex = Product::Lex;
+  const Product g(sc, p, hand, ba, model, true, q0);
+  const auto d0 = g.lex_dijkstra(0, false);
+  std::vector<int> order;
+  for (std::size_t n = 0; n < g.nodes.size(); ++n)
+    if (d0[n].first < INFINITY) order.push_back(static_cast<int>(n));
+  std::sort(order.begin(), order.end(), [&](int a, int b) {
+    return Product::lex_less(d0[static_cast<std::size_t>(a)], d0[static_cast<std::size_t>(b)]);
+  });
+  std::optional<Lex> best;
+  for (const int v : order) {
+    const Lex& dv = d0[static_cast<std::size_t>(v)];
+    if (best && !Product::lex_less(dv, *best)) break;
+    const Lex c = cheapest_accepting_walk(g, v, ba.cycle_marks_all());
+    if (c.first >= INFINITY) continue;
+    const Lex here{dv.first + c.first, dv.second + c.second};
+    if (!best || Product::lex_less(here, *best)) best = here;
   }
   return best;
 }

@@ -49,6 +49,7 @@ TEST(TransitionBased, CostsEqualStateBasedAndBruteForce) {
     opt.cost = model;
     plan::Planner state(sc, opt);
     opt.transition_based = true;
+    opt.generalized = plan::PlannerOptions::Generalized::Never;  // one set (generalized: generalized_test.cpp)
     opt.algorithm = kAlgos[trial % 3];
     opt.graph = trial % 2 ? plan::GraphConstruction::Full : plan::GraphConstruction::Partial;
     plan::Planner trans(sc, opt);
@@ -94,19 +95,12 @@ TEST(TransitionBased, HeuristicAdmissibleAgainstBruteForce) {
   int checked = 0, positive = 0, cycle_positive = 0;
   for (int trial = 0; trial < 150; ++trial) {
     world::Scenario sc = random_scenario(rng, kFamilies);
-    if (trial % 2 && sc.containers.empty()) {
-      // A patrol whose atoms force every block somewhere (the chain bound's
-      // case): "all block in r_i", a different region each while there are some.
-      sc.task = trial % 4 == 1 ? "G F a & G F b" : "G F a & G F b & G F c";
-      sc.propositions.clear();
-      for (std::size_t i = 0; i < 3; ++i)
-        sc.propositions.push_back(proposition(std::string(1, static_cast<char>('a' + i)),
-                                              "all block in r" + std::to_string(1 + (i + 1) % sc.regions.size())));
-    }
+    if (trial % 2 && sc.containers.empty()) make_forcing_patrol(sc, trial % 4 == 1 ? 2 : 3);
     for (const char* model : {"euclid", "region", "unit"}) {
       plan::PlannerOptions opt;
       opt.cost = model;
       opt.transition_based = true;
+      opt.generalized = plan::PlannerOptions::Generalized::Never;  // one set (generalized: generalized_test.cpp)
       plan::Planner p(sc, opt);
       const auto [pl, hand] = place_randomly(rng, p);
       const task::State s = p.state();
@@ -156,6 +150,7 @@ TEST(TransitionBased, ReplansEqualStateBased) {
     SCOPED_TRACE("trial " + std::to_string(trial) + " task " + sc.task);
     plan::PlannerOptions opt;  // astar-exp
     opt.transition_based = true;
+    opt.generalized = plan::PlannerOptions::Generalized::Never;  // one set (generalized: generalized_test.cpp)
     plan::Planner trans(sc, opt);
     (void)trans.plan();
     for (int k = 0; k < 3; ++k) {

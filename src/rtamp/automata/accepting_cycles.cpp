@@ -27,35 +27,40 @@ std::vector<std::vector<bool>> reach_matrix(const Automaton& ba) {
   return reach;
 }
 
-// Calls f(u, v) for every accepting edge u -> v that can hold.
-template <class F>
-void for_each_accepting_edge(const Automaton& ba, F f) {
-  for (std::uint32_t u = 0; u < ba.num_states(); ++u)
+// on[q]: q lies on an accepting cycle (the header's definition), given `reach`.
+std::vector<bool> on_cycles(const Automaton& ba, const std::vector<std::vector<bool>>& reach) {
+  const std::uint32_t n = ba.num_states();
+  // scc[q]: the least state of q's strongly connected component.
+  std::vector<std::uint32_t> scc(n);
+  for (std::uint32_t q = 0; q < n; ++q) {
+    scc[q] = q;
+    for (std::uint32_t p = 0; p < q; ++p)
+      if (reach[q][p] && reach[p][q]) {
+        scc[q] = p;
+        break;
+      }
+  }
+  std::vector<Marks> inside(n, 0);  // per component: the marks of the edges inside it
+  for (std::uint32_t u = 0; u < n; ++u)
     for (const auto& e : ba.edges[u])
-      if (!e.guard.is_false() && ba.accepting_edge(e)) f(u, e.dst);
+      if (!e.guard.is_false() && scc[u] == scc[e.dst]) inside[scc[u]] |= ba.cycle_marks(e);
+  std::vector<bool> on(n, false);
+  const Marks all = ba.cycle_marks_all();
+  for (std::uint32_t q = 0; q < n; ++q) on[q] = reach[q][q] && (inside[scc[q]] & all) == all;
+  return on;
 }
 }  // namespace
 
 std::vector<bool> useful_states(const Automaton& ba) {
   const std::uint32_t n = ba.num_states();
   const std::vector<std::vector<bool>> reach = reach_matrix(ba);
+  const std::vector<bool> on = on_cycles(ba, reach);
   std::vector<bool> useful(n, false);
-  for_each_accepting_edge(ba, [&](std::uint32_t u, std::uint32_t v) {
-    if (u != v && !reach[v][u]) return;  // not on a cycle
-    for (std::uint32_t q = 0; q < n; ++q) useful[q] = useful[q] || q == u || reach[q][u];
-  });
+  for (std::uint32_t q = 0; q < n; ++q)
+    for (std::uint32_t p = 0; p < n && !useful[q]; ++p) useful[q] = on[p] && (p == q || reach[q][p]);
   return useful;
 }
 
-std::vector<bool> states_on_accepting_cycles(const Automaton& ba) {
-  const std::uint32_t n = ba.num_states();
-  const std::vector<std::vector<bool>> reach = reach_matrix(ba);
-  std::vector<bool> on(n, false);
-  for_each_accepting_edge(ba, [&](std::uint32_t u, std::uint32_t v) {
-    for (std::uint32_t q = 0; q < n; ++q)
-      on[q] = on[q] || ((q == u || reach[q][u]) && (q == v || reach[v][q]));
-  });
-  return on;
-}
+std::vector<bool> states_on_accepting_cycles(const Automaton& ba) { return on_cycles(ba, reach_matrix(ba)); }
 
 }  // namespace rtamp::automata

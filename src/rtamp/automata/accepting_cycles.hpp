@@ -1,15 +1,16 @@
-// Where accepting cycles lie in a Büchi automaton, state-based or with one set
-// on edges, over the edges whose guards are not false (the product search asks
-// once per automaton, plan/product_graph.hpp). A cycle is accepting when it
-// takes an accepting edge (Automaton::accepting_edge: for a state-based
-// automaton an edge entering an accepting state, so this is "through an
-// accepting state"):
-//  - useful_states: from q an accepting edge u -> v on a cycle is reachable
-//    (q == u included); only these enter the product;
-//  - states_on_accepting_cycles: q lies on a cycle that takes an accepting
-//    edge u -> v (q reaches u and v reaches q, either possibly by no edge):
-//    only there can a lasso's cycle pass, since its automaton projection is
-//    such a cycle. Every such state is useful.
+// Where accepting cycles lie in a Büchi automaton — state-based, or
+// generalized with any number of sets on edges — over the edges whose guards
+// are not false (the product search asks once per automaton,
+// plan/product_graph.hpp). A cycle is accepting when the union of its edges'
+// Automaton::cycle_marks is cycle_marks_all() (state-based: it passes an
+// accepting state; one set: it takes an accepting edge):
+//  - states_on_accepting_cycles: q lies on such a cycle, i.e. the edges
+//    inside q's strongly connected component carry every set between them
+//    (a cycle through the component can take each of them): only there can a
+//    lasso's cycle pass, since its automaton projection is such a cycle;
+//  - useful_states: q reaches (by zero or more edges) a state on an
+//    accepting cycle; only these enter the product. Every state on an
+//    accepting cycle is useful.
 #pragma once
 
 #include <vector>

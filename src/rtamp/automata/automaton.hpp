@@ -78,6 +78,14 @@ class Automaton {
   bool accepting_edge(const Edge& e) const {
     return state_based ? bool(state_accepting[e.dst]) : num_sets == 0 || (e.marks & 1u) != 0;
   }
+  // Generalized Büchi acceptance as a property of edges, for every form: a
+  // cycle is accepting iff the union of its edges' cycle_marks is
+  // cycle_marks_all(). State-based: {0} when the edge enters an accepting
+  // state; no set: {0} on every edge; otherwise the edge's marks.
+  Marks cycle_marks(const Edge& e) const {
+    return state_based ? (state_accepting[e.dst] ? 1u : 0u) : num_sets == 0 ? 1u : (e.marks & all_marks());
+  }
+  Marks cycle_marks_all() const { return state_based || num_sets == 0 ? 1u : all_marks(); }
 };
 
 // No state has two edges whose guards share a letter.

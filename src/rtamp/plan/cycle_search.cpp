@@ -1,6 +1,7 @@
 #include "rtamp/plan/cycle_search.hpp"
 
 #include <algorithm>
+#include <bit>
 
 namespace rtamp::plan {
 
@@ -70,14 +71,16 @@ int CycleSearch::on_accepting_cycle(NodeId n, SearchStats& stats) {
     if (scc_low_[root] != scc_index_[root]) continue;
     // root's SCC is the stack from root up.
     const auto first = std::find(scc_stack_.rbegin(), scc_stack_.rend(), root).base() - 1;
-    bool acc = false, edge = scc_stack_.end() - first > 1;
-    // An accepting edge inside the SCC (its members are the stack from root up).
-    for (auto it = first; it != scc_stack_.end() && !acc; ++it)
-      for (std::uint32_t x = g.edge_begin(*it); x < g.edge_end(*it) && !acc; ++x) {
+    automata::Marks inside = 0;
+    bool edge = scc_stack_.end() - first > 1;
+    // The sets the edges inside the SCC carry (its members are the stack from root up).
+    for (auto it = first; it != scc_stack_.end() && inside != g.all_marks(); ++it)
+      for (std::uint32_t x = g.edge_begin(*it); x < g.edge_end(*it); ++x) {
         const NodeId w = g.edge(x).dst;
-        acc = g.accepting_edge(x) && scc_stamp_[w] == scc_gen_ && scc_state_[w] == 1 &&
-              scc_index_[w] >= scc_index_[root];
+        if (scc_stamp_[w] == scc_gen_ && scc_state_[w] == 1 && scc_index_[w] >= scc_index_[root])
+          inside |= g.edge_marks(x);
       }
+    const bool acc = inside == g.all_marks();
     if (!edge)
       for (std::uint32_t x = g.edge_begin(root); x < g.edge_end(root) && !edge; ++x) edge = g.edge(x).dst == root;
     const bool yes = acc && edge;
@@ -90,13 +93,14 @@ int CycleSearch::on_accepting_cycle(NodeId n, SearchStats& stats) {
   return scc_state_[n] == 3;
 }
 
-// Relaxes edge e out of search node `from` (2 * node + layer, layer 1 once the
-// path has taken an accepting edge; start_ stands for the target itself).
+// Relaxes edge e out of search node `from` (node << shift_ | the sets the path
+// has taken; start_ stands for the target itself).
 void CycleSearch::relax(NodeId from, std::uint32_t e) {
   ProductGraph& g = *g_;
   SearchSpace& S = space_;
   const ProductEdge& pe = g.edge(e);
-  const NodeId m = 2 * pe.dst + ((from & 1) | (g.accepting_edge(e) ? 1 : 0));
+  const NodeId layer = (from & layer_mask()) | g.edge_marks(e);
+  const NodeId m = (pe.dst << shift_) | layer;
   const double ng = (from == start_ ? 0.0 : S.g[from]) + pe.cost;
   const std::uint32_t nm = (from == start_ ? 0 : S.m[from]) + (pe.action != task::Action::stay().packed() ? 1 : 0);
   if (pe.dst == target_) {  // back at the target: a cycle if it went through an accepting node
@@ -108,7 +112,7 @@ void CycleSearch::relax(NodeId from, std::uint32_t e) {
     }
     return;
   }
-  S.ensure(2 * g.size());
+  S.ensure(g.size() << shift_);
   if (!S.seen(m)) {
     S.mark_seen(m);
     S.closed[m] = 0;
@@ -116,8 +120,8 @@ void CycleSearch::relax(NodeId from, std::uint32_t e) {
         !h_ ? 0.0
             : std::max({state_distance_bound(g.system(), g.model(), g.state(pe.dst), target_state_),
                         h_->walk_bound(g, pe.dst, target_q_),
-                        h_->return_bound(g, pe.dst, target_, (m & 1) != 0),
-                        dist_ && dist_->ready() ? dist_->return_bound(pe.dst, target_, (m & 1) != 0) : 0.0});
+                        h_->return_bound(g, pe.dst, target_, layer == g.all_marks()),
+                        dist_ && dist_->ready() ? dist_->return_bound(pe.dst, target_, layer == g.all_marks()) : 0.0});
   } else if (!lex_less(ng, nm, S.g[m], S.m[m])) {
     return;
   }
@@ -145,12 +149,13 @@ PathCost CycleSearch::cheapest(NodeId n, PathCost bound, SearchStats& stats) {
   target_ = n;
   target_state_ = g.state(n);
   target_q_ = g.ba_state(n);
-  start_ = 2 * n + (g.accepting(n) ? 1 : 0);
-  goal_ = 2 * n + 1;
+  shift_ = static_cast<unsigned>(std::bit_width(g.all_marks()));  // one layer per subset of the sets
+  start_ = (n << shift_) | (g.accepting(n) ? 1u : 0u);
+  goal_ = (n << shift_) | g.all_marks();
   best_ = bound;  // the incumbent: a cycle below it is sought; lowered by each one found
   found_ = false;
   SearchSpace& S = space_;
-  S.begin(2 * g.size());
+  S.begin(g.size() << shift_);
   if (!g.expanded(n)) {
     g.expand(n);
     ++stats.successor_generations;
@@ -164,7 +169,7 @@ PathCost CycleSearch::cheapest(NodeId n, PathCost bound, SearchStats& stats) {
     if (S.closed[it.n]) continue;
     S.closed[it.n] = 1;
     ++stats.expanded;
-    const NodeId x = it.n / 2;
+    const NodeId x = it.n >> shift_;
     if (!g.expanded(x)) {
       g.expand(x);
       ++stats.successor_generations;

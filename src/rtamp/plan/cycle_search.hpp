@@ -1,6 +1,8 @@
 // The cycle half of the lasso search: the cheapest cycle through a product node
-// that takes an accepting edge (ProductGraph::accepting_edge; state-based:
-// passes an accepting node), in the order (cost, moves), below a bound.
+// whose edges carry every acceptance set between them (ProductGraph::edge_marks;
+// Büchi: it takes an accepting edge; state-based: passes an accepting node),
+// in the order (cost, moves), below a bound. The search keeps one layer per
+// subset of the sets the path has taken.
 // Answers go into the experience's cycle table — exact with the cycle's path,
 // or "none below (cost, moves)" — so no node's cycle is searched twice for the
 // same bound on one graph. A node whose unbounded search finds nothing has its
@@ -42,7 +44,7 @@ class CycleSearch {
   std::size_t bytes() const { return space_.bytes(); }
 
  private:
-  // Whether n lies on any cycle through an accepting node (1), not (0), or -1
+  // Whether n lies on any accepting cycle (1), not (0), or -1
   // when the budget ran out. Nodes classified earlier in the query are not
   // visited again (their SCCs are complete).
   int on_accepting_cycle(NodeId n, SearchStats& stats);
@@ -56,9 +58,11 @@ class CycleSearch {
   Budget* budget_ = nullptr;
   SearchSpace space_;
   std::vector<std::uint32_t> path_;
-  // One cycle search: its target n (in layer 0 and 1: id = 2 * node + layer,
-  // layer 1 once the path has taken an accepting edge: for a state-based
-  // automaton, entered an accepting node, or started at one), the incumbent.
+  // One cycle search: its target n (search ids: node << shift_ | the sets the
+  // path has taken, all_marks() once it has taken every one; a state-based
+  // start at an accepting node has its set), the incumbent.
+  NodeId layer_mask() const { return (NodeId{1} << shift_) - 1; }
+  unsigned shift_ = 1;
   NodeId target_ = kNoNode, start_ = kNoNode, goal_ = kNoNode;
   task::State target_state_;
   std::uint32_t target_q_ = 0;

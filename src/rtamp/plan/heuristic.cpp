@@ -10,7 +10,7 @@ using Kind = world::PropExpr::Kind;
 using Cmp = world::PropExpr::Cmp;
 
 GuardHeuristic::GuardHeuristic(const ProductGraph& g)
-    : ts_(&g.system()), lab_(&g.labeling()), ba_(&g.automaton()), model_(&g.model()) {
+    : ts_(&g.system()), lab_(&g.labeling()), ba_(&g.bound_automaton()), model_(&g.model()) {
   const std::uint32_t n = ba_->num_states();
   accepting_.resize(n);
   exits_.resize(n);

@@ -4,7 +4,6 @@
 
 #include <algorithm>
 
-#include "rtamp/automata/degeneralize_tba.hpp"
 #include "rtamp/plan/termination.hpp"
 
 namespace rtamp::plan {
@@ -36,6 +35,7 @@ class Explorer {
     const auto id = static_cast<std::uint32_t>(keys_.size());
     keys_.push_back(k);
     index_.push_back(kUnvisited);
+    scc_of_.push_back(kUnvisited);
     low_.push_back(0);
     on_stack_.push_back(false);
     table_[i] = id;
@@ -57,6 +57,26 @@ class Explorer {
       const task::State s2 = ts_.canonical_successor(k.s, a);
       for (const std::uint32_t q2 : qs_) succ.push_back(node(s2, q2));
     });
+  }
+
+  // The sets the edges inside the SCC of `root` (its members in members_,
+  // scc_of_ set) carry between them; every successor of a member is known.
+  automata::Marks inside_marks(std::uint32_t root) {
+    automata::Marks inside = 0;
+    for (const std::uint32_t v : members_) {
+      const Key k = keys_[v];
+      const automata::Letter l = lab_.label(k.s);
+      for (const auto& e : ba_.edges[k.q]) {
+        if (!e.guard.matches(l)) continue;
+        const automata::Marks em = ba_.cycle_marks(e);
+        if ((inside & em) == em) continue;
+        if (scc_of_[node(k.s, e.dst)] == root) inside |= em;
+        ts_.for_each_move(k.s, [&](const task::Action& a) {
+          if (scc_of_[node(ts_.canonical_successor(k.s, a), e.dst)] == root) inside |= em;
+        });
+      }
+    }
+    return inside;
   }
 
   LassoExistence run(const std::vector<std::uint32_t>& starts, std::size_t max_nodes, std::int64_t deadline_ns) {
@@ -113,16 +133,18 @@ class Explorer {
         if (!frames.empty()) low_[frames.back().n] = std::min(low_[frames.back().n], low_[n]);
         if (low_[n] != index_[n]) continue;
         bool accepting = false, cyclic = self_loop;
-        std::size_t size = 0;
+        members_.clear();
         std::uint32_t m;
         do {
           m = scc_stack.back();
           scc_stack.pop_back();
           on_stack_[m] = false;
+          scc_of_[m] = n;
           accepting = accepting || ba_.is_accepting_state(keys_[m].q);
-          ++size;
+          members_.push_back(m);
         } while (m != n);
-        if (size > 1) cyclic = true;
+        if (members_.size() > 1) cyclic = true;
+        if (cyclic && !ba_.state_based) accepting = inside_marks(n) == ba_.cycle_marks_all();
         if (accepting && cyclic) {
           r.exists = true;
           r.nodes = keys_.size();
@@ -154,6 +176,8 @@ class Explorer {
   std::vector<Key> keys_;
   std::vector<std::uint32_t> index_, low_;
   std::vector<bool> on_stack_;
+  std::vector<std::uint32_t> scc_of_;  // the root of a closed node's SCC
+  std::vector<std::uint32_t> members_;  // the SCC being closed
   std::vector<std::uint32_t> qs_;
 };
 
@@ -162,13 +186,6 @@ class Explorer {
 LassoExistence find_accepting_lasso(const task::System& ts, const task::Labeling& lab, const automata::Automaton& ba,
                                     const std::vector<std::uint32_t>& starts, std::size_t max_nodes,
                                     std::int64_t deadline_ns) {
-  // Acceptance on states here: a transition-based automaton is searched in
-  // its state-based form (the same state ids, accepting copies after them).
-  if (!ba.state_based) {
-    const automata::Automaton sb = automata::state_based_form(ba);
-    Explorer e(ts, lab, sb);
-    return e.run(starts, max_nodes, deadline_ns);
-  }
   Explorer e(ts, lab, ba);
   return e.run(starts, max_nodes, deadline_ns);
 }

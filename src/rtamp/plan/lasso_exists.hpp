@@ -6,8 +6,10 @@
 // automaton states q (edges as in ProductGraph: stay and every enabled move,
 // to every BA successor whose guard holds in the source's label) and finds
 // its strongly connected components (Tarjan, iterative); a lasso exists iff a
-// reachable SCC holds an accepting node and an edge (size > 1, or a self
-// loop). It stops at the first such SCC. No costs are asked of any model, and
+// reachable SCC has an edge (size > 1, or a self loop) and holds an accepting
+// node (state-based) or, transition-based, edges inside it that carry every
+// acceptance set between them (found by going over its members' edges again
+// when it closes). It stops at the first such SCC. No costs are asked of any model, and
 // the hand is dropped from the state: labels and enabled moves never read it
 // (it only prices moves), so the abstraction has a lasso iff the TS does (a
 // cycle of placements, taken twice, returns the hand to where it was).

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "rtamp/automata/degeneralize_tba.hpp"
 #include "rtamp/automata/translate.hpp"
 #include "rtamp/plan/canonical_replay.hpp"
 #include "rtamp/plan/lasso_exists.hpp"
@@ -34,13 +35,26 @@ Planner::Planner(world::Scenario scenario, PlannerOptions options)
   formula_ = ltl::parse(scenario_.task, scenario_.task_where);
   automata::TranslateOptions t;
   t.state_based = !options_.transition_based;
-  t.one_set = options_.transition_based;
+  // Generalized where it pays (PlannerOptions::generalized): a search
+  // without a heuristic, on an automaton with fewer states than its one-set form.
+  using G = PlannerOptions::Generalized;
+  const bool may_generalize =
+      options_.transition_based && (options_.generalized == G::Always || (options_.generalized == G::WhereItPays &&
+                                                                           options_.algorithm == Algorithm::Dijkstra));
+  t.one_set = options_.transition_based && !may_generalize;
   ba_ = automata::translate(formula_, t);
+  if (may_generalize && ba_.num_sets >= 2) {
+    t.one_set = true;
+    automata::Automaton one = automata::translate(formula_, t);
+    if (ba_.num_sets > kMaxProductSets || (options_.generalized == G::WhereItPays && one.num_states() <= ba_.num_states()))
+      ba_ = std::move(one);
+  }
   init();
 }
 
 Planner::Planner(world::Scenario scenario, automata::Automaton automaton, PlannerOptions options)
     : scenario_(std::move(scenario)), options_(std::move(options)), ba_(std::move(automaton)) {
+  if (!ba_.state_based && ba_.num_sets > kMaxProductSets) ba_ = automata::degeneralize_tba(ba_);
   init();
 }
 

@@ -59,11 +59,22 @@ struct PlannerOptions {
   bool diagnose_capacity = true;               // on failure, check for a lasso without capacities to tell "capacity"
   bool symmetry = true;                        // search the quotient by interchangeable objects
                                                // (task::System::set_symmetry; costs are unchanged)
-  // Translate the task to a transition-based Büchi automaton (one set on
-  // edges) and accept on the product's edges, instead of a state-based BA
-  // (docs/planning.md "Acceptance on transitions"). An automaton given to the
-  // constructor is searched in the form it has.
+  // Translate the task to a transition-based Büchi automaton and accept on
+  // the product's edges, instead of a state-based BA (docs/planning.md
+  // "Acceptance on transitions"). An automaton given to the constructor is
+  // searched in the form it has (degeneralized to one set if it has more
+  // than kMaxProductSets).
   bool transition_based = false;
+  // With transition_based, when the task's generalized automaton has 2 to
+  // kMaxProductSets acceptance sets, whether to search it (a cycle then takes
+  // every set) or its one-set (degeneralized) form. WhereItPays: where the
+  // generalized one has fewer states and the search has no heuristic
+  // (Dijkstra: the product is smaller and nothing else changes); A*'s bounds
+  // read the order of the sets that the one-set form's states carry, and
+  // expand many times fewer nodes with it (docs/planning.md "Generalized
+  // acceptance").
+  enum class Generalized { WhereItPays, Never, Always };
+  Generalized generalized = Generalized::WhereItPays;
 };
 
 class Planner {

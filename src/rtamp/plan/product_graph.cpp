@@ -1,6 +1,9 @@
 #include "rtamp/plan/product_graph.hpp"
 
 #include <algorithm>
+#include <bit>
+#include <stdexcept>
+#include <string>
 #include <chrono>
 
 #include "rtamp/automata/accepting_cycles.hpp"
@@ -19,10 +22,24 @@ std::int64_t now_ns() {
 ProductGraph::ProductGraph(const task::System& ts, const task::Labeling& labeling, const automata::Automaton& ba,
                            const MotionCostModel& model, MotionCostCache* cache)
     : ts_(&ts), lab_(&labeling), ba_(&ba), model_(&model), cache_(cache), words_(ts.layout().words) {
+  if (!ba.state_based && ba.num_sets > kMaxProductSets)
+    throw std::invalid_argument("ProductGraph: an automaton with " + std::to_string(ba.num_sets) +
+                                " acceptance sets (at most " + std::to_string(kMaxProductSets) + ")");
+  all_marks_ = ba.cycle_marks_all();
+  num_sets_ = static_cast<std::uint32_t>(std::popcount(all_marks_));
+  if (num_sets_ >= 2) {
+    union_ = std::make_unique<automata::Automaton>(ba);
+    union_->num_sets = 1;
+    for (auto& out : union_->edges)
+      for (auto& e : out) e.marks = (e.marks & all_marks_) ? 1u : 0u;
+  }
   useful_ = automata::useful_states(ba);
   on_accepting_cycle_ = automata::states_on_accepting_cycles(ba);
   table_.assign(1024, 0);
-  succ_q_.reserve(ba.num_states());
+  std::size_t out = ba.num_states();
+  for (const auto& edges : ba.edges) out = std::max(out, edges.size());
+  succ_q_.reserve(out);
+  succ_marks_.reserve(out);
 }
 
 std::uint64_t ProductGraph::hash(const std::uint64_t* w, std::uint32_t q) const {
@@ -79,16 +96,40 @@ void ProductGraph::expand(NodeId n) {
   const automata::Letter l = lab_->label(s);
   labels_[n] = l;
   succ_q_.clear();
-  succ_acc_.clear();
+  succ_marks_.clear();
   const bool tb = !ba_->state_based;
   for (const auto& e : ba_->edges[q_[n]]) {
     if (!e.guard.matches(l) || !useful_[e.dst]) continue;
-    const auto at = std::find(succ_q_.begin(), succ_q_.end(), e.dst);
-    if (at == succ_q_.end()) {
+    const auto m = static_cast<std::uint8_t>(tb ? ba_->cycle_marks(e) : 0u);
+    // Keep the maximal mark sets per destination: the first entry a superset
+    // replaces takes it in place, other replaced ones go.
+    std::size_t kept = succ_q_.size();
+    bool dominated = false;
+    for (std::size_t i = 0; i < succ_q_.size() && !dominated; ++i) {
+      if (succ_q_[i] != e.dst) continue;
+      if ((succ_marks_[i] & m) == m) dominated = true;
+      else if ((succ_marks_[i] & m) == succ_marks_[i]) {
+        if (kept == succ_q_.size()) {
+          kept = i;
+          succ_marks_[i] = m;
+        } else {
+          succ_q_[i] = kNoNode;  // replaced: erased below
+        }
+      }
+    }
+    if (dominated) continue;
+    if (kept == succ_q_.size()) {
       succ_q_.push_back(e.dst);
-      succ_acc_.push_back(tb && ba_->accepting_edge(e));
-    } else if (tb && ba_->accepting_edge(e)) {
-      succ_acc_[static_cast<std::size_t>(at - succ_q_.begin())] = 1;
+      succ_marks_.push_back(m);
+    } else if (std::find(succ_q_.begin(), succ_q_.end(), kNoNode) != succ_q_.end()) {
+      std::size_t w = 0;
+      for (std::size_t i = 0; i < succ_q_.size(); ++i)
+        if (succ_q_[i] != kNoNode) {
+          succ_q_[w] = succ_q_[i];
+          succ_marks_[w++] = succ_marks_[i];
+        }
+      succ_q_.resize(w);
+      succ_marks_.resize(w);
     }
   }
   const auto begin = static_cast<std::uint32_t>(edges_.size());
@@ -109,7 +150,7 @@ void ProductGraph::expand(NodeId n) {
     });
     if (tb)  // the stays, then each move's edges, in succ_q_ order
       for (std::size_t i = begin; i < edges_.size(); ++i)
-        edge_accepting_.push_back(succ_acc_[(i - begin) % succ_q_.size()] != 0);
+        edge_marks_.push_back(succ_marks_[(i - begin) % succ_q_.size()]);
   }
   edge_begin_[n] = begin;
   edge_end_[n] = static_cast<std::uint32_t>(edges_.size());
@@ -156,7 +197,7 @@ bool ProductGraph::expand_all(const std::vector<NodeId>& from, std::size_t max_n
 std::size_t ProductGraph::memory_bytes() const {
   return states_.capacity() * sizeof(std::uint64_t) + q_.capacity() * 4 + edge_begin_.capacity() * 4 +
          edge_end_.capacity() * 4 + labels_.capacity() * sizeof(automata::Letter) +
-         edges_.capacity() * sizeof(ProductEdge) + edge_accepting_.capacity() / 8 + table_.capacity() * 4;
+         edges_.capacity() * sizeof(ProductEdge) + edge_marks_.capacity() + table_.capacity() * 4;
 }
 
 }  // namespace rtamp::plan

@@ -15,11 +15,15 @@
 // one array, and an open-addressing table of node ids (linear probing, load
 // <= 1/2). Arrays grow geometrically; nothing is allocated per node.
 // Only BA states that can reach an accepting cycle ("useful") are entered.
-// Acceptance is on edges (Automaton::accepting_edge): for a state-based BA an
-// edge accepts when it enters an accepting node; for a transition-based one
-// (one set on edges) when some automaton edge it stands for carries the set
-// (one bit per edge, kept only then). A cycle is accepting iff it takes an
-// accepting edge.
+// Acceptance is on edges, generalized: each edge carries the acceptance sets
+// it counts for (Automaton::cycle_marks — state-based: {0} when it enters an
+// accepting node; a transition-based automaton's marks), and a cycle is
+// accepting iff its edges carry every set between them (all_marks()). Where
+// several automaton edges q -> q' hold in a node's label, the product has one
+// edge per maximal mark set among them (a superset is always as good), so a
+// one-set automaton gets one edge per q'. accepting_edge(i): edge i carries
+// some set — every accepting cycle takes such an edge, and so does the rest
+// of a cycle that has not yet taken every set, which is what the bounds use.
 // Invariants: node ids are dense 0..size()-1 and never change; an expanded
 // node's edges are edges_[edge_begin(n) .. edge_end(n)) and never change.
 // The graph stays valid as long as the System, Labeling, Automaton and the
@@ -31,6 +35,7 @@
 #include <cstdint>
 #include <functional>
 #include <limits>
+#include <memory>
 #include <vector>
 
 #include "rtamp/automata/automaton.hpp"
@@ -44,6 +49,9 @@ namespace rtamp::plan {
 using NodeId = std::uint32_t;
 inline constexpr NodeId kNoNode = std::numeric_limits<NodeId>::max();
 inline constexpr double kInf = std::numeric_limits<double>::infinity();
+// The most acceptance sets a product accepts on (its cycle searches keep one
+// layer per subset); the Planner degeneralizes an automaton with more.
+inline constexpr std::uint32_t kMaxProductSets = 4;
 
 struct ProductEdge {
   NodeId dst = kNoNode;
@@ -54,7 +62,8 @@ struct ProductEdge {
 class ProductGraph {
  public:
   // `cache` may be null (costs straight from the model). All references must
-  // outlive the graph.
+  // outlive the graph. Throws std::invalid_argument for an automaton with
+  // more than kMaxProductSets sets.
   ProductGraph(const task::System& ts, const task::Labeling& labeling, const automata::Automaton& ba,
                const MotionCostModel& model, MotionCostCache* cache);
 
@@ -78,10 +87,15 @@ class ProductGraph {
   // transition-based one, whose acceptance is on edges only).
   bool accepting(NodeId n) const { return ba_->is_accepting_state(q_[n]); }
   bool transition_based() const { return !ba_->state_based; }
-  // Edge i accepts (see the header comment).
-  bool accepting_edge(std::uint32_t i) const {
-    return ba_->state_based ? accepting(edges_[i].dst) : bool(edge_accepting_[i]);
+  // The acceptance sets a cycle must take between its edges (1: Büchi).
+  automata::Marks all_marks() const { return all_marks_; }
+  std::uint32_t num_sets() const { return num_sets_; }
+  // The sets edge i counts for (see the header comment).
+  automata::Marks edge_marks(std::uint32_t i) const {
+    return ba_->state_based ? (accepting(edges_[i].dst) ? 1u : 0u) : edge_marks_[i];
   }
+  // Edge i carries some set.
+  bool accepting_edge(std::uint32_t i) const { return edge_marks(i) != 0; }
   // Where the lasso search prices a cycle as soon as it reaches the node:
   // state-based, an accepting node; transition-based, an expanded node an
   // accepting edge leaves (a cycle taking that edge passes through it).
@@ -89,9 +103,15 @@ class ProductGraph {
     if (ba_->state_based) return accepting(n);
     if (!expanded(n)) return false;
     for (std::uint32_t e = edge_begin_[n]; e < edge_end_[n]; ++e)
-      if (edge_accepting_[e]) return true;
+      if (edge_marks_[e]) return true;
     return false;
   }
+  // The automaton the search's bounds read: the graph's own, except that a
+  // generalized one (two or more sets) is given as one set that an edge
+  // carries when it carries any — every accepting cycle, and the rest of
+  // every cycle not yet through all sets, takes such an edge, so a bound
+  // computed on it holds for the generalized search too.
+  const automata::Automaton& bound_automaton() const { return union_ ? *union_ : *ba_; }
   bool useful(std::uint32_t q) const { return useful_[q]; }
   // q lies on an automaton cycle through an accepting state: only nodes in
   // such states can lie on a lasso's cycle (automata/accepting_cycles.hpp).
@@ -141,10 +161,13 @@ class ProductGraph {
   std::vector<std::uint32_t> edge_begin_, edge_end_;
   std::vector<automata::Letter> labels_;
   std::vector<ProductEdge> edges_;
-  std::vector<bool> edge_accepting_;  // per edge, transition-based automata only
+  std::vector<std::uint8_t> edge_marks_;  // per edge, transition-based automata only
+  automata::Marks all_marks_ = 1;
+  std::uint32_t num_sets_ = 1;
+  std::unique_ptr<automata::Automaton> union_;  // bound_automaton() of a generalized automaton
   std::vector<std::uint32_t> table_;  // node id + 1, 0 = empty
   std::vector<std::uint32_t> succ_q_;  // scratch: BA successors of the node being expanded
-  std::vector<std::uint8_t> succ_acc_;  // scratch: per succ_q_ entry, an accepting edge leads there
+  std::vector<std::uint8_t> succ_marks_;  // scratch: per succ_q_ entry, the marks of the edge taken there
   std::uint64_t expansions_ = 0;
   std::uint64_t impossible_moves_ = 0;
 };
