@@ -27,6 +27,13 @@
 //                                   cycle_searches, graph_nodes,
 //                                   automaton_states, cost (docs/benchmarks.md
 //                                   "Acceptance on transitions").
+//   BM_PlanGeneralized/<n>/<trays>/<gen>/<algo>  the patrol (M = 5, n objects,
+//                                   trays) searched transition-based with its
+//                                   one-set automaton (gen = 0) or its 2-set
+//                                   generalized one (gen = 1), by A* (algo = 0)
+//                                   or Dijkstra (1); counters as above
+//                                   (docs/benchmarks.md "Generalized acceptance
+//                                   in the product").
 // Machine-readable output for the plot (scripts/plot-scaling):
 //   build/bench/plan_scaling_bench --benchmark_out_format=csv
 //       --benchmark_out=docs/results/plan-scaling.csv
@@ -122,24 +129,23 @@ void scaling_grid(benchmark::internal::Benchmark* b) {
 }
 BENCHMARK(BM_PlanScaling)->Apply(scaling_grid)->UseManualTime()->Unit(benchmark::kMillisecond);
 
-void BM_PlanAcceptance(benchmark::State& state) {
-  const int task = static_cast<int>(state.range(0));
-  const int objects = static_cast<int>(state.range(1));
-  const bool tb = state.range(2) != 0;
-  const world::Scenario scenario = scaling_scenario(task, 5, objects, 0);
-  plan::PlannerOptions o;
-  o.algorithm = plan::Algorithm::AStar;
-  o.cost = "euclid";
-  o.transition_based = tb;
+// Cold plans of `scenario` with `o` (translation and TS set-up not timed);
+// the counters of the last, or the error of a limit or of no plan.
+void plan_and_count(benchmark::State& state, const world::Scenario& scenario, const plan::PlannerOptions& o,
+                    const std::string& label) {
   plan::PlanResult r;
   std::uint32_t states = 0;
   for (auto _ : state) {
-    plan::Planner p(scenario, o);  // translation and TS set-up are not timed
+    plan::Planner p(scenario, o);
     (void)p.system();
     states = p.automaton().num_states();
     r = p.plan();
-    if (!r.found) break;
+    if (!r.found || r.stats.hit_node_limit || r.stats.hit_time_limit) break;
     state.SetIterationTime(r.stats.seconds);
+  }
+  if (r.stats.hit_node_limit || r.stats.hit_time_limit) {
+    state.SkipWithError(("limit: " + (r.message.empty() ? std::string("stopped at a limit") : r.message)).c_str());
+    return;
   }
   if (!r.found) {
     state.SkipWithError(("no plan: " + r.message).c_str());
@@ -150,10 +156,48 @@ void BM_PlanAcceptance(benchmark::State& state) {
   state.counters["graph_nodes"] = double(r.stats.graph_nodes);
   state.counters["automaton_states"] = states;
   state.counters["cost"] = r.plan.cost();
-  state.SetLabel(std::string(kTaskNames[task]) + (tb ? " transition" : " state"));
+  state.SetLabel(label);
+}
+
+void BM_PlanAcceptance(benchmark::State& state) {
+  const int task = static_cast<int>(state.range(0));
+  const int objects = static_cast<int>(state.range(1));
+  const bool tb = state.range(2) != 0;
+  plan::PlannerOptions o;
+  o.algorithm = plan::Algorithm::AStar;
+  o.cost = "euclid";
+  o.transition_based = tb;
+  plan_and_count(state, scaling_scenario(task, 5, objects, 0), o,
+                 std::string(kTaskNames[task]) + (tb ? " transition" : " state"));
 }
 BENCHMARK(BM_PlanAcceptance)
     ->ArgsProduct({{1, 3}, {4, 8, 16}, {0, 1}})
+    ->UseManualTime()
+    ->Unit(benchmark::kMillisecond);
+
+void BM_PlanGeneralized(benchmark::State& state) {
+  const int objects = static_cast<int>(state.range(0));
+  const int trays = static_cast<int>(state.range(1));
+  const bool gen = state.range(2) != 0;
+  const bool dijkstra = state.range(3) != 0;
+  plan::PlannerOptions o;
+  o.algorithm = dijkstra ? plan::Algorithm::Dijkstra : plan::Algorithm::AStar;
+  o.cost = "euclid";
+  o.transition_based = true;
+  o.generalized = gen ? plan::PlannerOptions::Generalized::Always : plan::PlannerOptions::Generalized::Never;
+  o.limits.time_limit = 20;
+  o.limits.max_nodes = 40'000'000;
+  o.limits.max_memory_bytes = 0;
+  plan_and_count(state, scaling_scenario(3, 5, objects, trays), o,
+                 std::string(gen ? "generalized" : "one set") + (dijkstra ? " dijkstra" : " astar"));
+}
+void generalized_grid(benchmark::internal::Benchmark* b) {
+  for (const auto& [n, trays] : {std::pair{4, 0}, {6, 0}, {4, 2}})
+    for (int gen : {0, 1})
+      for (int dijkstra : {0, 1}) b->Args({n, trays, gen, dijkstra});
+}
+BENCHMARK(BM_PlanGeneralized)
+    ->Apply(generalized_grid)
     ->UseManualTime()
     ->Unit(benchmark::kMillisecond);
 
