@@ -2,9 +2,9 @@
 
 #include <algorithm>
 #include <bit>
+#include <chrono>
 #include <stdexcept>
 #include <string>
-#include <chrono>
 
 #include "rtamp/automata/accepting_cycles.hpp"
 #include "rtamp/plan/cost_check.hpp"
@@ -26,8 +26,7 @@ ProductGraph::ProductGraph(const task::System& ts, const task::Labeling& labelin
     throw std::invalid_argument("ProductGraph: an automaton with " + std::to_string(ba.num_sets) +
                                 " acceptance sets (at most " + std::to_string(kMaxProductSets) + ")");
   all_marks_ = ba.cycle_marks_all();
-  num_sets_ = static_cast<std::uint32_t>(std::popcount(all_marks_));
-  if (num_sets_ >= 2) {
+  if (std::popcount(all_marks_) >= 2) {
     union_ = std::make_unique<automata::Automaton>(ba);
     union_->num_sets = 1;
     for (auto& out : union_->edges)

@@ -89,7 +89,6 @@ class ProductGraph {
   bool transition_based() const { return !ba_->state_based; }
   // The acceptance sets a cycle must take between its edges (1: Büchi).
   automata::Marks all_marks() const { return all_marks_; }
-  std::uint32_t num_sets() const { return num_sets_; }
   // The sets edge i counts for (see the header comment).
   automata::Marks edge_marks(std::uint32_t i) const {
     return ba_->state_based ? (accepting(edges_[i].dst) ? 1u : 0u) : edge_marks_[i];
@@ -113,8 +112,8 @@ class ProductGraph {
   // computed on it holds for the generalized search too.
   const automata::Automaton& bound_automaton() const { return union_ ? *union_ : *ba_; }
   bool useful(std::uint32_t q) const { return useful_[q]; }
-  // q lies on an automaton cycle through an accepting state: only nodes in
-  // such states can lie on a lasso's cycle (automata/accepting_cycles.hpp).
+  // q lies on an accepting automaton cycle: only nodes in such states can lie
+  // on a lasso's cycle (automata/accepting_cycles.hpp).
   bool on_accepting_cycle(std::uint32_t q) const { return on_accepting_cycle_[q]; }
 
   bool expanded(NodeId n) const { return edge_begin_[n] != kUnexpanded; }
@@ -163,7 +162,6 @@ class ProductGraph {
   std::vector<ProductEdge> edges_;
   std::vector<std::uint8_t> edge_marks_;  // per edge, transition-based automata only
   automata::Marks all_marks_ = 1;
-  std::uint32_t num_sets_ = 1;
   std::unique_ptr<automata::Automaton> union_;  // bound_automaton() of a generalized automaton
   std::vector<std::uint32_t> table_;  // node id + 1, 0 = empty
   std::vector<std::uint32_t> succ_q_;  // scratch: BA successors of the node being expanded
