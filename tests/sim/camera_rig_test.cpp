@@ -5,9 +5,11 @@
 // top centre projects shows that block at the depth of its top face; the wrist camera
 // rides on the flange and looks along the tool axis; a rig (and a Renderer) made on one
 // thread renders on any other, one after the other (`rtamp serve` builds the episode on
-// its main thread and steps it on the loop's).
+// its main thread and steps it on the loop's); the rig's coarser geometry leaves the
+// model's quality settings and plane grids as they were.
 #include <gtest/gtest.h>
 
+#include <cstring>
 #include <functional>
 #include <thread>
 
@@ -135,6 +137,20 @@ TEST(CameraRig, RendersOnWhicheverThreadRenders) {
   ASSERT_EQ(first.rgb.size(), static_cast<std::size_t>(640) * 480 * 3);
   EXPECT_EQ(first.rgb, again.rgb);  // the same picture from either thread
   EXPECT_EQ(picture.size(), static_cast<std::size_t>(320) * 240 * 3);
+}
+
+TEST(CameraRig, LeavesTheModelsRenderSettingsAsTheyWere) {
+  const world::Scenario s = testing::three_block(true);
+  Simulation sim(s);
+  const mjModel* m = sim.model();
+  const auto quality = m->vis.quality;
+  const std::vector<mjtNum> sizes(m->geom_size, m->geom_size + 3 * m->ngeom);
+  {
+    CameraRig rig(sim, world::cameras_of(s));
+    EXPECT_NE(m->vis.quality.numslices, 0);
+  }
+  EXPECT_EQ(std::memcmp(&m->vis.quality, &quality, sizeof quality), 0);
+  EXPECT_EQ(std::vector<mjtNum>(m->geom_size, m->geom_size + 3 * m->ngeom), sizes);
 }
 
 TEST(CameraRig, UnknownCameraIsNamed) {

@@ -49,6 +49,12 @@ void linear_depth(const std::vector<float>& d, std::vector<float>& out, int widt
   }
 }
 
+// The geometry the camera renders: round shapes as 12-gons (MuJoCo's default is 28; an
+// arm link 6 cm across is off by at most 2 mm at its rim), a box face or a plane as
+// one quad (flat faces under the scene's directional lights). The render of a 640x480
+// frame costs 0.57x what it did with MuJoCo's defaults (docs/benchmarks.md).
+constexpr int kRenderSlices = 12, kRenderStacks = 6;
+
 }  // namespace
 
 struct CameraRig::Impl {
@@ -85,13 +91,27 @@ CameraRig::CameraRig(const Simulation& sim, std::vector<world::Camera> cameras, 
   mjr_defaultContext(&r.con);
   mjv_makeScene(m, &r.scene, 2000);
   r.scene_made = true;
+  // The context's geometry is baked when it is made, from the model's quality settings
+  // and plane grids: it is made with the camera's (kRenderSlices), then the model's are
+  // put back.
+  mjModel* mm = const_cast<mjModel*>(m);
+  const auto quality = mm->vis.quality;
+  std::vector<mjtNum> grid;
+  for (int g = 0; g < m->ngeom; ++g)
+    if (m->geom_type[g] == mjGEOM_PLANE) {
+      grid.push_back(mm->geom_size[3 * g + 2]);
+      mm->geom_size[3 * g + 2] = 2 * std::max(mm->geom_size[3 * g], mm->geom_size[3 * g + 1]);
+    }
   // No multisampling: a pixel shows one surface, so its depth, colour and segment
   // belong to the same point (as a depth sensor's do).
-  mjModel* mm = const_cast<mjModel*>(m);
-  const int samples = mm->vis.quality.offsamples;
   mm->vis.quality.offsamples = 0;
+  mm->vis.quality.numslices = kRenderSlices;
+  mm->vis.quality.numstacks = kRenderStacks;
+  mm->vis.quality.numquads = 1;
   mjr_makeContext(m, &r.con, mjFONTSCALE_100);
-  mm->vis.quality.offsamples = samples;
+  mm->vis.quality = quality;
+  for (int g = 0, i = 0; g < m->ngeom; ++g)
+    if (m->geom_type[g] == mjGEOM_PLANE) mm->geom_size[3 * g + 2] = grid[static_cast<std::size_t>(i++)];
   r.con_made = true;
   mjr_setBuffer(mjFB_OFFSCREEN, &r.con);
   if (r.con.currentBuffer != mjFB_OFFSCREEN) throw Error("offscreen rendering unavailable: no offscreen buffer");

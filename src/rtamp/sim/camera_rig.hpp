@@ -7,7 +7,9 @@
 //
 // Invariants: one rig owns one EGL context (egl_context.hpp) and MuJoCo render context,
 // sized for the largest camera, without multisampling (a pixel's colour, depth and
-// segment belong to one surface point); images are top row first; a wrist camera's extrinsics
+// segment belong to one surface point), its round shapes as 12-gons and its flat faces as
+// single quads (cheaper for a CPU renderer; the model's own settings are left as they
+// were); images are top row first; a wrist camera's extrinsics
 // follow the arm (computed from the simulation's current state); the depth noise is
 // drawn from the rig's own generator, so a seed gives the same images; the read-back and
 // intermediate images are kept, so a frame after the first allocates nothing (given an
