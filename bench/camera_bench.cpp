@@ -9,9 +9,13 @@
 //   BM_PerceptionFrame/C a whole frame: render with noise, detect, visibility, belief update,
 //                        of C = 0 the overhead camera, 1 the wrist camera (424x240, arm at
 //                        home), 2 both (one frame of each)
+//   BM_PerceptionFrameArmOver  a whole overhead frame with the arm in view as in an episode:
+//                        the tool 5 and 20 cm over each thing in turn, a pose a frame
 // Counter fps = frames per second of wall time; things = boxes fitted a frame.
 #include <benchmark/benchmark.h>
 
+#include "rtamp/robot/skills.hpp"
+#include "rtamp/robot/ur5_kinematics.hpp"
 #include "rtamp/sim/camera_detector.hpp"
 #include "rtamp/sim/camera_perception.hpp"
 #include "rtamp/sim/camera_rig.hpp"
@@ -78,6 +82,46 @@ void BM_PerceptionFrame(benchmark::State& state) {
   state.counters["things"] = static_cast<double>(eyes.belief().things().size());
 }
 BENCHMARK(BM_PerceptionFrame)->Arg(0)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+void BM_PerceptionFrameArmOver(benchmark::State& state) {
+  const world::Scenario s = world::load_scenario("3-block-tray");
+  sim::Simulation sim(s);
+  sim.step(50);
+  // The arm's configurations: the tool over each thing, gripper down (the first free IK
+  // solution).
+  robot::Ur5Kinematics::Config cfg;
+  cfg.base = robot::Ur5Kinematics::base_pose(s.robot);
+  cfg.tool_offset = sim.options().mjcf.arm.tool_offset;
+  const robot::Ur5Kinematics arm(cfg);
+  std::vector<robot::Joints> poses;
+  for (int i = 0; i < static_cast<int>(sim.things().size()); ++i)
+    for (double above : {0.05, 0.2}) {
+      Eigen::Vector3d tool = sim.position(i);
+      const sim::Thing& t = sim.thing(i);
+      tool.z() += (t.container ? t.size[2] : t.size[2] / 2) + above;
+      robot::IkSolutions q;
+      const robot::Joints now = sim.arm_q();
+      arm.ik_tool(robot::top_down_pose(tool, 0), q, &now);
+      for (const robot::Joints& c : q)
+        if (!sim.config_collides(c)) {
+          poses.push_back(c);
+          break;
+        }
+    }
+  if (poses.empty()) {
+    state.SkipWithError("no free configuration over any thing");
+    return;
+  }
+  sim::CameraPerception eyes(sim, {});
+  std::size_t k = 0;
+  for (auto _ : state) {
+    sim.set_arm_configuration(poses[k++ % poses.size()]);
+    eyes.frame();
+  }
+  state.counters["fps"] = benchmark::Counter(static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
+  state.counters["poses"] = static_cast<double>(poses.size());
+}
+BENCHMARK(BM_PerceptionFrameArmOver)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 }  // namespace
 

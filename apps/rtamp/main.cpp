@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cctype>
 #include <csignal>
+#include <cstdlib>
 #include <cstring>
 #include <iostream>
 #include <memory>
@@ -87,6 +88,10 @@ int main(int argc, char** argv) {
   // A reader that goes away (a pipe to `head`, an ffmpeg that failed) is a write
   // error the code reports, never a signal.
   std::signal(SIGPIPE, SIG_IGN);
+  // Mesa's llvmpipe (the CPU renderer of the cameras and pictures here) renders on the
+  // calling thread unless the user's LP_NUM_THREADS says otherwise: a camera episode
+  // costs less so, alone or in a batch (docs/benchmarks.md "Camera frames at 10x").
+  setenv("LP_NUM_THREADS", "0", 0);
   rtamp::robot::register_ik_cost_model();  // before the subcommands list the cost models
   CLI::App app{
       "rtamp — reactive task and motion planning under linear temporal logic.\n"

@@ -15,6 +15,23 @@ int find(std::vector<int>& parent, int i) {
   return i;
 }
 
+// The median of nine, branch-free: Devillard's 19 compare-exchanges (checked against a sort
+// on every permutation of nine). Readings are noisy, so a sort's branches mispredict.
+inline void sort2(float& a, float& b) {
+  const float lo = std::min(a, b), hi = std::max(a, b);
+  a = lo, b = hi;
+}
+float median9(float p[9]) {
+  sort2(p[1], p[2]), sort2(p[4], p[5]), sort2(p[7], p[8]);
+  sort2(p[0], p[1]), sort2(p[3], p[4]), sort2(p[6], p[7]);
+  sort2(p[1], p[2]), sort2(p[4], p[5]), sort2(p[7], p[8]);
+  sort2(p[0], p[3]), sort2(p[5], p[8]), sort2(p[4], p[7]);
+  sort2(p[3], p[6]), sort2(p[1], p[4]), sort2(p[2], p[5]);
+  sort2(p[4], p[7]), sort2(p[4], p[2]), sort2(p[6], p[4]);
+  sort2(p[4], p[2]);
+  return p[4];
+}
+
 double quantile(std::vector<double> v, double q) {
   const auto k = static_cast<std::ptrdiff_t>(std::floor(q * static_cast<double>(v.size() - 1)));
   std::nth_element(v.begin(), v.begin() + k, v.end());
@@ -53,15 +70,32 @@ std::vector<std::vector<Eigen::Vector3d>> blob_points(const ColourBlob& blob, co
   };
   // Each depth replaced by the median of the blob's readings in the window around it (the
   // noise is independent per pixel; the blob's own pixels only, so other surfaces do not
-  // mix in), then the points. The median is the middle (upper middle) of the sorted window.
-  std::vector<Eigen::Vector3d> pts;
+  // mix in), then the point's height. The median is the middle (upper middle) of the
+  // sorted window. The height of the point at depth d on pixel (u, v)'s ray is
+  // eye_z + d (gu (u - cx) + gv (v - cy) + g1): the third row of R^T applied to the
+  // back-projected point.
+  const Eigen::Vector3d eye = E.to_world(Eigen::Vector3d::Zero());
+  const double gu = E.R(0, 2) / K.fx, gv = E.R(1, 2) / K.fy, g1 = E.R(2, 2);
   std::vector<double> z;
   std::vector<float> window(static_cast<std::size_t>((2 * radius + 1) * (2 * radius + 1)));
-  pts.reserve(pix.size());
   z.reserve(pix.size());
   double mean_depth = 0;
   for (std::size_t a = 0; a < pix.size(); ++a) {
     const int u = pix[a] % width, v = pix[a] / width;
+    if (radius == 1) {  // a whole 3x3 window (most pixels): the branch-free median
+      const int* up = grid.data() + cell(u, v - 1);
+      const int* mid = up + bw;
+      const int* down = mid + bw;
+      const int k[9] = {up[-1], up[0], up[1], mid[-1], mid[0], mid[1], down[-1], down[0], down[1]};
+      if (std::min({k[0], k[1], k[2], k[3], k[4], k[5], k[6], k[7], k[8]}) >= 0) {
+        float w[9];
+        for (int i = 0; i < 9; ++i) w[i] = raw[static_cast<std::size_t>(k[i])];
+        const double d = median9(w);
+        z.push_back(eye.z() + d * (gu * (u - K.cx) + gv * (v - K.cy) + g1));
+        mean_depth += d;
+        continue;
+      }
+    }
     std::size_t n = 0;
     for (int dv = -radius; dv <= radius; ++dv) {
       const int* row = grid.data() + cell(u, v + dv);
@@ -76,8 +110,7 @@ std::vector<std::vector<Eigen::Vector3d>> blob_points(const ColourBlob& blob, co
       }
     }
     const double d = window[n / 2];
-    pts.push_back(E.to_world(K.back_project(u, v, d)));
-    z.push_back(pts.back().z());
+    z.push_back(eye.z() + d * (gu * (u - K.cx) + gv * (v - K.cy) + g1));
     mean_depth += d;
   }
   mean_depth /= static_cast<double>(pix.size());
@@ -121,7 +154,6 @@ std::vector<std::vector<Eigen::Vector3d>> blob_points(const ColourBlob& blob, co
     }
     members[static_cast<std::size_t>(cluster_of_root[r])].push_back(a);
   }
-  const Eigen::Vector3d eye = E.to_world(Eigen::Vector3d::Zero());
   std::vector<std::vector<Eigen::Vector3d>> clusters;
   for (const auto& m : members) {
     if (static_cast<int>(m.size()) < options.min_points) continue;

@@ -42,9 +42,9 @@ void linear_depth(const std::vector<float>& d, std::vector<float>& out, int widt
   for (int y = 0; y < height; ++y) {
     const float* in = d.data() + w * static_cast<std::size_t>(height - 1 - y);
     float* o = out.data() + w * static_cast<std::size_t>(y);
-    for (std::size_t x = 0; x < w; ++x) {
+    for (std::size_t x = 0; x < w; ++x) {  // branch-free: vectorised
       const double z = zn / (1 - in[x] * k);
-      o[x] = z >= near && z <= far ? static_cast<float>(z) : 0.0f;
+      o[x] = (z >= near) & (z <= far) ? static_cast<float>(z) : 0.0f;
     }
   }
 }
