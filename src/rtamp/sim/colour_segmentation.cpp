@@ -92,9 +92,12 @@ void ColourSegmenter::segment(const std::uint8_t* rgb, int width, int height, Co
   for (int y = 0; y < height; ++y) {
     const std::uint8_t* p = rgb + 3 * static_cast<std::size_t>(y) * static_cast<std::size_t>(width);
     std::int16_t* label = out.label.data() + static_cast<std::size_t>(y) * static_cast<std::size_t>(width);
+    // Flat faces give runs of one colour: a pixel like the one before it has its label.
+    std::size_t cell = SIZE_MAX;
+    std::int16_t l = -1;
     for (int x = 0; x < width; ++x, p += 3) {
-      const std::int16_t l =
-          table_[((static_cast<std::size_t>(p[0] >> kShift) * kLevels) + (p[1] >> kShift)) * kLevels + (p[2] >> kShift)];
+      const std::size_t c = ((static_cast<std::size_t>(p[0] >> kShift) * kLevels) + (p[1] >> kShift)) * kLevels + (p[2] >> kShift);
+      if (c != cell) cell = c, l = table_[c];
       label[x] = l;
       if (l >= 0 && thing_[static_cast<std::size_t>(l)]) {
         auto& b = box[static_cast<std::size_t>(l)];
