@@ -2,14 +2,16 @@
 // clean metric depth image: dropouts at depth edges, then Gaussian noise of standard
 // deviation a + b z², then rounding to whole quanta. Pixels reading 0 (no depth) stay 0;
 // a noisy depth never goes below 0 (it reads 0 then). Edges are found on the clean image.
-// A pixel's draws come from a hash of its index and the frame's seeds (two draws of
-// `rng` a frame): its Gaussian deviate is the sum of two entries of a fixed table of
-// 2^12 unit normals over sqrt 2, its dropout coin a 24-bit uniform.
+// The Gaussian deviates are a window of a fixed table of 2^20 unit normals starting at a
+// random offset each frame (pixel i reads entry offset + i mod 2^20), so a frame's
+// deviates are read in order and independent up to 2^20 pixels (a larger image repeats
+// them); an edge pixel's dropout coin is a 24-bit uniform from a
+// hash of its index and the frame's seed. One draw of `rng` a frame.
 //
 // Invariants: the same `rng` state gives the same image, whatever the CPU (the AVX2 and
-// the baseline code do the same integer and float operations); no pixel's draws depend on another's,
-// so the loops are branch-free and vectorised; no allocation once `noisy` has the
-// image's size.
+// the baseline code do the same integer and float operations); no pixel's draws depend
+// on another's, so the loops are branch-free and vectorised; no allocation once `noisy`
+// has the image's size.
 #pragma once
 
 #include <random>
