@@ -2,7 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <cstring>
+
+#include <EGL/egl.h>
 
 #include "rtamp/sim/depth_noise.hpp"
 #include "rtamp/sim/egl_context.hpp"
@@ -32,22 +35,29 @@ void flip_rows(const std::vector<T>& in, std::vector<T>& out, std::size_t row, i
     std::memcpy(out.data() + row * y, in.data() + row * (height - 1 - y), row * sizeof(T));
 }
 
-// The bottom-up z-buffer `d` as metres along the optical axis, top row first:
+// The bottom-up depth-stencil buffer `d` (24 bits of depth d24 over 8 of stencil) as metres
+// along the optical axis, top row first: with d = d24 / (2^24 - 1),
 // z = n / (1 - d (1 - n/f)) (MuJoCo's clip planes), 0 outside [near, far].
-void linear_depth(const std::vector<float>& d, std::vector<float>& out, int width, int height, double zn, double zf,
-                  double near, double far) {
+void linear_depth(const std::vector<std::uint32_t>& d, std::vector<float>& out, int width, int height, double zn,
+                  double zf, double near, double far) {
   out.resize(d.size());
-  const double k = 1 - zn / zf;
+  const double k = (1 - zn / zf) / 16777215.0;
   const auto w = static_cast<std::size_t>(width);
   for (int y = 0; y < height; ++y) {
-    const float* in = d.data() + w * static_cast<std::size_t>(height - 1 - y);
+    const std::uint32_t* in = d.data() + w * static_cast<std::size_t>(height - 1 - y);
     float* o = out.data() + w * static_cast<std::size_t>(y);
     for (std::size_t x = 0; x < w; ++x) {  // branch-free: vectorised
-      const double z = zn / (1 - in[x] * k);
+      const double z = zn / (1 - static_cast<double>(static_cast<std::int32_t>(in[x] >> 8)) * k);
       o[x] = (z >= near) & (z <= far) ? static_cast<float>(z) : 0.0f;
     }
   }
 }
+
+// glReadPixels, from EGL (the library links no OpenGL itself), and the read-back format
+// of MuJoCo's offscreen depth-stencil buffer (GL_DEPTH24_STENCIL8): read as it is stored,
+// it costs less than converted to floats by the driver.
+using ReadPixels = void (*)(int, int, int, int, unsigned, unsigned, void*);
+constexpr unsigned kDepthStencil = 0x84F9, kUnsignedInt24_8 = 0x84FA;  // GL_DEPTH_STENCIL, GL_UNSIGNED_INT_24_8
 
 // The geometry the camera renders: round shapes as 12-gons (MuJoCo's default is 28; an
 // arm link 6 cm across is off by at most 2 mm at its rim), a box face or a plane as
@@ -67,7 +77,9 @@ struct CameraRig::Impl {
   bool scene_made = false, con_made = false;
   // Read-back and intermediate images, kept between frames (no allocation per frame).
   std::vector<std::uint8_t> rgb, seg;
-  std::vector<float> depth, clean;
+  std::vector<std::uint32_t> depth;
+  std::vector<float> clean;
+  ReadPixels read_pixels = nullptr;
 };
 
 CameraRig::CameraRig(const Simulation& sim, std::vector<world::Camera> cameras, std::uint64_t seed)
@@ -115,6 +127,8 @@ CameraRig::CameraRig(const Simulation& sim, std::vector<world::Camera> cameras, 
   r.con_made = true;
   mjr_setBuffer(mjFB_OFFSCREEN, &r.con);
   if (r.con.currentBuffer != mjFB_OFFSCREEN) throw Error("offscreen rendering unavailable: no offscreen buffer");
+  r.read_pixels = reinterpret_cast<ReadPixels>(eglGetProcAddress("glReadPixels"));
+  if (!r.read_pixels) throw Error("offscreen rendering unavailable: no glReadPixels");
   r.scene.flags[mjRND_SHADOW] = 0;
   r.scene.flags[mjRND_REFLECTION] = 0;
   r.scene.flags[mjRND_SKYBOX] = 0;
@@ -176,7 +190,8 @@ void CameraRig::render(std::size_t camera, CameraImage& out, CameraPasses passes
   mjr_render(viewport, &r.scene, &r.con);
   r.rgb.resize(n * 3);
   r.depth.resize(n);
-  mjr_readPixels(r.rgb.data(), r.depth.data(), viewport, &r.con);
+  mjr_readPixels(r.rgb.data(), nullptr, viewport, &r.con);  // leaves the offscreen buffer bound for reading
+  r.read_pixels(0, 0, w, h, kDepthStencil, kUnsignedInt24_8, r.depth.data());
   out.width = w;
   out.height = h;
   out.intrinsics = intrinsics(camera);
