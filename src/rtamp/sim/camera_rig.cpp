@@ -35,16 +35,16 @@ void flip_rows(const std::vector<T>& in, std::vector<T>& out, std::size_t row, i
     std::memcpy(out.data() + row * y, in.data() + row * (height - 1 - y), row * sizeof(T));
 }
 
-// The bottom-up depth-stencil buffer `d` (24 bits of depth d24 over 8 of stencil) as metres
-// along the optical axis, top row first: with d = d24 / (2^24 - 1),
+// The depth-stencil buffer `d` (24 bits of depth d24 over 8 of stencil; bottom row first
+// if `flip`) as metres along the optical axis, top row first: with d = d24 / (2^24 - 1),
 // z = n / (1 - d (1 - n/f)) (MuJoCo's clip planes), 0 outside [near, far].
-void linear_depth(const std::vector<std::uint32_t>& d, std::vector<float>& out, int width, int height, double zn,
-                  double zf, double near, double far) {
+void linear_depth(const std::vector<std::uint32_t>& d, std::vector<float>& out, int width, int height, bool flip,
+                  double zn, double zf, double near, double far) {
   out.resize(d.size());
   const double k = (1 - zn / zf) / 16777215.0;
   const auto w = static_cast<std::size_t>(width);
   for (int y = 0; y < height; ++y) {
-    const std::uint32_t* in = d.data() + w * static_cast<std::size_t>(height - 1 - y);
+    const std::uint32_t* in = d.data() + w * static_cast<std::size_t>(flip ? height - 1 - y : y);
     float* o = out.data() + w * static_cast<std::size_t>(y);
     for (std::size_t x = 0; x < w; ++x) {  // branch-free: vectorised
       const double z = zn / (1 - static_cast<double>(static_cast<std::int32_t>(in[x] >> 8)) * k);
@@ -53,11 +53,28 @@ void linear_depth(const std::vector<std::uint32_t>& d, std::vector<float>& out, 
   }
 }
 
-// glReadPixels, from EGL (the library links no OpenGL itself), and the read-back format
-// of MuJoCo's offscreen depth-stencil buffer (GL_DEPTH24_STENCIL8): read as it is stored,
-// it costs less than converted to floats by the driver.
-using ReadPixels = void (*)(int, int, int, int, unsigned, unsigned, void*);
+// The OpenGL calls the read-back makes itself, from EGL (the library links no OpenGL).
+// MuJoCo's offscreen depth-stencil buffer (GL_DEPTH24_STENCIL8) is read as it is stored,
+// which costs less than converted to floats by the driver; with GL_MESA_pack_invert (Mesa
+// has it) the images come top row first, with no copy to turn them.
+struct Gl {
+  void (*read_pixels)(int, int, int, int, unsigned, unsigned, void*) = nullptr;
+  void (*pixel_store)(unsigned, int) = nullptr;  // null: no GL_MESA_pack_invert
+};
 constexpr unsigned kDepthStencil = 0x84F9, kUnsignedInt24_8 = 0x84FA;  // GL_DEPTH_STENCIL, GL_UNSIGNED_INT_24_8
+constexpr unsigned kRgb = 0x1907, kUnsignedByte = 0x1401;               // GL_RGB, GL_UNSIGNED_BYTE
+constexpr unsigned kPackAlignment = 0x0D05, kPackInvertMesa = 0x8758, kExtensions = 0x1F03;
+
+Gl load_gl() {  // with the context current
+  Gl gl;
+  gl.read_pixels = reinterpret_cast<decltype(gl.read_pixels)>(eglGetProcAddress("glReadPixels"));
+  if (!gl.read_pixels) throw Error("offscreen rendering unavailable: no glReadPixels");
+  const auto get_string = reinterpret_cast<const unsigned char* (*)(unsigned)>(eglGetProcAddress("glGetString"));
+  const char* extensions = get_string ? reinterpret_cast<const char*>(get_string(kExtensions)) : nullptr;
+  if (extensions && std::strstr(extensions, "GL_MESA_pack_invert"))
+    gl.pixel_store = reinterpret_cast<decltype(gl.pixel_store)>(eglGetProcAddress("glPixelStorei"));
+  return gl;
+}
 
 // The geometry the camera renders: round shapes as 12-gons (MuJoCo's default is 28; an
 // arm link 6 cm across is off by at most 2 mm at its rim), a box face or a plane as
@@ -79,7 +96,7 @@ struct CameraRig::Impl {
   std::vector<std::uint8_t> rgb, seg;
   std::vector<std::uint32_t> depth;
   std::vector<float> clean;
-  ReadPixels read_pixels = nullptr;
+  Gl gl;
 };
 
 CameraRig::CameraRig(const Simulation& sim, std::vector<world::Camera> cameras, std::uint64_t seed)
@@ -127,8 +144,7 @@ CameraRig::CameraRig(const Simulation& sim, std::vector<world::Camera> cameras, 
   r.con_made = true;
   mjr_setBuffer(mjFB_OFFSCREEN, &r.con);
   if (r.con.currentBuffer != mjFB_OFFSCREEN) throw Error("offscreen rendering unavailable: no offscreen buffer");
-  r.read_pixels = reinterpret_cast<ReadPixels>(eglGetProcAddress("glReadPixels"));
-  if (!r.read_pixels) throw Error("offscreen rendering unavailable: no glReadPixels");
+  r.gl = load_gl();
   r.scene.flags[mjRND_SHADOW] = 0;
   r.scene.flags[mjRND_REFLECTION] = 0;
   r.scene.flags[mjRND_SKYBOX] = 0;
@@ -188,17 +204,27 @@ void CameraRig::render(std::size_t camera, CameraImage& out, CameraPasses passes
   mjv_updateScene(m, const_cast<mjData*>(sim_.data()), &r.option, nullptr, &r.camera, mjCAT_ALL, &r.scene);
   const mjrRect viewport{0, 0, w, h};
   mjr_render(viewport, &r.scene, &r.con);
-  r.rgb.resize(n * 3);
   r.depth.resize(n);
-  mjr_readPixels(r.rgb.data(), nullptr, viewport, &r.con);  // leaves the offscreen buffer bound for reading
-  r.read_pixels(0, 0, w, h, kDepthStencil, kUnsignedInt24_8, r.depth.data());
+  out.rgb.resize(n * 3);
+  if (r.gl.pixel_store) {  // top row first, straight into the image
+    mjr_setBuffer(mjFB_OFFSCREEN, &r.con);
+    r.gl.pixel_store(kPackAlignment, 1);
+    r.gl.pixel_store(kPackInvertMesa, 1);
+    r.gl.read_pixels(0, 0, w, h, kRgb, kUnsignedByte, out.rgb.data());
+    r.gl.read_pixels(0, 0, w, h, kDepthStencil, kUnsignedInt24_8, r.depth.data());
+    r.gl.pixel_store(kPackInvertMesa, 0);
+  } else {
+    r.rgb.resize(n * 3);
+    mjr_readPixels(r.rgb.data(), nullptr, viewport, &r.con);  // leaves the offscreen buffer bound for reading
+    r.gl.read_pixels(0, 0, w, h, kDepthStencil, kUnsignedInt24_8, r.depth.data());
+    flip_rows(r.rgb, out.rgb, static_cast<std::size_t>(w) * 3, h);
+  }
   out.width = w;
   out.height = h;
   out.intrinsics = intrinsics(camera);
   out.extrinsics = extrinsics(camera);
-  flip_rows(r.rgb, out.rgb, static_cast<std::size_t>(w) * 3, h);
   const double zn = m->vis.map.znear * m->stat.extent, zf = m->vis.map.zfar * m->stat.extent;
-  linear_depth(r.depth, passes.noise ? r.clean : out.depth, w, h, zn, zf, c.near, c.far);
+  linear_depth(r.depth, passes.noise ? r.clean : out.depth, w, h, !r.gl.pixel_store, zn, zf, c.near, c.far);
   if (passes.noise) apply_depth_noise(r.clean, out.depth, w, h, c.noise, rng_);
   out.body.clear();
   if (!passes.segmentation) return;
@@ -207,6 +233,7 @@ void CameraRig::render(std::size_t camera, CameraImage& out, CameraPasses passes
   mjr_render(viewport, &r.scene, &r.con);
   r.scene.flags[mjRND_SEGMENT] = 0;
   r.scene.flags[mjRND_IDCOLOR] = 0;
+  r.rgb.resize(n * 3);
   mjr_readPixels(r.rgb.data(), nullptr, viewport, &r.con);
   flip_rows(r.rgb, r.seg, static_cast<std::size_t>(w) * 3, h);
   out.body.assign(n, -1);
