@@ -76,9 +76,12 @@ bool CameraDetector::split_touching(const std::vector<Eigen::Vector3d>& points, 
   return true;
 }
 
-void CameraDetector::detect(const CameraImage& image, std::vector<world::Detection>& out) {
-  out.clear();
+void CameraDetector::segment(const CameraImage& image) {
   segmenter_.segment(image.rgb.data(), image.width, image.height, segmentation_);
+}
+
+void CameraDetector::fit(const CameraImage& image, std::vector<world::Detection>& out) {
+  out.clear();
   const Eigen::Vector3d eye = image.extrinsics.to_world(Eigen::Vector3d::Zero());
   // Containers' parts by colour, joined before they are fitted.
   std::vector<std::vector<std::vector<Eigen::Vector3d>>> parts(class_of_colour_.size());

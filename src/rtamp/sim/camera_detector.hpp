@@ -30,7 +30,14 @@ class CameraDetector {
   // segmentation cannot tell apart are the caller's to refuse first, with their location
   // (check_scene_colours; Perception does, before any rendering context exists).
   CameraDetector(const world::Scenario& s, world::DepthNoise noise, CameraDetectorOptions options = {});
-  void detect(const CameraImage& image, std::vector<world::Detection>& out);
+  void detect(const CameraImage& image, std::vector<world::Detection>& out) {
+    segment(image);
+    fit(image, out);
+  }
+  // detect() in two steps: segment() reads the RGB image only (so another thread may
+  // meanwhile finish the depth image), fit() the depth image and segment()'s blobs.
+  void segment(const CameraImage& image);
+  void fit(const CameraImage& image, std::vector<world::Detection>& out);
   const ColourSegmenter& segmenter() const { return segmenter_; }
 
  private:

@@ -58,11 +58,19 @@ void CameraPerception::frame() {
 
 void CameraPerception::frame(std::size_t k) {
   Eye& eye = *eyes_.at(k);
-  rig_.render(eye.rig_index, eye.image, {.noise = true, .segmentation = false});
+  rig_.render(eye.rig_index, eye.image, {.noise = false, .segmentation = false});
   ++frames_;
   last_ = k;
   eye.seen = true;
-  eye.detector.detect(eye.image, detections_);
+  // The depth noise on the helper thread while this one segments the colours (the two
+  // touch different parts of the image); the same image as render(noise) gives.
+  auto noise = [&] { rig_.add_noise(eye.rig_index, eye.image); };
+  helper_.run(noise);
+  {
+    const HelperThread::Join join(helper_);  // even if segmenting throws
+    eye.detector.segment(eye.image);
+  }
+  eye.detector.fit(eye.image, detections_);
   eye.visibility.set_frame(eye.image);
   world::Gripper gripper;
   const Eigen::Vector3d tool = sim_.tool_pose().translation();

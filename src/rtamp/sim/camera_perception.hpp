@@ -26,6 +26,7 @@
 #include "rtamp/sim/camera_detector.hpp"
 #include "rtamp/sim/camera_rig.hpp"
 #include "rtamp/sim/depth_visibility.hpp"
+#include "rtamp/sim/helper_thread.hpp"
 #include "rtamp/sim/simulation.hpp"
 #include "rtamp/world/belief.hpp"
 
@@ -73,6 +74,7 @@ class CameraPerception {
   std::size_t frames_ = 0, last_ = 0;
   int held_ = -1;          // the simulation's thing in the gripper at the last frame
   std::string held_name_;  // its name in the belief
+  HelperThread helper_;    // a frame's depth noise while its colours are segmented
 };
 
 }  // namespace rtamp::sim

@@ -192,6 +192,13 @@ Extrinsics CameraRig::extrinsics(std::size_t camera) const {
   return e;
 }
 
+void CameraRig::add_noise(std::size_t camera, CameraImage& image) {
+  const world::Camera& c = cameras_.at(camera);
+  std::vector<float>& clean = impl_->clean;
+  clean.swap(image.depth);  // buffers trade places: no allocation once both have the size
+  apply_depth_noise(clean, image.depth, c.width, c.height, c.noise, rng_);
+}
+
 void CameraRig::render(std::size_t camera, CameraImage& out, CameraPasses passes) {
   const world::Camera& c = cameras_.at(camera);
   Impl& r = *impl_;
@@ -224,8 +231,8 @@ void CameraRig::render(std::size_t camera, CameraImage& out, CameraPasses passes
   out.intrinsics = intrinsics(camera);
   out.extrinsics = extrinsics(camera);
   const double zn = m->vis.map.znear * m->stat.extent, zf = m->vis.map.zfar * m->stat.extent;
-  linear_depth(r.depth, passes.noise ? r.clean : out.depth, w, h, !r.gl.pixel_store, zn, zf, c.near, c.far);
-  if (passes.noise) apply_depth_noise(r.clean, out.depth, w, h, c.noise, rng_);
+  linear_depth(r.depth, out.depth, w, h, !r.gl.pixel_store, zn, zf, c.near, c.far);
+  if (passes.noise) add_noise(camera, out);
   out.body.clear();
   if (!passes.segmentation) return;
   r.scene.flags[mjRND_SEGMENT] = 1;

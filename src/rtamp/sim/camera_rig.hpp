@@ -57,6 +57,11 @@ class CameraRig {
   Intrinsics intrinsics(std::size_t camera) const;
   Extrinsics extrinsics(std::size_t camera) const;  // at the simulation's current state
   void render(std::size_t camera, CameraImage& out, CameraPasses passes = {});
+  // The camera's depth noise applied to `image`'s clean depth (a render without the
+  // noise pass): render(noise) is render(no noise) then this. Touches only image.depth
+  // and the rig's noise state, never OpenGL, so another thread may meanwhile read the
+  // rest of the image.
+  void add_noise(std::size_t camera, CameraImage& image);
 
  private:
   struct Impl;
