@@ -24,32 +24,44 @@ namespace rtamp::episode {
 
 namespace {
 
-// Objects moved to random non-overlapping spots inside their initial location.
+// Objects moved to random non-overlapping spots inside their initial location. A layout
+// in which some object finds no free spot in 200 draws is drawn again, up to 20 times;
+// if none works out, the scenario's own layout stays. (Leaving that one object where the
+// scenario put it could make it overlap one already moved there: two blocks 2.5 cm apart
+// at the start, which the simulation then pushed apart.)
 void randomize_objects(world::Scenario& s, std::mt19937_64& rng) {
   const world::Geometry geometry(s);
   const world::Placement initial = world::initial_placement(s);
-  std::vector<world::Footprint> placed;
-  for (const auto& c : s.containers) placed.push_back({c.position[0], c.position[1], c.size[0], c.size[1]});
-  for (auto& o : s.objects) {
-    const std::string* loc = initial.location_of(o.name);
-    const auto fp = loc ? geometry.footprint_of(*loc) : std::nullopt;
-    if (!fp) continue;
-    const bool in_region = s.find_region(*loc) != nullptr;
-    for (int attempt = 0; attempt < 200; ++attempt) {
-      std::uniform_real_distribution<double> ux(fp->min_x() + o.size[0], fp->max_x() - o.size[0]);
-      std::uniform_real_distribution<double> uy(fp->min_y() + o.size[1], fp->max_y() - o.size[1]);
-      world::Footprint cand{ux(rng), uy(rng), o.size[0], o.size[1]};
-      bool clash = false;
-      for (const auto& f : placed) {
+  for (int layout = 0; layout < 20; ++layout) {
+    std::vector<world::Footprint> placed;
+    for (const auto& c : s.containers) placed.push_back({c.position[0], c.position[1], c.size[0], c.size[1]});
+    std::vector<world::Object> objects = s.objects;
+    bool complete = true;
+    for (auto& o : objects) {
+      const std::string* loc = initial.location_of(o.name);
+      const auto fp = loc ? geometry.footprint_of(*loc) : std::nullopt;
+      if (!fp) continue;
+      const bool in_region = s.find_region(*loc) != nullptr;
+      bool free = false;
+      for (int attempt = 0; attempt < 200 && !free; ++attempt) {
+        std::uniform_real_distribution<double> ux(fp->min_x() + o.size[0], fp->max_x() - o.size[0]);
+        std::uniform_real_distribution<double> uy(fp->min_y() + o.size[1], fp->max_y() - o.size[1]);
+        const world::Footprint cand{ux(rng), uy(rng), o.size[0], o.size[1]};
+        free = true;
         // In a region, keep clear of containers standing there and of other objects.
-        if (cand.overlaps(f, in_region ? 0.04 : 0.02)) clash = true;
+        for (const auto& f : placed) free = free && !cand.overlaps(f, in_region ? 0.04 : 0.02);
+        if (free) o.position[0] = cand.x, o.position[1] = cand.y;
       }
-      if (clash) continue;
-      o.position[0] = cand.x;
-      o.position[1] = cand.y;
-      break;
+      if (!free) {
+        complete = false;
+        break;
+      }
+      placed.push_back({o.position[0], o.position[1], o.size[0], o.size[1]});
     }
-    placed.push_back({o.position[0], o.position[1], o.size[0], o.size[1]});
+    if (complete) {
+      s.objects = std::move(objects);
+      return;
+    }
   }
 }
 
