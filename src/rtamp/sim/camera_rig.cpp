@@ -48,7 +48,7 @@ void linear_depth(const std::vector<std::uint32_t>& d, std::vector<float>& out, 
     float* o = out.data() + w * static_cast<std::size_t>(y);
     for (std::size_t x = 0; x < w; ++x) {  // branch-free: vectorised
       const double z = zn / (1 - static_cast<double>(static_cast<std::int32_t>(in[x] >> 8)) * k);
-      o[x] = (z >= near) & (z <= far) ? static_cast<float>(z) : 0.0f;
+      o[x] = ((z >= near) & (z <= far)) ? static_cast<float>(z) : 0.0f;
     }
   }
 }
