@@ -90,7 +90,7 @@ struct Frame {
         const float t = q < kTwo23 ? (q + kTwo23) - kTwo23 : q;
         const float rounded = (t - (t > q ? 1.0f : 0.0f)) * f.quantum;
         const float w = f.quantum > 0 ? rounded : v;
-        out[x] = (z > 0.0f) & !(edge & coin) & (v > 0.0f) ? w : 0.0f;
+        out[x] = ((z > 0.0f) & !(edge & coin) & (v > 0.0f)) ? w : 0.0f;
       }
     }
   }
