@@ -163,7 +163,10 @@ void Belief::match(double time, const std::vector<Detection>& seen) {
       t.state = ThingState::Visible;
       t.last_seen = time;
       t.missing_since = -1;
-      if (seen[j].complete || t.doubted) t.base = seen[j].base, t.yaw = seen[j].yaw, t.doubted = false;
+      if (seen[j].complete || t.doubted || t.provisional) {
+        t.base = seen[j].base, t.yaw = seen[j].yaw, t.doubted = false;
+        t.provisional = t.provisional && !seen[j].complete;
+      }
     }
   }
   // Whatever else is in the air is in the gripper: never a new thing.
@@ -364,6 +367,7 @@ void Belief::promote(double time, const std::vector<Detection>& seen) {
       }
       moved->base = c.seen.base;
       moved->yaw = c.seen.yaw;
+      moved->provisional = !c.seen.complete;
       moved->state = ThingState::Visible;
       moved->last_seen = time;
       moved->missing_since = -1;

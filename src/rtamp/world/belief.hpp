@@ -19,7 +19,8 @@
 //    within reidentify_within seconds (moved where the camera could not see), or else —
 //    after waiting up to hidden_wait while a thing of its class is occluded (it may be
 //    that one, moved) — a new thing. A thing not seen yet matches within
-//    first_sight_radius of where the scenario declares it.
+//    first_sight_radius of where the scenario declares it. A thing that a candidate seen
+//    only in part became is provisional: each sighting sets its pose until a complete one.
 //  - A grasp that closed on nothing is a look with the fingers: the thing believed where
 //    the tool point was (inside its box; a block before the tray it lies on) and not seen
 //    in that frame is believed removed at once (and, seen again within reidentify_within, is the same thing where it is seen).
@@ -67,6 +68,7 @@ struct BelievedThing {
   double missing_since = -1;  // world time it became Missing
   std::string on;             // the container it rested in at the last frame ("" if none)
   bool doubted = false;       // a grasp at this pose failed: the next sighting sets the pose
+  bool provisional = false;   // the pose is from partial sightings only: each sighting sets it
 };
 
 // What a camera could say of a spot where a thing is believed to be: it would be seen
