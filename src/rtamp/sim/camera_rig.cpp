@@ -60,6 +60,7 @@ void linear_depth(const std::vector<std::uint32_t>& d, std::vector<float>& out, 
 struct Gl {
   void (*read_pixels)(int, int, int, int, unsigned, unsigned, void*) = nullptr;
   void (*pixel_store)(unsigned, int) = nullptr;  // null: no GL_MESA_pack_invert
+  bool invert = false;                           // read top row first (pixel_store not null)
 };
 constexpr unsigned kDepthStencil = 0x84F9, kUnsignedInt24_8 = 0x84FA;  // GL_DEPTH_STENCIL, GL_UNSIGNED_INT_24_8
 constexpr unsigned kRgb = 0x1907, kUnsignedByte = 0x1401;               // GL_RGB, GL_UNSIGNED_BYTE
@@ -73,6 +74,7 @@ Gl load_gl() {  // with the context current
   const char* extensions = get_string ? reinterpret_cast<const char*>(get_string(kExtensions)) : nullptr;
   if (extensions && std::strstr(extensions, "GL_MESA_pack_invert"))
     gl.pixel_store = reinterpret_cast<decltype(gl.pixel_store)>(eglGetProcAddress("glPixelStorei"));
+  gl.invert = gl.pixel_store != nullptr;
   return gl;
 }
 
@@ -199,6 +201,10 @@ void CameraRig::add_noise(std::size_t camera, CameraImage& image) {
   apply_depth_noise(clean, image.depth, c.width, c.height, c.noise, rng_);
 }
 
+bool CameraRig::pack_invert() const { return impl_->gl.invert; }
+
+void CameraRig::set_pack_invert(bool on) { impl_->gl.invert = on && impl_->gl.pixel_store; }
+
 void CameraRig::render(std::size_t camera, CameraImage& out, CameraPasses passes) {
   const world::Camera& c = cameras_.at(camera);
   Impl& r = *impl_;
@@ -213,7 +219,7 @@ void CameraRig::render(std::size_t camera, CameraImage& out, CameraPasses passes
   mjr_render(viewport, &r.scene, &r.con);
   r.depth.resize(n);
   out.rgb.resize(n * 3);
-  if (r.gl.pixel_store) {  // top row first, straight into the image
+  if (r.gl.invert) {  // top row first, straight into the image
     mjr_setBuffer(mjFB_OFFSCREEN, &r.con);
     r.gl.pixel_store(kPackAlignment, 1);
     r.gl.pixel_store(kPackInvertMesa, 1);
@@ -231,7 +237,7 @@ void CameraRig::render(std::size_t camera, CameraImage& out, CameraPasses passes
   out.intrinsics = intrinsics(camera);
   out.extrinsics = extrinsics(camera);
   const double zn = m->vis.map.znear * m->stat.extent, zf = m->vis.map.zfar * m->stat.extent;
-  linear_depth(r.depth, out.depth, w, h, !r.gl.pixel_store, zn, zf, c.near, c.far);
+  linear_depth(r.depth, out.depth, w, h, !r.gl.invert, zn, zf, c.near, c.far);
   if (passes.noise) add_noise(camera, out);
   out.body.clear();
   if (!passes.segmentation) return;

@@ -57,6 +57,11 @@ class CameraRig {
   Intrinsics intrinsics(std::size_t camera) const;
   Extrinsics extrinsics(std::size_t camera) const;  // at the simulation's current state
   void render(std::size_t camera, CameraImage& out, CameraPasses passes = {});
+  // Whether the read-back takes the images top row first from the driver
+  // (GL_MESA_pack_invert, when it has it) or reads them bottom row first and turns them
+  // (the path for other drivers); the same images either way. On only if the driver has it.
+  bool pack_invert() const;
+  void set_pack_invert(bool on);
   // The camera's depth noise applied to `image`'s clean depth (a render without the
   // noise pass): render(noise) is render(no noise) then this. Touches only image.depth
   // and the rig's noise state, never OpenGL, so another thread may meanwhile read the
