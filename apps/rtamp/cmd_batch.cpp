@@ -25,6 +25,7 @@
 #include "rtamp/batch/trials.hpp"
 #include "rtamp/episode/episode.hpp"
 #include "rtamp/exec/plan_tree.hpp"
+#include "rtamp/exec/reactive_loop.hpp"
 #include "rtamp/task/validate.hpp"
 #include "rtamp/util/error.hpp"
 #include "rtamp/world/scenario_io.hpp"
@@ -58,6 +59,7 @@ struct BatchArgs {
   bool scripted = false;
   bool no_randomize = false;
   bool quiet = false;
+  std::vector<world::TaskChange> new_tasks;
   CLI::Option* change_opt = nullptr;
   CLI::Option* algo_opt = nullptr;
   CLI::Option* bt_opt = nullptr;
@@ -157,6 +159,12 @@ int run_batch(const BatchArgs& a) {
   opt.episode.loop.planner.cost = a.cost;
   opt.episode.randomize_initial = !a.no_randomize;
   opt.episode.scripted_operator = a.scripted;
+  opt.episode.loop.task_changes = a.new_tasks;
+  {  // the new tasks as every episode will have them: refused once, not run as failed trials
+    std::vector<world::TaskChange> all = a.new_tasks;
+    if (a.scripted) all.insert(all.begin(), scenario.task_changes.begin(), scenario.task_changes.end());
+    (void)exec::check_task_schedule(scenario, all, a.max_time);
+  }
 
   // Rows are appended as episodes finish (so a killed batch keeps what it
   // did), then the file is rewritten in canonical order at the end.
@@ -291,6 +299,7 @@ rtamp::cli::Registrar reg{
       rtamp::cli::add_real(sub, "--max-time", a->max_time, {0, 1e7, true},
                            "Seconds of world time before an episode gives up");
       rtamp::cli::add_choice(sub, "--cost", a->cost, rtamp::cli::cost_model_choices(), "Planner motion-cost model:");
+      rtamp::cli::add_new_task(sub, a->new_tasks);
       sub.add_option("--log-dir", a->log_dir, "Write each episode's JSON Lines log into this directory");
       sub.add_flag("--mcap", a->mcap,
                    "Also write each episode as MCAP into --log-dir, beside its log (the same name, .mcap; zstd; "

@@ -92,6 +92,9 @@ rtamp::cli::Registrar reg{
         std::unique_ptr<serve::Replay> replay;
         serve::RequestHandler* handler = nullptr;
         if (!o->replay.empty()) {
+          if (!episode_options.loop.task_changes.empty())
+            throw Error("--new-task: a replay shows the tasks of a finished episode as they were given; new tasks "
+                        "are for live episodes");
           serve::ReplayOptions ro;
           ro.speed = o->speed;
           ro.paused = o->paused;

@@ -56,6 +56,7 @@ void add_episode_options(CLI::App& app, EpisodeArgs& a, const std::string& log_h
   add_integer(app, "--cycles", loop.cycles, 0, 1000000,
               "Recurring tasks (plans that cycle through moves): succeed after K completed cycles "
               "(0: run until --max-time)");
+  add_new_task(app, loop.task_changes);
   app.add_flag("--random-initial", o.randomize_initial, "Shuffle objects inside their initial locations");
   app.add_flag("--no-operator{false}", o.scripted_operator, "Ignore the scenario's scripted operator");
   add_real(app, "--max-time", loop.max_time, {0, 1e7, true}, "Give up after this many seconds of world time");

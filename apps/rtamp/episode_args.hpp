@@ -23,7 +23,7 @@ struct EpisodeArgs {
 };
 
 // SCENARIO, --world, --algo, --bt, --cost, --planning, --seed, --change,
-// --rate, --failures, --cycles, --random-initial, --no-operator, --max-time,
+// --rate, --failures, --cycles, --new-task, --random-initial, --no-operator, --max-time,
 // --log (described by `log_help`), --mcap, --mcap-compression, --mcap-image-period, --trees.
 void add_episode_options(CLI::App& app, EpisodeArgs& args, const std::string& log_help);
 // --mcap-image-period S (>= 0 or inf), into `target` (also `rtamp batch`'s).

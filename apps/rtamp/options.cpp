@@ -150,6 +150,37 @@ CLI::Option* add_integer_with(CLI::App& app, const std::string& name, std::funct
   return opt;
 }
 
+world::TaskChange parse_new_task(std::string_view text) {
+  const std::size_t at = text.find('@');
+  if (at == std::string_view::npos)
+    throw Error("expected TIME@LTL, a new task at a world time (e.g. '12@F G all_in_r3'), found " + shown(text));
+  world::TaskChange c;
+  try {
+    c.time = parse_real(text.substr(0, at), RealRange{});
+  } catch (const Error& e) {
+    throw Error("the time before '@': " + e.message());
+  }
+  c.task = std::string(text.substr(at + 1));
+  if (c.task.find_first_not_of(" \t\r\n") == std::string::npos)
+    throw Error("no formula after '@' (e.g. '12@F G all_in_r3')");
+  c.task_where = SourceLocation{"--new-task", 1, static_cast<int>(at) + 2};
+  c.where = SourceLocation{"--new-task", 1, 1};
+  c.by = "command line";
+  return c;
+}
+
+CLI::Option* add_new_task(CLI::App& app, std::vector<world::TaskChange>& target) {
+  auto* opt = app.add_option_function<std::vector<std::string>>(
+      "--new-task",
+      [&target](const std::vector<std::string>& v) {
+        for (const std::string& s : v) as_validation("--new-task", [&] { target.push_back(parse_new_task(s)); });
+      },
+      "A new task at world time TIME (repeatable): from then on the episode works towards LTL instead, its "
+      "propositions the scenario's or quoted expressions (docs/exec.md \"A new task\")");
+  opt->type_name("TIME@LTL")->allow_extra_args(false);
+  return opt;
+}
+
 CLI::Option* add_seed(CLI::App& app, const std::string& name, std::uint64_t& target, const std::string& description) {
   const std::string key = name.substr(0, name.find(','));
   auto* opt = app.add_option_function<std::string>(

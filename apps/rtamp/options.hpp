@@ -23,6 +23,7 @@
 #include <vector>
 
 #include "rtamp/util/names_table.hpp"
+#include "rtamp/world/scenario.hpp"
 
 namespace rtamp::cli {
 
@@ -85,6 +86,14 @@ std::vector<Choice> mcap_compression_choices();
 
 // The positional SCENARIO: a YAML file or a built-in name (the help lists them all).
 CLI::Option* add_scenario(CLI::App& app, std::string& target);
+
+// `TIME@LTL` (--new-task): a new task at world time TIME (finite, >= 0) by
+// "command line", its task located as "--new-task:1:COL". Throws rtamp::Error
+// (without the option name). The formula is checked later, with the scenario
+// (exec::check_task_schedule).
+world::TaskChange parse_new_task(std::string_view text);
+// Repeatable --new-task TIME@LTL into `target`.
+CLI::Option* add_new_task(CLI::App& app, std::vector<world::TaskChange>& target);
 
 // Output files: throws rtamp::Error "OPTION: cannot write 'PATH': WHY" unless
 // `path` can be created or replaced (its directory exists and is writable, and

@@ -107,6 +107,9 @@ Episode::Episode(const world::Scenario& input, const EpisodeOptions& opt, const 
   robot::register_ik_cost_model();  // the episode layer brings the robot's cost model
   lo.seed = opt.seed;
   lo.world_name = info.name;
+  // The operator script's new tasks come first (unless ignored), then the caller's (--new-task).
+  if (opt.scripted_operator)
+    lo.task_changes.insert(lo.task_changes.begin(), scenario.task_changes.begin(), scenario.task_changes.end());
   // A camera's belief may lag or lose a thing for a moment: the task is judged on a settled percept.
   if (opt.world_settings.perception == "camera") lo.settle = std::max(lo.settle, exec::kCameraSettle);
   loop_ = std::make_unique<exec::ReactiveLoop>(wrapper_ ? *wrapper_ : *seen, scenario, lo);

@@ -62,7 +62,9 @@ struct EpisodeOptions {
   world::PersonOptions person;
   bool scripted_operator = true;
   // The loop: the planner (algorithm, cost model), the tree's form, planning
-  // mode, limits, the interrupt flag. Its world_name is the world's.
+  // mode, limits, new tasks at given times, the interrupt flag. Its
+  // world_name is the world's; the scenario's scripted new tasks are put
+  // before its task_changes unless scripted_operator is false.
   exec::LoopOptions loop;
   EpisodeOutputs outputs;
 };

@@ -4,6 +4,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "rtamp/automata/dot_writer.hpp"
 #include "rtamp/util/error.hpp"
 #include "rtamp/util/json_text.hpp"
 
@@ -17,6 +18,32 @@ json placement_json(const world::Placement& p) {
   json j = json::object();
   for (const auto& [name, thing] : p.things) j[name] = thing.location;
   return j;
+}
+
+json tasks_json(const std::vector<TaskOutcome>& tasks) {
+  json out = json::array();
+  for (const TaskOutcome& t : tasks)
+    out.push_back({{"time", t.time},
+                   {"task", t.task},
+                   {"by", t.by},
+                   {"automaton_states", t.automaton_states},
+                   {"cycles", t.cycles},
+                   {"outcome", t.outcome}});
+  return out;
+}
+
+json automaton_value(const automata::Automaton& ba) {
+  json states = json::array();
+  for (std::uint32_t q = 0; q < ba.num_states(); ++q)
+    states.push_back({{"id", q}, {"initial", q == ba.initial}, {"accepting", ba.is_accepting_state(q)}});
+  json edges = json::array();
+  for (std::uint32_t q = 0; q < ba.num_states(); ++q)
+    for (const auto& e : ba.edges[q])
+      edges.push_back({{"from", q},
+                       {"to", e.dst},
+                       {"label", automata::cube_to_string(e.guard, ba.atoms)},
+                       {"accepting", !ba.state_based && e.marks == ba.all_marks()}});
+  return {{"states", states}, {"edges", edges}, {"state_based", ba.state_based}};
 }
 
 json metrics_json(const EpisodeMetrics& m) {
@@ -35,6 +62,7 @@ json metrics_json(const EpisodeMetrics& m) {
           {"actions_succeeded", m.actions_succeeded},
           {"actions_failed", m.actions_failed},
           {"cycles", m.cycles},
+          {"tasks", tasks_json(m.tasks)},
           {"run_length", m.run_length},
           {"world_time", m.world_time},
           {"wall_seconds", m.wall_seconds},
@@ -45,6 +73,10 @@ json metrics_json(const EpisodeMetrics& m) {
 }  // namespace
 
 std::string to_json(const EpisodeMetrics& m, int indent) { return metrics_json(m).dump(indent); }
+
+std::string automaton_json(const automata::Automaton& ba) {
+  return automaton_value(ba).dump(-1, ' ', false, json::error_handler_t::replace);
+}
 
 EpisodeLog::EpisodeLog(const std::string& path) : out_(path), path_(path) {
   if (!out_) throw Error("cannot write the episode log '" + path + "'");
@@ -145,6 +177,26 @@ void EpisodeLog::on_tree_change(double t, const ReconfigurationReport& r, const 
 
 void EpisodeLog::on_cycle(double t, int completed) {
   write(t, json{{"ev", "cycle"}, {"completed", completed}}.dump());
+}
+
+void EpisodeLog::on_task(double t, const TaskEvent& e) {
+  json j{{"ev", "task"}, {"task", e.change.task}, {"by", e.change.by}, {"applied", e.applied}};
+  if (!e.change.propositions.empty()) {
+    json props = json::object();
+    for (const world::Proposition& p : e.change.propositions) props[p.name] = p.text;
+    j["propositions"] = props;
+  }
+  if (e.applied && e.automaton) {
+    j["automaton_states"] = e.automaton->num_states();
+    j["automaton"] = automaton_value(*e.automaton);
+  } else {
+    j["refused"] = e.refused;
+  }
+  write(t, j.dump(-1, ' ', false, json::error_handler_t::replace));
+}
+
+void EpisodeLog::on_redirect(double t, const std::string& action, const std::string& rule) {
+  write(t, json{{"ev", "redirect"}, {"action", action}, {"rule", rule}}.dump());
 }
 
 void EpisodeLog::on_tick(double t, bt::Status status, const std::string& running) {

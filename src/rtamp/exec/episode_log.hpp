@@ -25,6 +25,10 @@ namespace rtamp::exec {
 
 // The metrics as one JSON object (`indent` < 0: one line).
 std::string to_json(const EpisodeMetrics& m, int indent = -1);
+// An automaton as the page draws it: {"states": [{id, initial, accepting}],
+// "edges": [{from, to, label, accepting}], "state_based": bool} (the `hello`
+// message and the log's `task` record).
+std::string automaton_json(const automata::Automaton& ba);
 
 class EpisodeLog final : public EpisodeObserver {
  public:
@@ -61,6 +65,8 @@ class EpisodeLog final : public EpisodeObserver {
   void on_plan(double t, const PlanEvent&) override;
   void on_tree_change(double t, const ReconfigurationReport&, const PlanTree&, bool deferred) override;
   void on_cycle(double t, int completed) override;
+  void on_task(double t, const TaskEvent&) override;
+  void on_redirect(double t, const std::string& action, const std::string& rule) override;
   void on_tick(double t, bt::Status, const std::string& running) override;
   void on_end(double t, const EpisodeMetrics&, const world::Placement&) override;
 

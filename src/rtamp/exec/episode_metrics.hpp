@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace rtamp::exec {
 
@@ -26,6 +27,17 @@ enum class EndReason {
 };
 const char* to_string(EndReason r);
 
+// One task that was in force during the episode: the scenario's, then each
+// new one (docs/exec.md "A new task").
+struct TaskOutcome {
+  double time = 0;                   // world seconds at which it took effect
+  std::string task;                  // the formula
+  std::string by;                    // who gave it: scenario, script, command line, page, api, ...
+  std::size_t automaton_states = 0;  // of its automaton
+  int cycles = 0;                    // cycles completed while it was in force
+  std::string outcome;               // "superseded" (a newer task replaced it), else the episode's end
+};
+
 struct EpisodeMetrics {
   bool success = false;
   EndReason end = EndReason::None;
@@ -39,7 +51,8 @@ struct EpisodeMetrics {
   int interventions = 0;                  // reported by the world, applied or refused
   int interventions_applied = 0, interventions_refused = 0;
   int actions_succeeded = 0, actions_failed = 0;
-  int cycles = 0;                         // completed cycles of a recurring task
+  int cycles = 0;                         // completed cycles of the recurring task in force
+  std::vector<TaskOutcome> tasks;         // every task in force, in order (the scenario's first)
   std::size_t run_length = 0;             // states of the observed run
   double world_time = 0;                  // world seconds at the end
   double wall_seconds = 0;

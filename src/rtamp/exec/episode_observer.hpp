@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "rtamp/automata/automaton.hpp"
 #include "rtamp/bt/status.hpp"
 #include "rtamp/exec/episode_metrics.hpp"
 #include "rtamp/exec/plan_tree.hpp"
@@ -18,6 +19,7 @@
 #include "rtamp/plan/action_tuple.hpp"
 #include "rtamp/plan/plan.hpp"
 #include "rtamp/world/placement.hpp"
+#include "rtamp/world/scenario.hpp"
 
 namespace rtamp::exec {
 
@@ -34,6 +36,14 @@ struct PlanEvent {
   std::vector<std::uint32_t> automaton_states;  // the tracked states it started from
   world::Placement start;                       // the state it started from (its first move's pre-state)
   std::string hand;                             // the hand's location there ("" home)
+};
+
+// A new task was taken in (applied) or refused (docs/exec.md "A new task").
+struct TaskEvent {
+  const world::TaskChange& change;          // the formula, its propositions, who gave it
+  bool applied = false;
+  std::string refused;                      // why, when not applied
+  const automata::Automaton* automaton = nullptr;  // the new task's (applied)
 };
 
 class EpisodeObserver {
@@ -59,6 +69,10 @@ class EpisodeObserver {
   // A tree change was applied (deferred: it had to wait for a running move), or deferred.
   virtual void on_tree_change(double /*t*/, const ReconfigurationReport&, const PlanTree&, bool /*deferred*/) {}
   virtual void on_cycle(double /*t*/, int /*completed*/) {}
+  // A new task was given (applied or refused).
+  virtual void on_task(double /*t*/, const TaskEvent&) {}
+  // The running move was halted because finishing it would break the new task (`rule` says why).
+  virtual void on_redirect(double /*t*/, const std::string& /*action*/, const std::string& /*rule*/) {}
   virtual void on_tick(double /*t*/, bt::Status, const std::string& /*running*/) {}
   virtual void on_end(double /*t*/, const EpisodeMetrics&, const world::Placement& /*final_placement*/) {}
 };

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "rtamp/ltl/lasso.hpp"
+#include "rtamp/task/validate.hpp"
 #include "rtamp/util/error.hpp"
 #include "rtamp/util/format.hpp"
 #include "rtamp/world/geometry.hpp"
@@ -46,6 +47,19 @@ const LoopOptions& check_loop_options(const LoopOptions& o) {
   if (o.max_failures_per_move < 1) fail("max_failures_per_move", "must be >= 1", o.max_failures_per_move);
   if (o.cycles < 0) fail("cycles", "must be >= 0 (0: no cycle count)", o.cycles);
   return o;
+}
+
+std::vector<world::TaskChange> check_task_schedule(const world::Scenario& s, std::vector<world::TaskChange> changes,
+                                                  double max_time) {
+  std::stable_sort(changes.begin(), changes.end(),
+                   [](const world::TaskChange& a, const world::TaskChange& b) { return a.time < b.time; });
+  task::validate_task_changes(s, changes);
+  for (const world::TaskChange& c : changes)
+    if (std::isfinite(max_time) && c.time >= max_time)
+      throw Error("new task at t = " + format_number(c.time) + " s: the episode ends before it (max_time = " +
+                      format_number(max_time) + " s of world time)",
+                  c.where);
+  return changes;
 }
 
 namespace {
@@ -110,6 +124,22 @@ ReactiveLoop::ReactiveLoop(World& world, const world::Scenario& scenario, LoopOp
                                      std::make_shared<WorldClock>(world_));
   metrics_.seed = options_.seed;
   for (const auto& [name, thing] : world::initial_placement(scenario_).things) last_known_[name] = thing.location;
+  // New tasks at world times: checked now, in order, each before the time limit.
+  schedule_ = check_task_schedule(scenario_, options_.task_changes, options_.max_time);
+  task_vocabulary_ = scenario_;
+}
+
+void ReactiveLoop::set_task(world::TaskChange change) {
+  std::lock_guard<std::mutex> lock(inbox_mutex_);
+  change.time = now_.load();
+  if (inbox_closed_) throw Error("the episode has ended: a new task can no longer be given");
+  try {
+    task_vocabulary_ = task::with_task(task_vocabulary_, change);
+  } catch (const Error& e) {
+    task_refusals_.emplace_back(change, e.message());
+    throw;
+  }
+  task_inbox_.push_back(std::move(change));
 }
 
 ReactiveLoop::~ReactiveLoop() {
@@ -146,6 +176,23 @@ void ReactiveLoop::record_run_step(const world::Placement& next, bool things_cha
     progress_ = doubtful_->progress;
     doubtful_.reset();
     for (auto* o : observers_) o->on_progress(world_.time(), symbolic_, progress_.states());
+    return;
+  }
+  if (task_doubt_) {
+    // A new task judged impossible on an unsettled percept: it is judged on
+    // the percept as it settles, from the state it shows now.
+    symbolic_ = next;
+    if (things_changed) apply_thing_changes(added, removed);
+    run_.push_back(symbolic_);
+    run_letters_.push_back(letter(symbolic_));
+    task_from_ = run_.size() - 1;
+    progress_.reset();
+    progress_.at(run_letters_.back());
+    for (auto* o : observers_) o->on_progress(world_.time(), symbolic_, progress_.states());
+    if (!progress_.dead() && progress_.can_still_accept()) {
+      task_doubt_ = false;
+      request_plan("the perceived placement changed after a new task");
+    }
     return;
   }
   const plan::TaskProgress before = progress_;
@@ -200,17 +247,32 @@ void ReactiveLoop::apply_thing_changes(const std::vector<std::string>& added,
 }
 
 // " (after the intervention at t = T: WHAT)" when a person's intervention
-// changed the world since the last plan, else "".
+// changed the world since the last plan, " (the task given at t = T by WHO:
+// TASK)" when the task in force is not the scenario's, both, or "".
 std::string ReactiveLoop::caused_by() const {
-  if (!last_intervention_) return {};
-  return " (after the intervention at t = " + seconds_text(last_intervention_->time) + ": " +
-         last_intervention_->what.to_string() + ")";
+  std::string out;
+  if (metrics_.tasks.size() > 1) {
+    const TaskOutcome& t = metrics_.tasks.back();
+    out += " (the task given at t = " + seconds_text(t.time) + " by " + t.by + ": " + t.task + ")";
+  }
+  if (last_intervention_)
+    out += " (after the intervention at t = " + seconds_text(last_intervention_->time) + ": " +
+           last_intervention_->what.to_string() + ")";
+  return out;
 }
 
 // ---- the episode ----------------------------------------------------------------
 
 void ReactiveLoop::finish(EndReason why, std::string reason, bool success) {
   if (ended()) return;
+  {
+    std::lock_guard<std::mutex> lock(inbox_mutex_);
+    inbox_closed_ = true;
+  }
+  if (!metrics_.tasks.empty()) {
+    metrics_.tasks.back().outcome = to_string(why);
+    metrics_.tasks.back().cycles = metrics_.cycles;
+  }
   metrics_.end = why;
   metrics_.success = success;
   metrics_.reason = std::move(reason);
@@ -267,6 +329,7 @@ void ReactiveLoop::begin() {
   info.world = options_.world_name;
   info.seed = options_.seed;
   for (auto* o : observers_) o->on_begin(info);
+  metrics_.tasks.push_back(TaskOutcome{world_.time(), scenario_.task, "scenario", planner_->automaton().num_states()});
 
   // The first observation: things the world has beyond the scenario join the TS.
   world::Placement symbolic;
@@ -285,6 +348,7 @@ void ReactiveLoop::begin() {
     finish(EndReason::Unsatisfiable, "the task cannot be satisfied from the initial state");
     return;
   }
+  now_.store(world_.time());
 
   // The first plan: the arm waits; its time is charged to world time — after
   // the plan is installed (its records carry the time planning began), so a
@@ -446,6 +510,9 @@ bool ReactiveLoop::step() {
     }
     perceive();
     if (ended()) return false;
+    now_.store(world_.time());
+    take_task_changes();
+    if (ended()) return false;
 
     // Tick the tree (it waits while the arm makes itself safe after a halt).
     if (!world_.busy()) {
@@ -455,7 +522,7 @@ bool ReactiveLoop::step() {
     // While a replan is pending, no new step of the old plan starts: a running
     // move is still polled, an idle tree waits. A tree that has succeeded waits
     // for the completion check (once the arm is free), not for another pass.
-    if (doubtful_ && settled()) {
+    if ((doubtful_ || task_doubt_) && settled()) {
       finish_violated();
       return false;
     }
@@ -464,7 +531,7 @@ bool ReactiveLoop::step() {
       request_plan("the perceived placement has settled");
       if (ended()) return false;
     }
-    tree_->hold(pending_.has_value() || cycles_done_ || replan_when_settled_ || doubtful_);
+    tree_->hold(pending_.has_value() || cycles_done_ || replan_when_settled_ || doubtful_ || task_doubt_);
     if (cycles_done_ && runner_->current().action.empty() && !world_.busy() && settled()) {
       finish(EndReason::Cycles, "completed " + std::to_string(metrics_.cycles) + " cycles", true);
       return false;
@@ -516,8 +583,9 @@ void ReactiveLoop::advance() {
                                                           : 0.0));
     }
     for (const auto& [name, since] : outside_since_) next = std::min(next, since + options_.outside_grace + 1e-6);
+    if (next_task_change_ < schedule_.size()) next = std::min(next, std::max(now, schedule_[next_task_change_].time));
     // Waiting for the percept to settle, the tree is ticked as if the arm were free.
-    const bool settling = (tree_done_ || replan_when_settled_ || doubtful_) && !settled();
+    const bool settling = (tree_done_ || replan_when_settled_ || doubtful_ || task_doubt_) && !settled();
     const bool arm_free = runner_->current().action.empty() && !world_.busy() && (!tree_done_ || settling);
     if (arm_free) next = std::min(next, now + options_.tick_period);
     dt = std::max(0.0, next - now);
@@ -741,13 +809,103 @@ void ReactiveLoop::finish_violated() {
          "and can still be accepted" + caused_by());
 }
 
+// ---- new tasks ------------------------------------------------------------------
+
+void ReactiveLoop::take_task_changes() {
+  std::vector<world::TaskChange> due;
+  std::vector<std::pair<world::TaskChange, std::string>> refused;
+  {
+    std::lock_guard<std::mutex> lock(inbox_mutex_);
+    refused.swap(task_refusals_);
+    due.swap(task_inbox_);
+  }
+  const double now = world_.time();
+  for (const auto& [c, why] : refused)
+    for (auto* o : observers_) o->on_task(now, TaskEvent{c, false, why, nullptr});
+  std::vector<world::TaskChange> scheduled;
+  while (next_task_change_ < schedule_.size() && schedule_[next_task_change_].time <= now + 1e-9)
+    scheduled.push_back(schedule_[next_task_change_++]);
+  due.insert(due.begin(), scheduled.begin(), scheduled.end());
+  for (world::TaskChange& c : due) {
+    apply_task_change(std::move(c));
+    if (ended()) return;
+  }
+}
+
+bool ReactiveLoop::running_move_defeats_task() {
+  const Starts st = starts();
+  if (!st.ahead) return false;
+  plan::TaskProgress p = progress_;
+  p.leave(letter(symbolic_));
+  p.at(letter(st.ahead->placement));
+  return p.dead() || !p.can_still_accept();
+}
+
+void ReactiveLoop::apply_task_change(world::TaskChange c) {
+  const double now = world_.time();
+  c.time = now;
+  try {
+    (void)task::with_task(planner_->scenario(), c);  // e.g. a proposition another task change redefined
+  } catch (const Error& e) {
+    for (auto* o : observers_) o->on_task(now, TaskEvent{c, false, e.message(), nullptr});
+    return;
+  }
+  wait_for_worker();
+  pending_.reset();  // a plan for the old task
+  planner_->set_task(c);
+  scenario_.task = planner_->scenario().task;
+  scenario_.propositions = planner_->scenario().propositions;
+  TaskOutcome& before = metrics_.tasks.back();
+  before.outcome = "superseded";
+  before.cycles = metrics_.cycles;
+  metrics_.tasks.push_back(TaskOutcome{now, c.task, c.by, planner_->automaton().num_states()});
+
+  // Progress restarts at the new automaton's initial state on the current state.
+  rebuild_labeler();
+  progress_ = plan::TaskProgress(planner_->automaton());
+  progress_.reset();
+  run_letters_.back() = letter(symbolic_);
+  progress_.at(run_letters_.back());
+  task_from_ = run_.size() - 1;
+  cycle_marks_.clear();
+  metrics_.cycles = 0;
+  cycles_done_ = recurring_ = false;
+  doubtful_.reset();
+  task_doubt_ = replan_when_settled_ = tree_done_ = false;
+  for (auto* o : observers_) o->on_task(now, TaskEvent{c, true, {}, &planner_->automaton()});
+  for (auto* o : observers_) o->on_progress(now, symbolic_, progress_.states());
+
+  const std::string given = "the new task given at t = " + seconds_text(now) + " by " + c.by + " (" + c.task + ")";
+  if (progress_.dead() || !progress_.can_still_accept()) {
+    if (settled()) {
+      finish(EndReason::Unsatisfiable, given + " cannot be satisfied from the current state");
+      return;
+    }
+    task_doubt_ = true;  // judged once the percept has settled (record_run_step, step)
+    return;
+  }
+  if (progress_.satisfied_by_staying(run_letters_.back()) && settled() && outside_since_.empty()) {
+    finish(EndReason::TaskDone, "task done: the current state satisfies " + given, true);
+    return;
+  }
+  if (running_move_defeats_task()) {
+    const std::string action = runner_->current().action;
+    tree_->tree().halt();  // the world puts its thing back (at its source, or another valid place)
+    for (auto* o : observers_)
+      o->on_redirect(now, action,
+                     "finishing it would leave the new task no accepting future: halted, its thing put back "
+                     "where the new task allows (where it was picked, or another valid place)");
+  }
+  request_plan("a new task was given: " + c.task);
+}
+
 bool ReactiveLoop::settled() const {
   return world_.time() - percept_changed_at_ >= options_.settle - 1e-9 && !world_.confirming();
 }
 
 bool ReactiveLoop::count_cycle() {
   if (!recurring_ || cycles_done_) return false;
-  const std::size_t from = cycle_marks_.empty() ? 0 : cycle_marks_.back();
+  const std::size_t from = cycle_marks_.empty() ? task_from_ : cycle_marks_.back();
   if (!cycle_satisfies(from)) return false;
   ++metrics_.cycles;
   cycle_marks_.push_back(run_.size() - 1);
@@ -757,10 +915,11 @@ bool ReactiveLoop::count_cycle() {
 }
 
 // Some earlier visit j >= from of the current state closes a cycle
-// run[j..end) such that run[0..j) · run[j..end)^ω satisfies the task
-// (the direct LTL semantics).
+// run[j..end) such that run[task_from..j) · run[j..end)^ω satisfies the task
+// in force (the direct LTL semantics; the run before the task took effect
+// does not count).
 bool ReactiveLoop::cycle_satisfies(std::size_t from) const {
-  if (!planner_->formula() || run_.size() < 2) return false;
+  if (!planner_->formula() || run_.size() < task_from_ + 2) return false;
   const std::size_t end = run_.size() - 1;
   const auto& atoms = planner_->automaton().atoms;
   auto word_of = [&](automata::Letter l) {
@@ -772,7 +931,7 @@ bool ReactiveLoop::cycle_satisfies(std::size_t from) const {
   for (std::size_t j = end; j-- > from;) {
     if (run_[j] != run_[end]) continue;
     ltl::LassoWord w;
-    for (std::size_t i = 0; i < j; ++i) w.prefix.push_back(word_of(run_letters_[i]));
+    for (std::size_t i = task_from_; i < j; ++i) w.prefix.push_back(word_of(run_letters_[i]));
     for (std::size_t i = j; i < end; ++i) w.cycle.push_back(word_of(run_letters_[i]));
     if (ltl::holds(planner_->formula(), w)) return true;
   }

@@ -30,6 +30,22 @@
 // way to satisfy the task (no tracked state can reach acceptance), the
 // episode ends with EndReason::Unsatisfiable at once.
 //
+// A new task (the paper's "new temporal logic specifications";
+// docs/exec.md "A new task"): scheduled in LoopOptions::task_changes, or
+// given at run time by set_task (thread-safe, through an inbox). It takes
+// effect at the first step at or after its time: the planner translates it
+// (keeping the TS and the motion-cost cache), task progress restarts at the
+// new automaton's initial state on the current state, and the run is judged
+// for it from that state on (task_from()). A running move is finished unless
+// finishing it would leave the new task no accepting future: then it is
+// halted (the world puts its thing back) and the redirection is reported
+// (on_redirect, with the rule). A task the current state already satisfies
+// ends the episode (task done), one it can no longer satisfy ends it
+// (unsatisfiable), naming the task change; otherwise the loop replans and
+// Algorithm 2 keeps the subtrees the new plan shares. Cycles count for the
+// task in force. A task change the loop refuses (a proposition redefined
+// since it was checked) is reported and the episode goes on.
+//
 // Failures. A move that failed undisturbed is remembered with the state it
 // started from: every plan from that state avoids it (Planner::forbid_move)
 // while some plan can, and when max_failures_per_move failures of the same
@@ -52,6 +68,7 @@
 #include <future>
 #include <map>
 #include <memory>
+#include <mutex>
 #include <optional>
 #include <string>
 #include <vector>
@@ -91,7 +108,11 @@ struct LoopOptions {
   // camera's belief) settles first. 0: at once. Never settled while the world
   // is confirming a change it has seen (World::confirming).
   double settle = 0;
-  int cycles = 0;              // recurring tasks: succeed after this many cycles (0: never)
+  int cycles = 0;              // recurring tasks: succeed after this many cycles of the task in force (0: never)
+  // New tasks at world times (the scenario's operator script, --new-task),
+  // checked by the constructor (task::validate_task_changes; each time before
+  // max_time) and taken in order at the first step at or after each time.
+  std::vector<world::TaskChange> task_changes;
   std::uint64_t seed = 0;      // reported in the metrics
   std::string world_name;      // reported to observers ("mujoco", "symbolic", ...)
   // Polled every step; nonzero ends the episode (EndReason::Interrupted). For
@@ -106,6 +127,13 @@ struct LoopOptions {
 // Returns `o`. The loop's constructor calls it; callers that open outputs
 // first (episode::run_episode) call it before.
 const LoopOptions& check_loop_options(const LoopOptions& o);
+
+// New tasks for an episode of `s` that ends at `max_time`: sorted by time
+// (stable), each checked on the scenario the ones before it leave
+// (task::validate_task_changes) and due before max_time. Returns them sorted;
+// throws rtamp::Error naming the first bad one. The constructor calls it.
+std::vector<world::TaskChange> check_task_schedule(const world::Scenario& s, std::vector<world::TaskChange> changes,
+                                                  double max_time);
 
 class ReactiveLoop {
  public:
@@ -123,6 +151,12 @@ class ReactiveLoop {
   bool step();
   // Steps until the episode ends; returns its metrics.
   const EpisodeMetrics& run();
+  // A new task, taken in at the next step (docs/exec.md "A new task").
+  // Thread-safe. Checked at once against the scenario as the tasks accepted
+  // so far left it (task::with_task; its `time` is ignored): rtamp::Error
+  // naming what is wrong — the refusal is also reported to observers (on_task)
+  // at the next step — or if the episode has ended. `change.by` says who gave it.
+  void set_task(world::TaskChange change);
   // Ends the episode at the next step (thread- and signal-safe).
   void stop(EndReason why = EndReason::Interrupted) { stop_.store(static_cast<int>(why)); }
 
@@ -133,6 +167,9 @@ class ReactiveLoop {
   const std::vector<world::Placement>& observed_run() const { return run_; }
   const std::vector<std::size_t>& cycle_marks() const { return cycle_marks_; }
   const plan::TaskProgress& progress() const { return progress_; }
+  // The run index at which the task in force took effect (0: the scenario's
+  // task); the run is judged for it from there (cycle marks count from there).
+  std::size_t task_from() const { return task_from_; }
   const PlanTree& tree() const { return *tree_; }
   const plan::Planner& planner() const { return *planner_; }
   const LoopOptions& options() const { return options_; }
@@ -191,6 +228,11 @@ class ReactiveLoop {
   void finish_violated();  // ends: the run so far leaves the task no accepting future
   bool cycle_satisfies(std::size_t from) const;
   void wait_for_worker();
+  // New tasks: the scheduled ones that are due and the inbox, in order.
+  void take_task_changes();
+  void apply_task_change(world::TaskChange c);
+  // Whether the running move, finished, would leave the task no accepting future.
+  bool running_move_defeats_task();
 
   World& world_;
   world::Scenario scenario_;  // with the things currently present
@@ -241,6 +283,16 @@ class ReactiveLoop {
   std::map<std::string, std::map<std::string, FailedMove>> failed_moves_;
   std::string move_start_state_;              // state_key of the run when the running move began
   std::optional<WorldEvent> last_intervention_;  // the last applied one (named by an end it caused)
+  std::vector<world::TaskChange> schedule_;  // options_.task_changes, in time order
+  std::size_t next_task_change_ = 0;
+  std::mutex inbox_mutex_;                   // guards the three below (set_task's thread)
+  std::vector<world::TaskChange> task_inbox_;
+  std::vector<std::pair<world::TaskChange, std::string>> task_refusals_;  // refused by set_task, to report
+  world::Scenario task_vocabulary_;          // the scenario as the accepted tasks leave it
+  bool inbox_closed_ = false;                // the episode has ended
+  std::size_t task_from_ = 0;
+  bool task_doubt_ = false;  // a new task judged impossible on a percept not settled yet
+  std::atomic<double> now_{0};  // world time at the last step (set_task's thread reads it)
   std::atomic<int> stop_{0};
   EpisodeMetrics metrics_;
   std::chrono::steady_clock::time_point wall0_;

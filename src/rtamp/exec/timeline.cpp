@@ -110,6 +110,20 @@ void Timeline::on_tree_change(double t, const ReconfigurationReport& r, const Pl
 
 void Timeline::on_cycle(double t, int completed) { say(t, "cycle " + std::to_string(completed) + " completed"); }
 
+void Timeline::on_task(double t, const TaskEvent& e) {
+  if (!e.applied) {
+    say(t, "new task from " + e.change.by + " refused: " + e.refused);
+    return;
+  }
+  const std::size_t n = e.automaton ? e.automaton->num_states() : 0;
+  say(t, "new task from " + e.change.by + ": " + e.change.task + " (" + std::to_string(n) +
+             (n == 1 ? " automaton state)" : " automaton states)"));
+}
+
+void Timeline::on_redirect(double t, const std::string& action, const std::string& rule) {
+  say(t, "redirected " + action + ": " + rule);
+}
+
 void Timeline::on_tick(double, bt::Status, const std::string& running) {
   if (running.empty()) moving_.clear();
 }

@@ -3,7 +3,7 @@
 // ("[   4.02 s] operator: add-container t1 -> r1"), and passes each line to a
 // sink (the CLI prints them as they happen). Only what a person watching
 // needs: plans with their moves and times, tree changes, moves, interventions,
-// relocations the robot did not cause, task progress, cycles and the end.
+// relocations the robot did not cause, task progress, new tasks, cycles and the end.
 #pragma once
 
 #include <functional>
@@ -29,6 +29,8 @@ class Timeline final : public EpisodeObserver {
   void on_plan(double t, const PlanEvent&) override;
   void on_tree_change(double t, const ReconfigurationReport&, const PlanTree&, bool deferred) override;
   void on_cycle(double t, int completed) override;
+  void on_task(double t, const TaskEvent&) override;
+  void on_redirect(double t, const std::string& action, const std::string& rule) override;
   void on_tick(double t, bt::Status, const std::string& running) override;
   void on_end(double t, const EpisodeMetrics&, const world::Placement&) override;
 

@@ -32,6 +32,11 @@ Planner::Planner(world::Scenario scenario, PlannerOptions options)
     : scenario_(std::move(scenario)), options_(std::move(options)) {
   if (scenario_.task.empty()) throw Error("the scenario has no task", scenario_.task_where);
   task::validate_task(scenario_);  // every atom names a proposition or a valid expression
+  translate();
+  init();
+}
+
+void Planner::translate() {
   formula_ = ltl::parse(scenario_.task, scenario_.task_where);
   automata::TranslateOptions t;
   t.state_based = !options_.transition_based;
@@ -49,7 +54,17 @@ Planner::Planner(world::Scenario scenario, PlannerOptions options)
     if (ba_.num_sets > kMaxProductSets || (options_.generalized == G::WhereItPays && one.num_states() <= ba_.num_states()))
       ba_ = std::move(one);
   }
-  init();
+}
+
+void Planner::set_task(const world::TaskChange& change) {
+  world::Scenario next = task::with_task(scenario_, change);  // throws before anything changes
+  scenario_.task = std::move(next.task);
+  scenario_.task_where = next.task_where;
+  scenario_.task_layout = next.task_layout;
+  scenario_.propositions = std::move(next.propositions);
+  translate();
+  ba_starts_.assign(1, ba_.initial);
+  dirty_ = true;  // new atoms: the TS's labeling, the product graph and what is known of it are remade
 }
 
 Planner::Planner(world::Scenario scenario, automata::Automaton automaton, PlannerOptions options)

@@ -9,8 +9,8 @@
 //   auto tuples = planner.action_tuples(r2.plan);  // for the behavior tree
 //
 // The planner owns the scenario, the current symbolic state (where every thing
-// and the hand are), the Büchi automaton of the task (translated once: the
-// formula never changes during an episode), the TS and labeling (rebuilt when
+// and the hand are), the Büchi automaton of the task (translated once, and
+// again for a new task: set_task), the TS and labeling (rebuilt when
 // things or regions are added or removed; names stay the identity), and the
 // experience (plan/experience.hpp): the motion-cost cache (for models whose
 // costs are expensive(), e.g. ik) and, while the TS is unchanged, the product
@@ -101,6 +101,14 @@ class Planner {
   // kinds rebuild the TS (the motion-cost cache is kept, minus a removed
   // thing's entries).
   void apply(const world::Change& change, ChangeOrigin origin = ChangeOrigin::Proposed);
+  // A new task (the paper's "new temporal logic specifications"; docs/exec.md
+  // "A new task"): task::with_task checks it (rtamp::Error, nothing changed),
+  // then the task is translated and the automaton states reset to its
+  // initial state. Kept: the scenario, the current state, forbidden moves and
+  // the motion-cost cache (costs do not depend on the task); the TS is
+  // relabelled and the product graph with its learned bounds, cycle table and
+  // solved paths is made anew (they are the old automaton's).
+  void set_task(const world::TaskChange& change);
   // The robot executed `a` (the state advances; experience is kept).
   void execute(const task::Action& a);
   // Replace the current state (e.g. from perception).
@@ -145,6 +153,7 @@ class Planner {
 
  private:
   void init();
+  void translate();  // formula_ and ba_ from scenario_.task, in the form the options ask
   void rebuild();  // TS, labeling, graph from scenario_ + placement_ + hand_
   // How a query treats experience: the planner's kept graph, experience and
   // search (astar-exp), or cold ones made for the query and dropped after it.

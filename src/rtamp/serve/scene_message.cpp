@@ -6,7 +6,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "rtamp/automata/dot_writer.hpp"
+#include "rtamp/exec/episode_log.hpp"
 #include "rtamp/robot/ur5_kinematics.hpp"
 #include "rtamp/sim/mjcf_builder.hpp"
 #include "rtamp/sim/scene_style.hpp"
@@ -84,21 +84,11 @@ std::string hello_fields(const world::Scenario& s, const automata::Automaton& ba
                     {"tool_offset", robot::Ur5Kinematics::Config{}.tool_offset},
                     {"home", mo.home}};
 
-  json states = json::array();
-  for (std::uint32_t q = 0; q < ba.num_states(); ++q)
-    states.push_back({{"id", q}, {"initial", q == ba.initial}, {"accepting", ba.is_accepting_state(q)}});
-  json edges = json::array();
-  for (std::uint32_t q = 0; q < ba.num_states(); ++q)
-    for (const auto& e : ba.edges[q])
-      edges.push_back({{"from", q},
-                       {"to", e.dst},
-                       {"label", automata::cube_to_string(e.guard, ba.atoms)},
-                       {"accepting", !ba.state_based && e.marks == ba.all_marks()}});
   json j{{"mode", mode},
          {"world", world_name},
          {"scene", scene},
          {"task", s.task},
-         {"automaton", {{"states", states}, {"edges", edges}, {"state_based", ba.state_based}}}};
+         {"automaton", json::parse(exec::automaton_json(ba))}};
   if (replay_duration) j["replay"] = {{"duration", *replay_duration}};
   return j.dump(-1, ' ', false, json::error_handler_t::replace);
 }

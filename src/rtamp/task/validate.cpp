@@ -1,9 +1,11 @@
 #include "rtamp/task/validate.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 #include "rtamp/ltl/parser.hpp"
 #include "rtamp/util/error.hpp"
+#include "rtamp/util/format.hpp"
 #include "rtamp/world/names.hpp"
 #include "rtamp/world/propositions.hpp"
 #include "rtamp/world/suggest.hpp"
@@ -97,7 +99,47 @@ class TaskChecker {
 
 }  // namespace
 
-void validate_task(const world::Scenario& s) { TaskChecker(s).run(); }
+void validate_task(const world::Scenario& s) {
+  TaskChecker(s).run();
+  if (!s.task_changes.empty()) validate_task_changes(s, s.task_changes);
+}
+
+world::Scenario with_task(const world::Scenario& s, const world::TaskChange& c) {
+  const std::string owner = "new task at t = " + format_number(c.time) + " s";
+  auto located = [&](const Error& e) {
+    std::string what = e.message();
+    return Error(what.rfind(owner, 0) == 0 ? what : owner + ": " + what, e.where(), e.detail());
+  };
+  if (!std::isfinite(c.time) || c.time < 0)
+    throw Error("new task at t = " + format_number(c.time) + ": the time must be a finite number of seconds >= 0",
+                c.where);
+  world::Scenario next = s;
+  next.task = c.task;
+  next.task_where = c.task_where;
+  next.task_layout = c.task_layout;
+  next.task_changes.clear();
+  for (const world::Proposition& p : c.propositions) {
+    if (const world::Proposition* old = s.find_proposition(p.name)) {
+      if (old->expr == p.expr) continue;
+      throw Error(owner + ": proposition " + world::quoted(p.name) + " is already defined as \"" + old->text +
+                      "\" (a new task may add propositions, not change them; give this one another name)",
+                  p.where);
+    }
+    next.propositions.push_back(p);
+  }
+  try {
+    world::validate(next);
+    TaskChecker(next).run();
+  } catch (const Error& e) {
+    throw located(e);
+  }
+  return next;
+}
+
+void validate_task_changes(const world::Scenario& s, const std::vector<world::TaskChange>& changes) {
+  world::Scenario at = s;
+  for (const world::TaskChange& c : changes) at = with_task(at, c);
+}
 
 void validate(const world::Scenario& s) {
   world::validate(s);

@@ -22,8 +22,22 @@
 
 namespace rtamp::task {
 
-// Checks the task of `s` (assumes the rest of `s` is valid).
+// Checks the task of `s` and the new tasks of its operator script
+// (s.task_changes: validate_task_changes) (assumes the rest of `s` is valid).
 void validate_task(const world::Scenario& s);
+
+// The scenario with the new task `c` in force (docs/exec.md "A new task"):
+// `c.task` as its task, `c.propositions` joined to its own (one the scenario
+// already defines with the same expression is kept once; another expression
+// for a defined name is refused: a new task may add propositions, not change
+// them), checked like a scenario's own propositions and task, and a time
+// finite and >= 0. Throws rtamp::Error located in `c`, its message naming
+// the task change ("new task at t = 12 s: ...").
+world::Scenario with_task(const world::Scenario& s, const world::TaskChange& c);
+
+// Every task change of `changes` in order, each on the scenario the ones
+// before it made (with_task). Throws the first error.
+void validate_task_changes(const world::Scenario& s, const std::vector<world::TaskChange>& changes);
 
 // world::validate(s), then validate_task(s).
 void validate(const world::Scenario& s);

@@ -162,6 +162,23 @@ struct Intervention : Change {
   SourceLocation where;  // where it was defined (for messages)
 };
 
+// A new task for a running episode (the paper's "new temporal logic
+// specifications"): the scenario's `operator:` entries `{time, action:
+// new_task, task, propositions}`, `rtamp run|serve|batch --new-task T@LTL`,
+// the page, ReactiveLoop::set_task. The new task replaces the one in force
+// from `time` on (docs/exec.md "A new task"); its propositions join the
+// scenario's (a name the scenario already defines must keep its expression).
+// Checked like the scenario's own task (task/validate.hpp).
+struct TaskChange {
+  double time = 0;                        // seconds of world time from the start of the episode
+  std::string task;                       // LTL over proposition names or quoted expressions
+  SourceLocation task_where;              // of the task's first byte (or an option's text)
+  TextLayout task_layout;                 // of a block scalar task in its file; empty otherwise
+  std::vector<Proposition> propositions;  // new propositions for this task
+  std::string by = "script";              // who gave it: script, command line, page, api, ros2, ...
+  SourceLocation where;                   // where it was defined (for messages)
+};
+
 struct Scenario {
   std::string name;
   std::string description;
@@ -174,6 +191,7 @@ struct Scenario {
   SourceLocation task_where;  // of the task's first byte
   TextLayout task_layout;     // of a block scalar task (| or >) in its file; empty otherwise
   std::vector<Intervention> interventions;  // sorted by time
+  std::vector<TaskChange> task_changes;     // the operator script's new tasks, sorted by time
   std::vector<Camera> cameras;              // as listed (world/camera.hpp: cameras_of() adds defaults)
   std::vector<ClassColour> colours;         // as listed
   std::string source;                       // file it was loaded from ("" if generated)

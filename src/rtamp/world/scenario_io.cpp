@@ -76,6 +76,8 @@ struct ActionSpec {
   std::vector<std::string> keys;  // besides time and action
 };
 
+constexpr const char* kNewTask = "new_task";  // the operator action that gives a new task
+
 const std::vector<ActionSpec>& action_specs() {
   static const std::vector<ActionSpec> specs = {
       {"relocate", Intervention::Kind::Relocate, {"object", "container", "to", "position"}},
@@ -132,12 +134,17 @@ class Reader {
       s.task_layout = text_layout(t);
     }
     if (auto o = optional(root, "operator"))
-      for_each_item(*o, "operator", [&](const YAML::Node& n) { s.interventions.push_back(read_intervention(n)); });
+      for_each_item(*o, "operator", [&](const YAML::Node& n) {
+        if (is_new_task(n)) s.task_changes.push_back(read_task_change(n));
+        else s.interventions.push_back(read_intervention(n));
+      });
     if (auto c = optional(root, "cameras"))
       for_each_item(*c, "cameras", [&](const YAML::Node& n) { s.cameras.push_back(read_camera(n)); });
     if (auto c = optional(root, "colours")) read_colours(*c, s.colours);
     std::stable_sort(s.interventions.begin(), s.interventions.end(),
                      [](const Intervention& a, const Intervention& b) { return a.time < b.time; });
+    std::stable_sort(s.task_changes.begin(), s.task_changes.end(),
+                     [](const TaskChange& a, const TaskChange& b) { return a.time < b.time; });
 
     detail::validate(s, [this](const SourceLocation& element, std::string_view field) {
       auto it = fields_.find(std::make_tuple(element.line, element.column, std::string(field)));
@@ -560,6 +567,29 @@ class Reader {
     }
   }
 
+  // An operator entry `{time, action: new_task, task, propositions}`.
+  static bool is_new_task(const YAML::Node& n) {
+    if (!n.IsMap()) return false;
+    const YAML::Node a = n["action"];
+    return a && a.IsScalar() && a.Scalar() == kNewTask;
+  }
+
+  TaskChange read_task_change(const YAML::Node& n) {
+    TaskChange c;
+    c.where = loc(n);
+    const std::string owner = std::string("operator action '") + kNewTask + "'";
+    check_keys(n, {"time", "action", "task", "propositions"}, owner);
+    const YAML::Node t = required(n, "time", owner, c.where);
+    remember(c.where, "time", t);
+    c.time = number(t, "operator action time");
+    const YAML::Node task = required(n, "task", owner, c.where);
+    c.task = text_value(task, owner + ": task");
+    c.task_where = text_start(task);
+    c.task_layout = text_layout(task);
+    if (auto p = optional(n, "propositions")) read_propositions(*p, c.propositions);
+    return c;
+  }
+
   Intervention read_intervention(const YAML::Node& n) {
     if (!n.IsMap()) fail(n, "an operator action must be a mapping {time, action, ...}, found " + describe(n));
     Intervention iv;
@@ -572,6 +602,7 @@ class Reader {
       names.emplace_back(s.name);
       if (action == s.name) spec = &s;
     }
+    names.emplace_back(kNewTask);
     if (!spec) fail(a, "unknown operator action " + quoted(action) + suggestion(action, names));
     iv.kind = spec->kind;
     std::vector<std::string> allowed = {"time", "action"};
@@ -741,7 +772,7 @@ std::string to_yaml(const Scenario& s) {
     for (const Proposition& p : s.propositions) out << "  " << str(p.name) << ": " << quoted_str(p.text) << "\n";
   }
   out << "task: " << quoted_str(s.task) << "\n";
-  if (!s.interventions.empty()) {
+  if (!s.interventions.empty() || !s.task_changes.empty()) {
     std::set<std::string> containers;
     for (const Container& c : s.containers) containers.insert(c.name);
     for (const Intervention& iv : s.interventions)
@@ -757,6 +788,16 @@ std::string to_yaml(const Scenario& s) {
         out << ", class: " << str(iv.cls);
       if (!iv.location.empty()) out << ", to: " << str(iv.location);
       if (iv.position) out << ", position: " << vec(*iv.position);
+      out << "}\n";
+    }
+    for (const TaskChange& c : s.task_changes) {
+      out << "  - {time: " << num(c.time) << ", action: " << kNewTask << ", task: " << quoted_str(c.task);
+      if (!c.propositions.empty()) {
+        out << ", propositions: {";
+        for (std::size_t i = 0; i < c.propositions.size(); ++i)
+          out << (i ? ", " : "") << str(c.propositions[i].name) << ": " << quoted_str(c.propositions[i].text);
+        out << "}";
+      }
       out << "}\n";
     }
   }
