@@ -119,7 +119,7 @@ class LiveEpisode final : public RequestHandler {
 
   std::chrono::steady_clock::time_point next_frame_{};  // when the next unforced frame is due
   std::chrono::steady_clock::time_point next_camera_{};  // when the next camera message may go
-  bool changed_ = false;  // loop thread: a page's intervention was applied since the world last looked
+  bool changed_ = false;  // loop thread: a page's intervention reached the world since the loop last looked
   double next_frame_record_ = 0;
 };
 
