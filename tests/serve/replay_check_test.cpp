@@ -3,7 +3,8 @@
 // pass the check; each way of breaking one — a line nested or sized beyond the
 // limits, no or two `episode` records, an `end` mid-log, a frame with three
 // joint angles or an unknown thing, a plan moving an unknown thing, records out
-// of time order — is refused with the line it is on, before anything is served.
+// of time order — is refused with the line it is on, before anything is served;
+// a served log with a page's interventions (refused by the world, applied) replays.
 // Playing: a step while paused plays the next record; speed changes while paused; a seek back while
 // playing sticks (the frames go on from the seek, not from before it).
 #include <gtest/gtest.h>

@@ -7,7 +7,9 @@
 // one step; a refused one says why; only loopback is bound by default; a
 // replay reaches the logged end state and seeks; a MuJoCo episode with camera
 // perception (built on this thread, rendered on the loop's) sends its camera images,
-// at most 5 a second, the latest to a page that joins late.
+// at most 5 a second, the latest to a page that joins late; a page that joins
+// an episode nobody watched gets the present (hello's time and first frame, the
+// tree's statuses).
 #include <gtest/gtest.h>
 
 #include <atomic>
