@@ -165,6 +165,7 @@ void Hub::reset(std::vector<std::string> history, std::string tree, std::string 
   batch_.clear();  // the new hello has the history
   history_ = std::move(history);
   tree_ = std::move(tree);
+  statuses_.clear();
   frame_ = std::move(frame);
   state_ = s;
   if (clients_.empty()) return;
