@@ -47,6 +47,7 @@ rtamp::cli::Registrar reg{
     [](CLI::App& app) -> rtamp::cli::Action {
       struct Opts : rtamp::cli::EpisodeArgs {
         std::string host = "127.0.0.1", replay, web_root;
+        std::vector<std::string> allow_origins;
         double speed = 1;
         int port = 8080;
         bool quiet = false, paused = false, exit_at_end = false;
@@ -67,11 +68,22 @@ rtamp::cli::Registrar reg{
                            "World seconds per wall second (0: as fast as possible)");
       app.add_flag("--paused", o->paused, "Start paused (the first plan is made; resume or step on the page)");
       app.add_option("--replay", o->replay, "Serve this episode log (JSON Lines, from run or serve --log) instead of running");
+      app.add_option("--allow-origin", o->allow_origins,
+                     "Let pages of this origin (http[s]://HOST[:PORT]) use the WebSocket, e.g. a page that embeds this "
+                     "one; repeatable (default: only the served page's own origin)")
+          ->allow_extra_args(false);
       app.add_option("--web-root", o->web_root, "The page's files (default: <exe dir>/../share/rtamp/web)");
       app.add_flag("--exit-at-end", o->exit_at_end, "Stop serving when the episode (or replay) ends");
       app.add_flag("--quiet", o->quiet, "No timeline");
       return [o]() -> int {
         using namespace rtamp;
+        serve::ServerOptions so;
+        for (const std::string& text : o->allow_origins) {
+          std::string why;
+          const auto origin = serve::parse_origin(text, &why);
+          if (!origin) throw Error("--allow-origin: " + why);
+          so.allowed_origins.push_back(*origin);
+        }
         const world::Scenario scenario = world::load_scenario(o->scenario);
         task::validate_task(scenario);
         const episode::EpisodeOptions episode_options = rtamp::cli::episode_options(*o);
@@ -80,7 +92,6 @@ rtamp::cli::Registrar reg{
         if (!episode_options.outputs.trees.empty())
           rtamp::cli::check_output_dir("--trees", episode_options.outputs.trees);
         if (!o->replay.empty()) check_input_file("--replay", o->replay);
-        serve::ServerOptions so;
         so.host = o->host;
         so.port = static_cast<unsigned short>(o->port);
         so.web_root = o->web_root.empty() ? default_web_root() : o->web_root;

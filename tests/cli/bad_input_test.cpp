@@ -590,6 +590,13 @@ void serve_cases(std::vector<Case>& t) {
   add({"--host", "localhost.invalid"}, "cannot listen on localhost.invalid:", "not an IP address");
   add({"--host", "203.0.113.7", "--port", "0"}, "cannot listen on 203.0.113.7:0:", "");
   add({"--web-root", "no-such-dir"}, "--web-root:", "not a directory");
+  add({"--allow-origin", "lab.example"}, "--allow-origin: 'lab.example' is not an origin:", "no scheme");
+  add({"--allow-origin", "null"}, "--allow-origin: 'null' is not an origin:", "no scheme");
+  add({"--allow-origin", "file:///home"}, "--allow-origin: 'file:///home' is not an origin:", "not http or https");
+  add({"--allow-origin", "http://lab.example/page"}, "--allow-origin:", "an origin has no path");
+  add({"--allow-origin", "http://lab.example:99999"}, "--allow-origin:", "a port in 1-65535");
+  add({"--allow-origin", "http://127.0.0.1:8080", "--allow-origin", "*"}, "--allow-origin: '*'", "no scheme");
+  add({"--allow-origin", "http://" + std::string(5000, 'a')}, "--allow-origin: 'http://aaa", "...' (5007 bytes)");
   add({"--replay", "no-such.jsonl"}, "--replay:", "cannot read 'no-such.jsonl'");
   add({"--algo", "bfs"}, "--algo:", "unknown");
   {

@@ -336,7 +336,7 @@ TEST(ServeHub, ALateClientCatchesUpWithTheHistory) {
   Hub hub(R"({"mode":"live","world":"symbolic"})");
   hub.log_record(R"({"ev":"episode","t":0})");
   hub.tree(R"({"type":"tree","t":0,"nodes":[]})");
-  hub.frame(R"({"type":"frame","t":0,"things":[]})");
+  hub.frame(0, R"({"type":"frame","t":0,"things":[]})");
   auto c = std::make_shared<RecordingClient>();
   hub.join(c);
   hub.log_record(R"({"ev":"plan","t":0.5})");
@@ -371,7 +371,7 @@ TEST(ServeHub, RecordsThatAreNotUrgentGoOutTogetherInOrderAndOnce) {
   EXPECT_EQ(a->got[1]["records"][0]["t"], 0.02);
   EXPECT_EQ(a->got[1]["records"][2]["ev"], "action");
   hub.log_record(R"({"ev":"tick","t":0.06})", false);
-  hub.frame(R"({"type":"frame","t":0.06,"things":[]})");
+  hub.frame(0.06, R"({"type":"frame","t":0.06,"things":[]})");
   ASSERT_EQ(a->got.size(), 4u);
   EXPECT_EQ(a->got[2]["records"].size(), 1u) << "the frame takes the waiting record before it";
   EXPECT_EQ(a->got[3]["type"], "frame");

@@ -3,15 +3,18 @@
 // pass the check; each way of breaking one — a line nested or sized beyond the
 // limits, no or two `episode` records, an `end` mid-log, a frame with three
 // joint angles or an unknown thing, a plan moving an unknown thing, records out
-// of time order — is refused with the line it is on, before anything is served.
+// of time order — is refused with the line it is on, before anything is served;
+// a served log with a page's interventions (refused by the world, applied) replays.
 // Playing: a step while paused plays the next record; speed changes while paused; a seek back while
 // playing sticks (the frames go on from the seek, not from before it).
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <filesystem>
 #include <fstream>
 #include <functional>
 #include <string>
+#include <thread>
 #include <unistd.h>
 #include <vector>
 
@@ -250,6 +253,86 @@ TEST_F(ReplayCheck, APausedEpisodePlansAndAnInterventionKeepsTheLogInTimeOrder) 
   }
   EXPECT_TRUE(intervened);
   EXPECT_EQ(refusal("paused_copy.jsonl", ls), "");
+}
+
+// `serve --log X` then `serve --replay X`: interventions from a page are
+// logged at the time they took effect, also one the world refuses (an add
+// into r1, full at the start) sent while paused and one applied mid-episode,
+// before the frame records of the world time that passed after them: the log
+// is in time order and replays, with both interventions in it.
+TEST_F(ReplayCheck, APagesInterventionsAreLoggedWhenTheyTookEffectAndTheLogReplays) {
+  const fs::path log = dir_ / "page.jsonl";
+  LiveOptions o;
+  o.episode.world = "symbolic";
+  o.episode.loop.planning = exec::PlanningMode::Inline;
+  o.episode.seed = 7;
+  o.episode.loop.max_time = 300;
+  o.episode.scripted_operator = false;
+  o.episode.outputs.log = log.string();
+  o.speed = 0;
+  o.paused = true;
+  std::string moved;
+  {
+    LiveEpisode live(scenario(), o);
+    Server server({"127.0.0.1", 0, ""}, live);
+    server.start();
+    live.start();
+    WsClient c(server.port());
+    ASSERT_TRUE(c.read());
+    c.send(json{{"type", "intervene"}, {"id", 1}, {"kind", "add"}, {"class", "block"}, {"location", "r1"}});
+    const auto refused = c.reply(1);
+    ASSERT_TRUE(refused);
+    EXPECT_FALSE((*refused)["ok"]);
+    EXPECT_NE((*refused)["error"].get<std::string>().find("refused by the world"), std::string::npos) << *refused;
+    c.send(json{{"type", "control"}, {"id", 2}, {"action", "speed"}, {"value", 20}});
+    ASSERT_TRUE(c.reply(2));
+    c.send(json{{"type", "control"}, {"id", 3}, {"action", "resume"}});
+    ASSERT_TRUE(c.reply(3));
+    const auto finished = c.read_until([](const json& m) {
+      return m["type"] == "log" && m["record"]["ev"] == "action" && m["record"]["what"] == "finished";
+    });
+    ASSERT_TRUE(finished);
+    const std::string action = (*finished)["record"]["action"];
+    moved = action.substr(5, action.find(',') - 5);  // "move(o2, r3)": back to r1
+    c.send(json{{"type", "intervene"}, {"id", 4}, {"kind", "relocate"}, {"subject", moved}, {"location", "r1"}});
+    const auto applied = c.reply(4);
+    ASSERT_TRUE(applied);
+    EXPECT_TRUE((*applied)["ok"]) << *applied;
+    c.send(json{{"type", "control"}, {"id", 5}, {"action", "speed"}, {"value", 0}});
+    ASSERT_TRUE(c.reply(5));
+    EXPECT_TRUE(live.wait().success);
+    server.stop();
+  }
+  const auto ls = lines("page.jsonl");
+  double t = 0;
+  int interventions = 0, frames = 0;
+  for (std::size_t i = 0; i < ls.size(); ++i) {
+    const json r = json::parse(ls[i]);
+    EXPECT_GE(r["t"].get<double>(), t) << "line " << i + 1 << ": " << ls[i];
+    t = std::max(t, r["t"].get<double>());
+    frames += r["ev"] == "frame";
+    if (r["ev"] != "intervention") continue;
+    ++interventions;
+    EXPECT_EQ(r["applied"], r["kind"] == "relocate") << ls[i];
+    if (r["kind"] == "relocate") {
+      EXPECT_EQ(r["subject"], moved);
+    }
+  }
+  EXPECT_EQ(interventions, 2);
+  EXPECT_GT(frames, 2);
+  EXPECT_EQ(refusal("page_copy.jsonl", ls), "");
+  // Replayed to its end (as fast as it goes), the page's history has both.
+  ReplayOptions ro;
+  ro.speed = 0;
+  Replay replay(scenario(), log.string(), ro);
+  replay.start();
+  for (int i = 0; i < 60000 && !replay.ended(); ++i) std::this_thread::sleep_for(std::chrono::milliseconds(1));
+  ASSERT_TRUE(replay.ended());
+  replay.stop();
+  const json hello = json::parse(replay.hub().hello());
+  int seen = 0;
+  for (const json& r : hello["history"]) seen += r["ev"] == "intervention";
+  EXPECT_EQ(seen, 2);
 }
 
 TEST_F(ReplayCheck, StepPlaysTheNextRecordAndASeekBackSticks) {

@@ -7,7 +7,9 @@
 // one step; a refused one says why; only loopback is bound by default; a
 // replay reaches the logged end state and seeks; a MuJoCo episode with camera
 // perception (built on this thread, rendered on the loop's) sends its camera images,
-// at most 5 a second, the latest to a page that joins late.
+// at most 5 a second, the latest to a page that joins late; a page that joins
+// an episode nobody watched gets the present (hello's time and first frame, the
+// tree's statuses).
 #include <gtest/gtest.h>
 
 #include <atomic>
@@ -24,30 +26,18 @@
 #include "rtamp/serve/replay.hpp"
 #include "rtamp/serve/server.hpp"
 #include "rtamp/world/scenario_io.hpp"
+#include "served_episode.hpp"
 #include "ws_client.hpp"
 
 namespace rtamp::serve {
 namespace {
 
 using test::json;
+using test::Served;
+using test::symbolic_options;
+using test::temp_dir;
 using test::WsClient;
 namespace fs = std::filesystem;
-
-fs::path temp_dir(const std::string& name) {
-  const fs::path d = fs::temp_directory_path() / ("rtamp_serve_test_" + std::to_string(::getpid()) + "_" + name);
-  fs::create_directories(d);
-  return d;
-}
-
-episode::EpisodeOptions symbolic_options(const std::string& log = {}) {
-  episode::EpisodeOptions o;
-  o.world = "symbolic";
-  o.loop.planning = exec::PlanningMode::Inline;
-  o.seed = 7;
-  o.loop.max_time = 300;
-  o.outputs.log = log;
-  return o;
-}
 
 std::vector<json> read_log(const fs::path& p) {
   std::vector<json> v;
@@ -75,25 +65,6 @@ void expect_same_metrics(const exec::EpisodeMetrics& a, const exec::EpisodeMetri
   EXPECT_EQ(a.run_length, b.run_length);
   EXPECT_NEAR(a.world_time, b.world_time, 1e-9);
 }
-
-struct Served {
-  LiveEpisode episode;
-  Server server;
-  Served(const world::Scenario& s, LiveOptions o, ServerOptions so = {})
-      : episode(s, std::move(o)), server([&so] {
-          so.port = 0;
-          return so;
-        }(), episode) {
-    server.start();
-    episode.start();
-  }
-  // The episode's thread ends before the server goes (replies may be on their way).
-  ~Served() {
-    episode.stop();
-    episode.wait();
-  }
-  unsigned short port() const { return server.port(); }
-};
 
 TEST(ServeServer, HelloDescribesTheSceneAndTheApiServesIt) {
   const world::Scenario s = world::load_scenario("3-block-tray");
@@ -123,33 +94,14 @@ TEST(ServeServer, HelloDescribesTheSceneAndTheApiServesIt) {
 
   // GET /api/hello: the same hello.
   namespace http = boost::beast::http;
-  test::net::io_context ioc;
-  test::beast::tcp_stream stream(ioc);
-  stream.connect(test::tcp::endpoint(test::net::ip::make_address("127.0.0.1"), sv.port()));
-  http::request<http::empty_body> req{http::verb::get, "/api/hello", 11};
-  req.set(http::field::host, "127.0.0.1");
-  http::write(stream, req);
-  test::beast::flat_buffer b;
-  http::response<http::string_body> res;
-  http::read(stream, b, res);
-  EXPECT_EQ(res.result(), http::status::ok);
-  const json api = json::parse(res.body());
+  const test::HttpAnswer res = test::http_request(sv.port(), http::verb::get, "/api/hello");
+  EXPECT_EQ(res.status, 200);
+  const json api = json::parse(res.body);
   EXPECT_EQ(api["type"], "hello");
   EXPECT_EQ(api["scene"], (*hello)["scene"]);
   // A path outside the page, and a POST, are refused.
-  http::request<http::empty_body> bad{http::verb::get, "/../../etc/passwd", 11};
-  bad.set(http::field::host, "127.0.0.1");
-  http::write(stream, bad);
-  http::response<http::string_body> res2;
-  http::read(stream, b, res2);
-  EXPECT_EQ(res2.result(), http::status::not_found);
-  http::request<http::string_body> post{http::verb::post, "/api/hello", 11};
-  post.set(http::field::host, "127.0.0.1");
-  post.prepare_payload();
-  http::write(stream, post);
-  http::response<http::string_body> res3;
-  http::read(stream, b, res3);
-  EXPECT_EQ(res3.result(), http::status::method_not_allowed);
+  EXPECT_EQ(test::http_request(sv.port(), http::verb::get, "/../../etc/passwd").status, 404);
+  EXPECT_EQ(test::http_request(sv.port(), http::verb::post, "/api/hello").status, 405);
 }
 
 // A non-loopback address of this machine (the source address of a route out), or "".
@@ -483,6 +435,80 @@ TEST(ServeServer, InterventionWhilePausedIsLoggedAfterResume) {
   const exec::EpisodeMetrics m = sv.episode.wait();
   EXPECT_EQ(m.interventions_applied, 1);
   EXPECT_TRUE(m.success) << m.reason;
+}
+
+// GET /api/hello (the hello a page joining now would get).
+json api_hello(unsigned short port) {
+  return json::parse(test::http_request(port, boost::beast::http::verb::get, "/api/hello").body);
+}
+
+// The statuses of a tree message's nodes, one letter each (as a status message has them).
+std::string shown_statuses(const json& tree) {
+  std::string s;
+  for (const json& n : tree["nodes"]) s += n["status"].get<std::string>().front();
+  return s;
+}
+
+// A page that joins an episode no page watched sees the present: its hello's
+// time and first frame are not older than any record its history has.
+TEST(ServeServer, APageThatJoinsLateSeesThePresent) {
+  const world::Scenario s = world::load_scenario("3-block-tray");
+  LiveOptions o;
+  o.episode = symbolic_options();
+  o.speed = 4;
+  Served sv(s, o);
+  const auto latest = [](const json& hello) {
+    double t = 0;
+    for (const json& r : hello["history"]) t = std::max(t, r["t"].get<double>());
+    return t;
+  };
+  for (int i = 0; i < 3000 && latest(api_hello(sv.port())) < 3; ++i)
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  WsClient late(sv.port());
+  const auto hello = late.read();
+  ASSERT_TRUE(hello);
+  ASSERT_EQ((*hello)["type"], "hello");
+  const double t = (*hello)["t"];
+  EXPECT_GE(latest(*hello), 3) << "the episode is not under way";
+  EXPECT_GE(t + 1e-4, latest(*hello)) << "hello's time is older than its history (records are logged to 1e-4 s)";
+  const auto frame = late.read();
+  ASSERT_TRUE(frame);
+  ASSERT_EQ((*frame)["type"], "frame");
+  EXPECT_EQ((*frame)["t"].get<double>(), t);
+}
+
+// The tree a joining page gets shows the statuses of the latest tick: at the
+// end of an episode no page watched, those a page watching the same episode
+// all along shows last (the symbolic episode is the same with or without pages).
+TEST(ServeServer, APageThatJoinsLateSeesTheTreesStatuses) {
+  const world::Scenario s = world::load_scenario("3-block-tray");
+  LiveOptions o;
+  o.episode = symbolic_options();
+  o.speed = 0;
+  o.paused = true;
+  std::string watched;
+  {
+    Served sv(s, o);
+    WsClient c(sv.port());
+    const auto hello = c.read();
+    ASSERT_TRUE(hello);
+    if (!(*hello)["tree"].is_null()) watched = shown_statuses((*hello)["tree"]);
+    c.send(json{{"type", "control"}, {"id", 1}, {"action", "resume"}});
+    ASSERT_TRUE(c.read_until([&watched](const json& m) {
+      if (m["type"] == "tree") watched = shown_statuses(m);
+      if (m["type"] == "status") watched = m["s"];  // I R S F: the statuses' first letters
+      return m["type"] == "state" && m["ended"] == true;
+    }));
+    EXPECT_TRUE(sv.episode.wait().success);
+  }
+  EXPECT_NE(watched.find_first_not_of('I'), std::string::npos) << watched;
+  o.paused = false;
+  Served sv(s, o);
+  EXPECT_TRUE(sv.episode.wait().success);
+  WsClient late(sv.port());
+  const auto hello = late.read();
+  ASSERT_TRUE(hello);
+  EXPECT_EQ(shown_statuses((*hello)["tree"]), watched);
 }
 
 // Replays: a served episode's log (with frame records) and a `run` log (without)

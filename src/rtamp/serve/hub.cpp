@@ -5,6 +5,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "rtamp/serve/tree_message.hpp"
+
 namespace rtamp::serve {
 
 using nlohmann::json;
@@ -15,11 +17,15 @@ std::shared_ptr<const std::string> share(std::string s) { return std::make_share
 // The start of a `log` message; its records follow, comma-separated, then "]}".
 constexpr std::string_view kLogHead = "{\"type\":\"log\",\"records\":[";
 
-// The body of a tree message: the message without "type" (hello's `tree`).
-std::string tree_body(const std::string& tree_message) {
+// The body of a tree message: the message without "type" (hello's `tree`),
+// its nodes' statuses replaced by `statuses` (one character a node) if any.
+std::string tree_body(const std::string& tree_message, const std::string& statuses) {
   if (tree_message.empty()) return "null";
   json j = json::parse(tree_message);
   j.erase("type");
+  json& nodes = j["nodes"];
+  if (statuses.size() == nodes.size())
+    for (std::size_t i = 0; i < statuses.size(); ++i) nodes[i]["status"] = status_name(statuses[i]);
   return j.dump();
 }
 }  // namespace
@@ -35,7 +41,7 @@ std::string Hub::hello_locked() const {
   h += fields_.substr(1, fields_.size() - 2);
   h += ",\"speed\":" + json(state_.speed).dump() + ",\"paused\":" + (state_.paused ? "true" : "false") +
        ",\"t\":" + json(state_.t).dump() + ",\"ended\":" + (state_.ended ? "true" : "false");
-  h += ",\"tree\":" + tree_body(tree_);
+  h += ",\"tree\":" + tree_body(tree_, statuses_);
   h += ",\"history\":[";
   std::size_t size = h.size() + 2;
   for (const auto& r : history_) size += r.size() + 1;
@@ -109,20 +115,24 @@ void Hub::tree(const std::string& message) {
   std::lock_guard lock(mu_);
   flush_locked();
   tree_ = message;
+  statuses_.clear();
   if (!clients_.empty()) broadcast_locked(share(message), Slot::None);
 }
 
-void Hub::status(const std::string& message) {
+void Hub::status(double t, const std::string& statuses) {
   std::lock_guard lock(mu_);
   flush_locked();
-  if (!clients_.empty()) broadcast_locked(share(message), Slot::None);
+  statuses_ = statuses;
+  if (!clients_.empty()) broadcast_locked(share(status_message(t, statuses)), Slot::None);
 }
 
-void Hub::frame(const std::string& message) {
+void Hub::frame(double t, const std::string& message, bool broadcast) {
   std::lock_guard lock(mu_);
-  flush_locked();
   frame_ = message;
-  if (!clients_.empty()) broadcast_locked(share(message), Slot::Frame);
+  state_.t = t;
+  if (!broadcast || clients_.empty()) return;
+  flush_locked();
+  broadcast_locked(share(message), Slot::Frame);
 }
 
 void Hub::camera(std::string message) {
@@ -145,11 +155,6 @@ PlaybackState Hub::state() const {
   return state_;
 }
 
-void Hub::time(double t) {
-  std::lock_guard lock(mu_);
-  state_.t = t;
-}
-
 std::size_t Hub::history_size() const {
   std::lock_guard lock(mu_);
   return history_.size();
@@ -160,6 +165,7 @@ void Hub::reset(std::vector<std::string> history, std::string tree, std::string 
   batch_.clear();  // the new hello has the history
   history_ = std::move(history);
   tree_ = std::move(tree);
+  statuses_.clear();
   frame_ = std::move(frame);
   state_ = s;
   if (clients_.empty()) return;

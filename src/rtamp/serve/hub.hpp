@@ -12,8 +12,9 @@
 // goes out as soon as it is written.
 //
 // Invariants: a client that join()s gets `hello` (built from the state at that
-// instant, every record kept), then the latest frame and the latest camera
-// image (if any), before any later message,
+// instant, every record kept, the tree with its latest statuses, `t` the
+// latest frame's), then that frame and the latest camera image (if any),
+// before any later message,
 // and never a message or record twice or out of order: join, leave and every
 // broadcast hold one lock, and join flushes the pending records first.
 // Clients only queue what they are sent (Client::send never blocks), so a slow
@@ -66,18 +67,19 @@ class Hub {
   void log_record(const std::string& record, bool urgent = true);
   // Sends the pending `log` message, if any.
   void flush();
-  // A `tree` message (kept: hello's `tree` is its body), a `status` message.
+  // A `tree` message (kept: hello's `tree` is its body).
   void tree(const std::string& message);
-  void status(const std::string& message);
-  // A `frame` message (kept: sent to a client after its hello).
-  void frame(const std::string& message);
+  // Node statuses after a tick (tree_message.hpp's status string): kept (hello's
+  // tree shows them) and sent as a `status` message.
+  void status(double t, const std::string& statuses);
+  // A `frame` message at world time `t`: kept (sent to a client after its hello;
+  // hello's `t`), and sent to every client if `broadcast`.
+  void frame(double t, const std::string& message, bool broadcast = true);
   // A `camera` message (camera_message.hpp; kept: sent to a client after its hello and frame).
   void camera(std::string message);
   // The playback state: kept (hello's speed, paused, t) and broadcast as `state`.
   void state(const PlaybackState& s);
   PlaybackState state() const;
-  // The current time (hello's `t`), not broadcast.
-  void time(double t);
   // Replay seek: replaces the history, tree and frame, and sends every client a new hello.
   void reset(std::vector<std::string> history, std::string tree, std::string frame, const PlaybackState& s);
   // Number of log records kept.
@@ -97,6 +99,7 @@ class Hub {
   std::vector<std::string> history_;  // the log records so far
   std::string batch_;  // the pending `log` message, unterminated ("" = none)
   std::string tree_, frame_;  // latest tree message, latest frame message ("" = none)
+  std::string statuses_;      // the tree's statuses since its last change ("" = none)
   std::shared_ptr<const std::string> camera_;  // latest camera message (null = none)
   PlaybackState state_;
   std::vector<std::shared_ptr<Client>> clients_;

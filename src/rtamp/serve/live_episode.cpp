@@ -38,14 +38,14 @@ class LiveEpisode::Observer final : public exec::EpisodeObserver {
   void on_tree_change(double t, const exec::ReconfigurationReport&, const exec::PlanTree& tree, bool) override {
     send_tree(t, tree.tree());
   }
+  // Statuses are kept even without a page: one that joins sees the present.
   void on_tick(double t, bt::Status, const std::string&) override {
-    if (e_.hub_->clients() == 0) return;
     const bt::Tree& tree = e_.episode_->loop().tree().tree();
     std::string s = status_string(tree);
     if (s.size() != nodes_) {
       send_tree(t, tree);
     } else if (s != last_) {
-      e_.hub_->status(status_message(t, s));
+      e_.hub_->status(t, s);
       last_ = std::move(s);
     }
   }
@@ -205,7 +205,7 @@ void LiveEpisode::service() {
   }
   if (todo.empty()) return;
   exec::Intervenable* hands = episode_->world().intervenable();
-  bool changed = false;
+  bool reached = false;  // the world applied or refused one: it has an event for the loop to log
   for (Pending& p : todo) {
     if (!hands) {
       p.reply(reply_message(p.request.id, false,
@@ -228,7 +228,7 @@ void LiveEpisode::service() {
     if (ok) {
       const exec::WorldEvent e = hands->apply(iv);
       ok = e.applied;
-      changed = changed || ok;
+      reached = true;
       if (!ok) error = std::string("intervention '") + kind_name(iv.kind) + "' refused by the world: " + e.detail;
       extra = "\"subject\":" + nlohmann::json(iv.subject).dump() + ",\"detail\":" +
               nlohmann::json(e.detail).dump(-1, ' ', false, nlohmann::json::error_handler_t::replace) + ",";
@@ -242,9 +242,12 @@ void LiveEpisode::service() {
     std::snprintf(buf, sizeof buf, "\"server_ms\":%.3f", ms);
     p.reply(reply_message(p.request.id, ok, error, extra + buf));
   }
-  if (changed) {
+  if (reached) {
+    // The loop logs the world's event now, at the time it took effect, not
+    // after the rest of the slice or the advance (whose frame records would
+    // come first, later in time: the log would not replay).
     changed_ = true;
-    playback_.end_slice();  // the loop looks at the change now, not after the rest of the slice
+    playback_.end_slice();
     emit_frame(true);
   }
 }
@@ -277,15 +280,15 @@ exec::Frame LiveEpisode::frame() {
 }
 
 void LiveEpisode::emit_frame(bool force) {
-  if (hub_->clients() == 0 && !force) return;
-  // At most 30 a wall second, counted from when the next one was due (not from
-  // the last one sent): a world whose slices come every 20 ms still gets 30.
+  // Every slice's frame is kept, so that a page that joins gets the present
+  // (hello's `t` and first frame not older than any record it has). Pages are
+  // sent at most 30 a wall second, counted from when the next one was due (not
+  // from the last one sent): a world whose slices come every 20 ms still gets 30.
   const auto now = Clock::now();
-  if (!force && now < next_frame_) return;
-  next_frame_ = std::max(next_frame_ + kFrameInterval, now - kFrameInterval);
+  const bool send = force || now >= next_frame_;
+  if (send) next_frame_ = std::max(next_frame_ + kFrameInterval, now - kFrameInterval);
   const Frame f = frame();
-  hub_->time(f.t);
-  hub_->frame(frame_message(f));
+  hub_->frame(f.t, frame_message(f), send);
 }
 
 }  // namespace rtamp::serve

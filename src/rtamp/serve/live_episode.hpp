@@ -9,8 +9,10 @@
 //  - frames at most 30 per wall second (drawn by the world, exec/frame.hpp, or
 //    laid out from what the loop perceived, exec/laid_out_frames.hpp; joint angles
 //    solved for the tool point where the world has none, arm_angles.hpp), and one after each
-//    applied intervention; the log also gets a `frame` record every
-//    `frame_record_period` s of world time (replays move things with them);
+//    applied intervention; every slice's frame and the tree's statuses after every
+//    tick are kept in the Hub, so a page that joins gets the present; the log also
+//    gets a `frame` record every `frame_record_period` s of world time (replays
+//    move things with them);
 //  - with camera perception, the camera's latest image with its detections'
 //    boxes (`camera`, camera_message.hpp) at most 5 per wall second; a page that
 //    joins gets the latest one;
@@ -19,7 +21,10 @@
 // thread between slices of world time, through the world's intervention
 // capability (exec/intervenable.hpp; a world without it refuses them) after InterventionCheck: so
 // they enter the log as `intervention` records exactly like scripted ones, and
-// the loop reacts to them as to any person's. Each gets one reply: refused
+// the loop reacts to them as to any person's; one that reached the world
+// (applied or refused by it) ends the world's advance, so its record, at the
+// time it took effect, precedes every record of later world time (the log
+// stays in time order and replays). Each gets one reply: refused
 // (the check's or the world's reason), or applied, with the server-side
 // latency from receipt to applied ("server_ms").
 //
@@ -119,7 +124,7 @@ class LiveEpisode final : public RequestHandler {
 
   std::chrono::steady_clock::time_point next_frame_{};  // when the next unforced frame is due
   std::chrono::steady_clock::time_point next_camera_{};  // when the next camera message may go
-  bool changed_ = false;  // loop thread: a page's intervention was applied since the world last looked
+  bool changed_ = false;  // loop thread: a page's intervention reached the world since the loop last looked
   double next_frame_record_ = 0;
 };
 

@@ -13,10 +13,12 @@
 // `rtamp run` does. At speed 0 (as fast as possible) and for a granted step
 // the whole dt is one slice, unpaced.
 //
-// A change a page made (`changed()` true after `service`) ends advance() early,
-// after the slice it happened in: the loop observes it at once (logs it, reacts)
-// instead of after the rest of a discrete-event jump; the loop then asks again
-// from the new time (exec/world.hpp lets advance() stop at any change).
+// An intervention a page made (`changed()` true after `service`: applied, or
+// refused by the world) ends advance() early, after the slice it happened in:
+// the loop observes it at once (logs it at the time it took effect, reacts)
+// instead of after the rest of a discrete-event jump, whose frame records would
+// precede it in the log; the loop then asks again from the new time
+// (exec/world.hpp lets advance() stop at any change).
 #pragma once
 
 #include <functional>

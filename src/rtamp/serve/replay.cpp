@@ -215,8 +215,7 @@ void Replay::run() {
     }
     const auto now = std::chrono::steady_clock::now();
     if (sent || now - last_frame > std::chrono::milliseconds(33)) {
-      hub_->time(t_);
-      hub_->frame(frame_at(t_));
+      hub_->frame(t_, frame_at(t_));
       last_frame = now;
     }
     if (step) publish(t_);

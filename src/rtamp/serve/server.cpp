@@ -10,6 +10,8 @@
 
 #include "rtamp/serve/client_session.hpp"
 #include "rtamp/serve/hub.hpp"
+#include "rtamp/serve/origin_policy.hpp"
+#include "rtamp/serve/web_root.hpp"
 #include "rtamp/util/error.hpp"
 
 namespace rtamp::serve {
@@ -36,21 +38,6 @@ std::string mime_type(const std::string& path) {
   if (ext == ".woff2") return "font/woff2";
   if (ext == ".txt") return "text/plain; charset=utf-8";
   return "application/octet-stream";
-}
-
-// The file under `root` that `target` names, or "" (outside root, not a file).
-std::string file_for(const std::string& root, std::string target) {
-  if (root.empty()) return "";
-  if (auto q = target.find_first_of("?#"); q != std::string::npos) target.resize(q);
-  if (target.empty() || target[0] != '/') return "";
-  for (const auto& part : fs::path(target).relative_path())
-    if (part == ".." || part == ".") return "";
-  if (target.find('\\') != std::string::npos || target.find('\0') != std::string::npos) return "";
-  fs::path p = fs::path(root) / fs::path(target).relative_path();
-  std::error_code ec;
-  if (fs::is_directory(p, ec)) p /= "index.html";
-  if (!fs::is_regular_file(p, ec)) return "";
-  return p.string();
 }
 
 class HttpSession : public std::enable_shared_from_this<HttpSession> {
@@ -105,9 +92,11 @@ struct Server::Impl {
   net::io_context ioc{1};
   tcp::acceptor acceptor{ioc};
   std::thread thread;
-  bool page = false;
+  WebRoot web;
+  OriginPolicy policy;
 
-  explicit Impl(ServerOptions o) : options(std::move(o)) {}
+  explicit Impl(ServerOptions o)
+      : options(std::move(o)), web(options.web_root), policy(options.host, options.allowed_origins) {}
 
   void accept() {
     acceptor.async_accept(net::make_strand(ioc), [this](beast::error_code ec, tcp::socket socket) {
@@ -135,9 +124,23 @@ void HttpSession::on_read(beast::error_code ec) {
   }
   auto& req = parser_->get();
   const std::string target(req.target());
+  const auto header = [&req](http::field f) -> std::optional<std::string_view> {
+    const auto it = req.find(f);
+    if (it == req.end()) return std::nullopt;
+    return std::string_view(it->value().data(), it->value().size());
+  };
+  const auto host = header(http::field::host);
+  if (std::string why = server_.policy.refuse_host(host); !why.empty()) {
+    text(http::status::forbidden, "rtamp serve: forbidden: " + why + "\n");
+    return;
+  }
   if (beast::websocket::is_upgrade(req)) {
     if (target != "/ws" || req.method() != http::verb::get) {
       text(http::status::not_found, "rtamp serve: the WebSocket is at /ws\n");
+      return;
+    }
+    if (std::string why = server_.policy.refuse_origin(header(http::field::origin), *host); !why.empty()) {
+      text(http::status::forbidden, "rtamp serve: forbidden: " + why + "\n");
       return;
     }
     stream_.expires_never();
@@ -152,9 +155,14 @@ void HttpSession::on_read(beast::error_code ec) {
     text(http::status::ok, server_.handler->hub().hello(), "application/json");
     return;
   }
-  const std::string path = file_for(server_.options.web_root, target);
+  const WebRoot::Lookup file = server_.web.find(target);
+  const std::string& path = file.path;
+  if (file.outside) {
+    text(http::status::forbidden, "rtamp serve: forbidden: " + target + " leads outside the page's directory\n");
+    return;
+  }
   if (path.empty()) {
-    if ((target == "/" || target == "/index.html") && !server_.page)
+    if ((target == "/" || target == "/index.html") && !server_.web.has_page())
       text(http::status::not_found,
            "rtamp serve: the page is not installed (no index.html in '" + server_.options.web_root +
                "'); build it (docs/serve.md) or pass --web-root DIR. The API (/api/hello) and the WebSocket (/ws) "
@@ -192,8 +200,6 @@ void HttpSession::on_read(beast::error_code ec) {
 
 Server::Server(ServerOptions options) : impl_(std::make_unique<Impl>(std::move(options))) {
   Impl& s = *impl_;
-  std::error_code fec;
-  s.page = !s.options.web_root.empty() && fs::is_regular_file(fs::path(s.options.web_root) / "index.html", fec);
   const std::string where = s.options.host + ":" + std::to_string(s.options.port);
   beast::error_code ec;
   const auto address = net::ip::make_address(s.options.host, ec);
@@ -212,7 +218,7 @@ unsigned short Server::port() const { return impl_->acceptor.local_endpoint().po
 
 std::string Server::address() const { return impl_->acceptor.local_endpoint().address().to_string(); }
 
-bool Server::has_page() const { return impl_->page; }
+bool Server::has_page() const { return impl_->web.has_page(); }
 
 void Server::start() {
   if (!handler_) throw Error("Server::start(): no request handler");

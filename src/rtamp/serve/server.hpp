@@ -1,8 +1,11 @@
 // The HTTP and WebSocket server of `rtamp serve` (docs/serve.md), on
 // Boost.Beast and Boost.Asio, one I/O thread:
-//  - GET / and GET /<path>: the page's files under `web_root` (index.html for
-//    a directory; no path outside it); without a page there, a plain-text 404
-//    that says so (the API and the WebSocket still work);
+//  - every request first: its Host must name this server, a WebSocket
+//    handshake's Origin must be the page's own or an allowed one
+//    (origin_policy.hpp); others get 403 with the reason;
+//  - GET / and GET /<path>: the page's files under `web_root` (web_root.hpp:
+//    index.html for a directory; nothing that resolves outside it, 403); without
+//    a page there, a plain-text 404 that says so (the API and the WebSocket still work);
 //  - GET /api/hello: the hello message as JSON;
 //  - GET /ws with an upgrade: a WebSocket client (client_session.hpp);
 //  - any other method: 405; any other path: 404.
@@ -14,7 +17,9 @@
 #include <chrono>
 #include <memory>
 #include <string>
+#include <vector>
 
+#include "rtamp/serve/origin_policy.hpp"
 #include "rtamp/serve/request_handler.hpp"
 
 namespace rtamp::serve {
@@ -23,6 +28,7 @@ struct ServerOptions {
   std::string host = "127.0.0.1";
   unsigned short port = 8080;
   std::string web_root;  // the page's files ("" or missing: no page)
+  std::vector<Origin> allowed_origins;  // pages of other origins that may use the WebSocket (--allow-origin)
 };
 
 class Server {

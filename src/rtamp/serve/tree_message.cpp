@@ -66,6 +66,15 @@ class NodeLister : public bt::Visitor {
 
 }  // namespace
 
+const char* status_name(char status) {
+  switch (status) {
+    case 'R': return status_name(bt::Status::Running);
+    case 'S': return status_name(bt::Status::Success);
+    case 'F': return status_name(bt::Status::Failure);
+    default: return status_name(bt::Status::Invalid);
+  }
+}
+
 std::string tree_message(double t, const bt::Tree& tree) {
   std::string out = "{\"type\":\"tree\",\"t\":";
   json_text::append_number(out, t);

@@ -16,5 +16,7 @@ namespace rtamp::serve {
 std::string tree_message(double t, const bt::Tree& tree);
 std::string status_string(const bt::Tree& tree);
 std::string status_message(double t, const std::string& statuses);
+// The status name a node of the tree message has for a character of the status string.
+const char* status_name(char status);
 
 }  // namespace rtamp::serve
