@@ -885,7 +885,19 @@ void ReactiveLoop::apply_task_change(world::TaskChange c) {
     return;
   }
   if (progress_.satisfied_by_staying(run_letters_.back()) && settled() && outside_since_.empty()) {
-    finish(EndReason::TaskDone, "task done: the current state satisfies " + given, true);
+    if (runner_->current().action.empty() && !world_.busy()) {
+      finish(EndReason::TaskDone, "task done: the current state satisfies " + given, true);
+      return;
+    }
+    // The arm holds a thing: it is put back (where it was picked, in the
+    // state that satisfies the task), and the task is judged once it is down.
+    if (const std::string action = runner_->current().action; !action.empty()) {
+      tree_->tree().halt();
+      for (auto* o : observers_)
+        o->on_redirect(now, action, "the current state satisfies the new task: halted, its thing put back where it "
+                                    "was picked, then the task is judged");
+    }
+    tree_done_ = true;
     return;
   }
   if (running_move_defeats_task()) {
