@@ -150,7 +150,7 @@ CLI::Option* add_integer_with(CLI::App& app, const std::string& name, std::funct
   return opt;
 }
 
-world::TaskChange parse_new_task(std::string_view text) {
+world::TaskChange parse_new_task(std::string_view text, int occurrence) {
   const std::size_t at = text.find('@');
   if (at == std::string_view::npos)
     throw Error("expected TIME@LTL, a new task at a world time (e.g. '12@F G all_in_r3'), found " + shown(text));
@@ -163,8 +163,9 @@ world::TaskChange parse_new_task(std::string_view text) {
   c.task = std::string(text.substr(at + 1));
   if (c.task.find_first_not_of(" \t\r\n") == std::string::npos)
     throw Error("no formula after '@' (e.g. '12@F G all_in_r3')");
-  c.task_where = SourceLocation{"--new-task", 1, static_cast<int>(at) + 2};
-  c.where = SourceLocation{"--new-task", 1, 1};
+  const std::string option = "--new-task #" + std::to_string(occurrence);
+  c.task_where = SourceLocation{option, 1, static_cast<int>(at) + 2};
+  c.where = SourceLocation{option, 1, 1};
   c.by = "command line";
   return c;
 }
@@ -173,7 +174,8 @@ CLI::Option* add_new_task(CLI::App& app, std::vector<world::TaskChange>& target)
   auto* opt = app.add_option_function<std::vector<std::string>>(
       "--new-task",
       [&target](const std::vector<std::string>& v) {
-        for (const std::string& s : v) as_validation("--new-task", [&] { target.push_back(parse_new_task(s)); });
+        for (const std::string& s : v)
+          as_validation("--new-task", [&] { target.push_back(parse_new_task(s, static_cast<int>(target.size()) + 1)); });
       },
       "A new task at world time TIME (repeatable): from then on the episode works towards LTL instead, its "
       "propositions the scenario's or quoted expressions (docs/exec.md \"A new task\")");

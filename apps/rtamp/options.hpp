@@ -88,10 +88,11 @@ std::vector<Choice> mcap_compression_choices();
 CLI::Option* add_scenario(CLI::App& app, std::string& target);
 
 // `TIME@LTL` (--new-task): a new task at world time TIME (finite, >= 0) by
-// "command line", its task located as "--new-task:1:COL". Throws rtamp::Error
+// "command line", its task located as "--new-task #N:1:COL" (N: `occurrence`,
+// 1-based, as --change counts). Throws rtamp::Error
 // (without the option name). The formula is checked later, with the scenario
 // (exec::check_task_schedule).
-world::TaskChange parse_new_task(std::string_view text);
+world::TaskChange parse_new_task(std::string_view text, int occurrence = 1);
 // Repeatable --new-task TIME@LTL into `target`.
 CLI::Option* add_new_task(CLI::App& app, std::vector<world::TaskChange>& target);
 

@@ -384,6 +384,56 @@ void task_cases(std::vector<Case>& t) {
   }
 }
 
+// New tasks (--new-task TIME@LTL, the operator's new_task): refused before
+// anything runs, located in the option's text or the scenario file.
+void new_task_cases(std::vector<Case>& t) {
+  const std::vector<std::string> run = {"run", "3-block", "--world", "symbolic", "--log", "nt.jsonl"};
+  auto add = [&](std::vector<std::string> extra, const std::string& where, const std::string& what) {
+    std::vector<std::string> args = run;
+    args.insert(args.end(), extra.begin(), extra.end());
+    t.push_back({"new-task/run", args, where, what, {"nt.jsonl"}});
+  };
+  add({"--new-task", "3@F G nope"}, "--new-task #1:1:7:", "not a proposition of the scenario");
+  add({"--new-task", "3@F G all_in_r2", "--new-task", "5@F G \"o1 in r9\""}, "--new-task #2:1:14:",
+      "unknown location 'r9'");
+  add({"--new-task", "3@F G (all_in_r2"}, "--new-task #1:1:7:", "missing ')'");
+  add({"--new-task", "3 F G all_in_r2"}, "--new-task:", "expected TIME@LTL");
+  add({"--new-task", "soon@F G all_in_r2"}, "--new-task:", "the time before '@'");
+  add({"--new-task", "nan@F G all_in_r2"}, "--new-task:", "the time before '@'");
+  add({"--new-task", "-2@F G all_in_r2"}, "--new-task:", "the time before '@'");
+  add({"--new-task", "3@  "}, "--new-task:", "no formula after '@'");
+  add({"--new-task", "1000@F G all_in_r2", "--max-time", "60"}, "--new-task #1:1:1:", "the episode ends before it");
+  t.push_back({"new-task/batch",
+               {"batch", "3-block", "--trials", "1", "--world", "symbolic", "-o", "nt.csv", "--new-task", "3@F G nope"},
+               "--new-task #1:1:7:", "not a proposition", {"nt.csv"}});
+  t.push_back({"new-task/serve",
+               {"serve", "3-block", "--world", "symbolic", "--port", "0", "--log", "nt.jsonl", "--new-task",
+                "3@F G nope"},
+               "--new-task #1:1:7:", "not a proposition", {"nt.jsonl"}});
+  // The operator script's new_task: its task, and a proposition that redefines one.
+  {
+    const std::string s = scenario("F G all_in_r2", "operator:\n  - {time: 4, action: new_task, task: \"F G nope\"}\n");
+    const std::string p = file(s);
+    t.push_back({"new-task/script", {"run", p, "--world", "symbolic", "--log", "nt.jsonl"},
+                 at(p, s, kTaskLine + 2, "nope"), "new task at t = 4 s: the task uses 'nope'", {"nt.jsonl"}});
+  }
+  {
+    const std::string s = scenario("F G all_in_r2", "operator:\n  - {time: 4, action: new_task, task: \"F G all_in_r2\", "
+                                                     "propositions: {all_in_r2: \"all block in r1\"}}\n");
+    const std::string p = file(s);
+    t.push_back({"new-task/script", {"run", p, "--world", "symbolic", "--log", "nt.jsonl"},
+                 at(p, s, kTaskLine + 2, "all block in r1"), "already defined", {"nt.jsonl"}});
+  }
+  {
+    const std::string s = scenario("F G all_in_r2", "operator:\n  - {time: 4, action: new_task, task: \"F G all_in_r2\", "
+                                                     "object: o1}\n");
+    const std::string p = file(s);
+    t.push_back({"new-task/script", {"run", p, "--world", "symbolic", "--log", "nt.jsonl"},
+                 at(p, s, kTaskLine + 2, "object"), "unknown key 'object' in operator action 'new_task'",
+                 {"nt.jsonl"}});
+  }
+}
+
 void change_cases(std::vector<Case>& t) {
   auto add = [&](std::vector<std::string> changes, const std::string& where, const std::string& what) {
     std::vector<std::string> args = {"plan", "3-block-tray"};
@@ -730,6 +780,7 @@ std::vector<Case> table() {
   yaml_cases(t);
   colour_cases(t);
   task_cases(t);
+  new_task_cases(t);
   change_cases(t);
   sim_cases(t);
   camera_cases(t);

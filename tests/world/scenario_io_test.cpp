@@ -4,6 +4,8 @@
 // perturbed scenarios, and the complete example of docs/scenario.md.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -53,6 +55,8 @@ operator:
   - {time: 16, action: remove, object: o9}
   - {time: 17, action: remove_container, container: t2}
   - {time: 18, action: take_from_gripper, to: r1}
+  - {time: 20, action: new_task, task: "F G in_r1", propositions: {in_r1: "all object in r1"}}
+  - {time: 19, action: new_task, task: "F G all_in_r2"}
 )yaml";
 
 TEST(ScenarioIO, ReadsEveryField) {
@@ -126,6 +130,27 @@ void expect_round_trip(const Scenario& s) {
   }
   EXPECT_EQ(first_difference(s, back), "") << yaml;
   EXPECT_EQ(to_yaml(back), yaml);  // the writer is a fixed point
+}
+
+TEST(ScenarioIO, ReadsNewTasksSortedByTimeApartFromTheInterventions) {
+  const Scenario s = parse_scenario(kFull, "full.yaml");
+  ASSERT_EQ(s.task_changes.size(), 2u);
+  EXPECT_EQ(s.interventions.size(), 8u);
+  EXPECT_EQ(s.task_changes[0].time, 19);
+  EXPECT_EQ(s.task_changes[0].task, "F G all_in_r2");
+  EXPECT_TRUE(s.task_changes[0].propositions.empty());
+  EXPECT_EQ(s.task_changes[1].task, "F G in_r1");
+  ASSERT_EQ(s.task_changes[1].propositions.size(), 1u);
+  EXPECT_EQ(s.task_changes[1].propositions[0].name, "in_r1");
+  EXPECT_EQ(s.task_changes[1].propositions[0].text, "all object in r1");
+  EXPECT_EQ(s.task_changes[1].by, "script");
+  // Located in the file: the task's text, for errors with a caret.
+  EXPECT_EQ(s.task_changes[1].task_where.file, "full.yaml");
+  const std::string text = kFull;
+  const std::size_t at = text.find("\"F G in_r1\"");
+  EXPECT_EQ(s.task_changes[1].task_where.line, 1 + std::count(text.begin(), text.begin() + static_cast<long>(at), '\n'));
+  EXPECT_EQ(s.task_changes[1].task_where.column,
+            static_cast<int>(at - text.rfind('\n', at)) + 1);  // after the opening quote
 }
 
 TEST(ScenarioIO, RoundTripHandWritten) { expect_round_trip(parse_scenario(kFull, "full.yaml")); }

@@ -105,6 +105,17 @@ std::string first_difference(const Scenario& a, const Scenario& b) {
       d.field(idx("operator", i) + ".to", x.location, y.location);
       d.field(idx("operator", i) + ".position", x.position, y.position);
     }
+  if (d.count("new tasks", a.task_changes.size(), b.task_changes.size()))
+    for (std::size_t i = 0; i < a.task_changes.size(); ++i) {
+      const TaskChange &x = a.task_changes[i], &y = b.task_changes[i];
+      d.field(idx("new tasks", i) + ".time", x.time, y.time);
+      d.field(idx("new tasks", i) + ".task", x.task, y.task);
+      if (d.count(idx("new tasks", i) + ".propositions", x.propositions.size(), y.propositions.size()))
+        for (std::size_t k = 0; k < x.propositions.size(); ++k) {
+          d.field(idx("new tasks", i) + ".propositions." + x.propositions[k].name, x.propositions[k].text,
+                  y.propositions[k].text);
+        }
+    }
   if (d.count("colours", a.colours.size(), b.colours.size()))
     for (std::size_t i = 0; i < a.colours.size(); ++i) {
       d.field(idx("colours", i) + ".class", a.colours[i].cls, b.colours[i].cls);
