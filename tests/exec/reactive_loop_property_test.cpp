@@ -3,7 +3,9 @@
 // random tasks from the robotics patterns (reach, sequencing, ordered visits,
 // reach-avoid, counts, response, patrol with cycles) × random interventions
 // of every kind at random moments (mid-move included), random move
-// failures and, in a third of them, perception errors (perception_errors.hpp:
+// failures, in a third of them one or two new tasks from the same patterns at
+// random moments (judged on the run from the moment each took effect), and,
+// in a third of them, perception errors (perception_errors.hpp:
 // a person's changes seen late, things falsely unseen for a while; the loop
 // settles before it judges the task done). Every episode must either
 //  - succeed, and the run that actually happened — as a lasso, its final
@@ -81,20 +83,21 @@ Case random_case(std::uint64_t seed) {
   for (std::size_t i = 0; i < atoms.size(); ++i) props.push_back("p" + std::to_string(i));
   const std::string a = props[0], b = props[1], c = props[2];
   Case k;
-  std::string task;
-  switch (rng() % 8) {
-    case 0: task = "F G " + a; break;
-    case 1: task = "F (" + a + " & F G " + b + ")"; break;                        // sequencing
-    case 2: task = "F (" + a + " & F (" + b + " & F G " + c + "))"; break;       // ordered visits
-    case 3: task = "F G " + a + " & G !" + b; break;                              // reach-avoid
-    case 4: task = "F G all_in_r2 & F " + a; break;                               // reach + visit
-    case 5: task = "G (" + a + " -> F " + b + ") & F G " + c; break;              // response
-    case 6: task = "!" + b + " U " + a + " & F G " + a; break;                    // ordering by until
-    default:
-      task = "G F " + a + " & G F " + b;                                          // patrol
-      k.recurring = true;
-      break;
-  }
+  // A task from the patterns; `recurring` says whether it is a patrol.
+  auto draw_task = [&](std::uint64_t pick, bool& recurring) -> std::string {
+    recurring = false;
+    switch (pick % 8) {
+      case 0: return "F G " + a;
+      case 1: return "F (" + a + " & F G " + b + ")";                        // sequencing
+      case 2: return "F (" + a + " & F (" + b + " & F G " + c + "))";       // ordered visits
+      case 3: return "F G " + a + " & G !" + b;                              // reach-avoid
+      case 4: return "F G all_in_r2 & F " + a;                               // reach + visit
+      case 5: return "G (" + a + " -> F " + b + ") & F G " + c;              // response
+      case 6: return "!" + b + " U " + a + " & F G " + a;                    // ordering by until
+      default: recurring = true; return "G F " + a + " & G F " + b;         // patrol
+    }
+  };
+  const std::string task = draw_task(rng(), k.recurring);
   k.scenario = world::generate_scenario(g);
   // Regions three times the generated area (line layout: 0.5 m apart, so they
   // still do not overlap): room never binds, capacities do.
@@ -121,8 +124,24 @@ Case random_case(std::uint64_t seed) {
   k.world.failure_probability = rng() % 4 == 0 ? 0.15 : 0;
   k.loop.planning = PlanningMode::Inline;
   k.loop.planner.limits.time_limit = 2;  // a search that runs out is a reason nobody can confirm (counted below)
-  k.loop.max_time = k.recurring ? 900 : 300;  // two cycles of five blocks with failures can take minutes
-  k.loop.cycles = k.recurring ? 2 : 0;
+  // New tasks at random moments, in a third of the episodes (a stream of their own).
+  SplitMix64 tasks(seed ^ 0x7A5Cu);
+  bool any_recurring = k.recurring;
+  if (tasks.below(3) == 0) {
+    double at = 0;
+    for (std::uint64_t n = 1 + tasks.below(2); n-- > 0;) {
+      at += 0.5 + static_cast<double>(tasks.below(1500)) / 100.0;
+      bool rec = false;
+      world::TaskChange tc;
+      tc.time = at;
+      tc.task = draw_task(tasks.next(), rec);
+      tc.by = "test";
+      k.loop.task_changes.push_back(tc);
+      any_recurring = any_recurring || rec;
+    }
+  }
+  k.loop.max_time = any_recurring ? 900 : 300;  // two cycles of five blocks with failures can take minutes
+  k.loop.cycles = any_recurring ? 2 : 0;
   k.loop.conditions = rng() % 2 ? ConditionMode::Action : ConditionMode::State;
   k.loop.reconfiguration = rng() % 4 == 0 ? Reconfiguration::Offline : Reconfiguration::Online;
   k.loop.world_name = "symbolic";
@@ -143,6 +162,7 @@ Case random_case(std::uint64_t seed) {
   d << "seed " << seed << ": " << M << " regions, " << N << " objects, " << g.containers << " trays, task '"
     << task << "' props";
   for (const auto& at : atoms) d << " [" << at << "]";
+  for (const auto& tc : k.loop.task_changes) d << ", new task '" << tc.task << "' at " << tc.time;
   d << ", rate " << rate << ", failures " << k.world.failure_probability;
   if (k.errors)
     d << ", perception delay " << k.errors->delay << " (" << k.errors->late_probability << " at "
@@ -365,9 +385,20 @@ void check_episode(std::uint64_t seed, bool verbose = false) {
   EXPECT_EQ(m.interventions, m.interventions_applied + m.interventions_refused);
   EXPECT_EQ(static_cast<std::size_t>(m.interventions), w.history().size());
 
-  const ltl::Formula f = ltl::parse(k.scenario.task);
+  // The task in force at the end, judged on the run since it took effect.
+  ASSERT_FALSE(m.tasks.empty());
+  EXPECT_LE(m.tasks.size(), k.loop.task_changes.size() + 1);
+  for (std::size_t i = 1; i < m.tasks.size(); ++i) {
+    EXPECT_EQ(m.tasks[i].task, k.loop.task_changes[i - 1].task);
+    EXPECT_GE(m.tasks[i].time, k.loop.task_changes[i - 1].time - 1e-9);
+    EXPECT_EQ(m.tasks[i - 1].outcome, "superseded");
+  }
+  EXPECT_EQ(m.tasks.back().outcome, to_string(m.end));
+  const bool recurring = m.tasks.back().task.rfind("G F ", 0) == 0;  // the patrol pattern
+  const ltl::Formula f = ltl::parse(m.tasks.back().task);
   const auto& atoms = loop.planner().automaton().atoms;
-  const auto& run = loop.observed_run();
+  const std::vector<world::Placement> run(loop.observed_run().begin() + static_cast<long>(loop.task_from()),
+                                          loop.observed_run().end());
   ASSERT_FALSE(run.empty());
   // The run ends where the world is (held things at their source; a thing
   // outside every location keeps its last location while the loop waits for it)
@@ -401,10 +432,12 @@ void check_episode(std::uint64_t seed, bool verbose = false) {
           << "claimed done, but the run with its last state repeated violates the task";
       break;
     case EndReason::Cycles: {
-      ASSERT_TRUE(k.recurring);
+      ASSERT_TRUE(recurring);
       const auto& marks = loop.cycle_marks();
       ASSERT_EQ(marks.size(), static_cast<std::size_t>(k.loop.cycles));
-      const std::size_t end = marks.back(), from = marks.size() > 1 ? marks[marks.size() - 2] : 0;
+      const std::size_t base = loop.task_from();
+      ASSERT_GE(marks.front(), base);
+      const std::size_t end = marks.back() - base, from = marks.size() > 1 ? marks[marks.size() - 2] - base : 0;
       bool some = false;
       for (std::size_t j = from; j < end && !some; ++j)
         some = run[j] == run[end] && run_satisfies(k.scenario, f, atoms, run, j, end);
@@ -477,6 +510,7 @@ void check_tree_forms(std::uint64_t seed) {
   Case k = random_case(seed);
   k.person.rate = 0;
   k.world.failure_probability = 0;
+  k.loop.task_changes.clear();  // a change at a fixed time meets each form's run in another state
   SCOPED_TRACE(k.describe);
   std::vector<std::pair<EndReason, int>> ends;
   for (ConditionMode c : {ConditionMode::Action, ConditionMode::State})

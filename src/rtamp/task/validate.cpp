@@ -1,7 +1,9 @@
 #include "rtamp/task/validate.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
+#include <set>
 
 #include "rtamp/ltl/parser.hpp"
 #include "rtamp/util/error.hpp"
@@ -118,17 +120,35 @@ world::Scenario with_task(const world::Scenario& s, const world::TaskChange& c) 
   next.task_where = c.task_where;
   next.task_layout = c.task_layout;
   next.task_changes.clear();
+  // Only what the change brings is checked (the scenario was checked before it).
+  const world::Vocabulary known(s);
+  std::set<std::string> seen;
   for (const world::Proposition& p : c.propositions) {
+    if (!world::is_valid_proposition_name(p.name))
+      throw Error(owner + ": proposition name " + world::quoted(p.name) +
+                      " is not a valid atom (lower-case letter or '_' first, then letters, digits, '_'; not true/false)",
+                  p.where);
+    if (!seen.insert(p.name).second) throw Error(owner + ": duplicate proposition " + world::quoted(p.name), p.where);
+    if (known.is_thing(p.name) || known.is_region(p.name))
+      throw Error(owner + ": proposition " + world::quoted(p.name) + " has the name of a thing or region", p.where);
     if (const world::Proposition* old = s.find_proposition(p.name)) {
       if (old->expr == p.expr) continue;
       throw Error(owner + ": proposition " + world::quoted(p.name) + " is already defined as \"" + old->text +
                       "\" (a new task may add propositions, not change them; give this one another name)",
                   p.where);
     }
+    try {
+      world::check_expression_names(p.expr, p.text, p.where, known,
+                                    "proposition " + world::quoted(p.name) + ": ", p.layout);
+    } catch (const Error& e) {
+      throw located(e);
+    }
     next.propositions.push_back(p);
   }
+  if (std::all_of(c.task.begin(), c.task.end(), [](char ch) { return std::isspace(static_cast<unsigned char>(ch)); }))
+    throw Error(owner + ": the task is empty (write an LTL formula over the propositions, e.g. \"F G all_in_r2\")",
+                c.task_where.line > 0 ? c.task_where : c.where);
   try {
-    world::validate(next);
     TaskChecker(next).run();
   } catch (const Error& e) {
     throw located(e);
