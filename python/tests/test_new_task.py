@@ -4,8 +4,10 @@ new_tasks on the loop and on episodes, the metrics' tasks, the observer's on_tas
 and on_redirect, and the errors. Runs are judged with rtamp.holds (direct LTL
 semantics) on the observed run from task_from, the last state repeated."""
 
+import json
 import os
 import re
+import subprocess
 import threading
 
 import pytest
@@ -281,3 +283,22 @@ def test_the_docs_example_runs_as_written(capsys):
     exec(compile(docs_example(), "docs/python.md", "exec"), {"rtamp": rtamp})
     out = capsys.readouterr().out
     assert "superseded" in out and "task-done" in out
+
+
+def test_python_and_the_cli_give_the_same_new_tasks(blocks):
+    """`rtamp run --new-task TIME@LTL --json` and run_episode(new_tasks=...) run the same episode."""
+    binary = os.environ.get("RTAMP_BINARY")
+    if not binary:
+        pytest.skip("RTAMP_BINARY not set")
+    tasks = [(5.0, 'F G "o3 in r2"'), (12.5, 'F G "o1 in r1" & F G "o3 in r1"')]
+    args = [a for t, f in tasks for a in ("--new-task", f"{t:g}@{f}")]
+    out = subprocess.run([binary, "run", "3-block", "--world", "symbolic", *args, "--json", "--quiet"],
+                         capture_output=True, text=True)
+    assert out.returncode == 0, out.stderr
+    cli = json.loads(out.stdout)
+    m = rtamp.run_episode(blocks, world="symbolic", new_tasks=tasks)
+    mine = [{"time": x.time, "task": x.task, "by": x.by, "automaton_states": x.automaton_states,
+             "cycles": x.cycles, "outcome": x.outcome} for x in m.tasks]
+    theirs = [dict(x, by="api" if x["by"] == "command line" else x["by"]) for x in cli["tasks"]]
+    assert mine == theirs and [x["outcome"] for x in mine] == ["superseded", "superseded", "task-done"]
+    assert (cli["end"], cli["world_time"]) == (m.end, pytest.approx(m.world_time, abs=1e-9))
