@@ -10,6 +10,7 @@
 
 #include "bindings.hpp"
 #include "choices.hpp"
+#include "loop.hpp"
 #include "rtamp/episode/episode.hpp"
 #include "rtamp/plan/registry.hpp"
 #include "rtamp/sim/perception.hpp"
@@ -63,7 +64,7 @@ void bind_episode(py::module_& m) {
       "One episode's options, as `rtamp run` fills them in (docs/python.md): the world by name, the\n"
       "seed, the person (scripted_operator, random_rate, random_change, change_window), the loop\n"
       "(algorithm, cost, conditions, reconfiguration, planning, max_time, tick_period, cycles,\n"
-      "max_failures_per_move, outside_grace) and the outputs (log, trees, video, timeline).\n"
+      "max_failures_per_move, outside_grace, new_tasks) and the outputs (log, trees, video, timeline).\n"
       "EpisodeOptions(**attributes); without planning, the world's own planning mode.");
   cls.def(py::init([](const py::kwargs& kw) {
           py::object o = py::cast(EpisodeOptions{}, py::return_value_policy::move);
@@ -157,6 +158,11 @@ void bind_episode(py::module_& m) {
           "outside_grace", [](const EpisodeOptions& o) { return o.loop.outside_grace; },
           [](EpisodeOptions& o, double v) { o.loop.outside_grace = v; },
           "Seconds a thing may be outside every location before it counts as lost")
+      .def_property(
+          "new_tasks", [](const EpisodeOptions& o) { return new_tasks(o.loop.task_changes); },
+          [](EpisodeOptions& o, const std::vector<NewTask>& v) { o.loop.task_changes = task_changes(v); },
+          "New tasks at world times, after the scenario's operator script's: a list of (time, formula)\n"
+          "or (time, formula, {name: expression}) (as `rtamp run --new-task TIME@LTL`)")
       .def_property(
           "log", [](const EpisodeOptions& o) { return o.outputs.log; },
           [](EpisodeOptions& o, std::string v) { o.outputs.log = std::move(v); }, "JSON Lines log file ('': none)")

@@ -1,8 +1,9 @@
 // Python bindings of the reactive loop (paper Algorithm 1; exec/reactive_loop.hpp)
 // over exec::World, with a World written in Python (the PyWorld trampoline),
 // episode observers written in Python, the episode's metrics and its observed
-// run. run() and step() release the GIL; every call into Python (world,
-// observer, cost model on the planner's worker thread) takes it again.
+// run, and new tasks given while it runs (set_task, new_tasks). run(), step()
+// and set_task() release the GIL; every call into Python (world, observer,
+// cost model on the planner's worker thread) takes it again.
 #include "loop.hpp"
 
 #include <memory>
@@ -13,6 +14,7 @@
 #include "rtamp/bt/text_render.hpp"
 #include "rtamp/exec/intervenable.hpp"
 #include "rtamp/exec/reactive_loop.hpp"
+#include "rtamp/world/propositions.hpp"
 
 namespace rtamp::python {
 
@@ -136,6 +138,24 @@ class PyObserver : public exec::EpisodeObserver {
     d["automaton_states"] = e.automaton_states;
     f(t, d);
   }
+  void on_task(double t, const exec::TaskEvent& e) override {
+    py::gil_scoped_acquire gil;
+    py::function f = py::get_override(static_cast<const exec::EpisodeObserver*>(this), "on_task");
+    if (!f) return;
+    py::dict props;
+    for (const auto& p : e.change.propositions) props[py::str(p.name)] = p.text;
+    py::dict d;
+    d["task"] = e.change.task;
+    d["by"] = e.change.by;
+    d["applied"] = e.applied;
+    d["refused"] = e.refused;
+    d["automaton_states"] = e.automaton ? py::object(py::int_(e.automaton->num_states())) : py::object(py::none());
+    d["propositions"] = props;
+    f(t, d);
+  }
+  void on_redirect(double t, const std::string& action, const std::string& rule) override {
+    PYBIND11_OVERRIDE(void, exec::EpisodeObserver, on_redirect, t, action, rule);
+  }
   void on_cycle(double t, int completed) override {
     PYBIND11_OVERRIDE(void, exec::EpisodeObserver, on_cycle, t, completed);
   }
@@ -210,6 +230,55 @@ world::Placement to_placement(const py::handle& o, const ClassTable& classes) {
     p.things.emplace(std::move(name), std::move(t));
   }
   return p;
+}
+
+world::TaskChange task_change(double time, const std::string& formula, const PropositionTexts& propositions,
+                              const std::string& origin) {
+  world::TaskChange c;
+  c.time = time;
+  c.task = formula;
+  c.task_where = SourceLocation{origin + "(formula)", 1, 1};
+  c.where = SourceLocation{origin, 0, 0};
+  c.by = "api";
+  for (const auto& [name, text] : propositions) {
+    world::Proposition p;
+    p.name = name;
+    p.text = text;
+    p.where = SourceLocation{origin + "(propositions['" + name + "'])", 1, 1};
+    p.expr = world::parse_prop_expr(p.text, p.where);
+    c.propositions.push_back(std::move(p));
+  }
+  return c;
+}
+
+std::vector<world::TaskChange> task_changes(const std::vector<NewTask>& tasks) {
+  std::vector<world::TaskChange> out;
+  for (std::size_t i = 0; i < tasks.size(); ++i) {
+    const std::string origin = "new_tasks[" + std::to_string(i) + "]";
+    std::visit(
+        [&](const auto& t) {
+          if constexpr (std::tuple_size_v<std::decay_t<decltype(t)>> == 2)
+            out.push_back(task_change(std::get<0>(t), std::get<1>(t), {}, origin));
+          else
+            out.push_back(task_change(std::get<0>(t), std::get<1>(t), std::get<2>(t), origin));
+        },
+        tasks[i]);
+  }
+  return out;
+}
+
+std::vector<NewTask> new_tasks(const std::vector<world::TaskChange>& changes) {
+  std::vector<NewTask> out;
+  for (const auto& c : changes) {
+    if (c.propositions.empty()) {
+      out.emplace_back(std::tuple<double, std::string>{c.time, c.task});
+      continue;
+    }
+    PropositionTexts props;
+    for (const auto& p : c.propositions) props[p.name] = p.text;
+    out.emplace_back(std::tuple<double, std::string, PropositionTexts>{c.time, c.task, std::move(props)});
+  }
+  return out;
 }
 
 void bind_loop(py::module_& m) {
@@ -293,6 +362,19 @@ void bind_loop(py::module_& m) {
       .def("take_events", &exec::World::take_events,
            "The WorldEvents (interventions applied or refused) since the last call; the world forgets them.");
 
+  py::class_<exec::TaskOutcome>(m, "TaskOutcome", "One task that was in force during an episode, and how it ended.")
+      .def_readonly("time", &exec::TaskOutcome::time, "World time (s) at which it took effect (0 for the scenario's task).")
+      .def_readonly("task", &exec::TaskOutcome::task, "The LTL formula, as text.")
+      .def_readonly("by", &exec::TaskOutcome::by, "Who gave it: 'scenario', 'script', 'command line', 'page', 'api', ...")
+      .def_readonly("automaton_states", &exec::TaskOutcome::automaton_states, "States of its automaton.")
+      .def_readonly("cycles", &exec::TaskOutcome::cycles, "Cycles of a recurring task completed while it was in force.")
+      .def_readonly("outcome", &exec::TaskOutcome::outcome,
+                    "'superseded' (a newer task replaced it), else the episode's end ('task-done', ...).")
+      .def("__repr__", [](const exec::TaskOutcome& x) {
+        return "<rtamp.TaskOutcome " + py::repr(py::str(x.task)).cast<std::string>() + " by " + x.by +
+               " at t=" + std::to_string(x.time) + ": " + x.outcome + ">";
+      });
+
   py::class_<exec::EpisodeMetrics>(m, "EpisodeMetrics", "What one episode measured (the quantities of the paper's Table I).")
       .def_readonly("success", &exec::EpisodeMetrics::success, "The task was done (end == 'success').")
       .def_property_readonly("end", [](const exec::EpisodeMetrics& x) { return exec::to_string(x.end); },
@@ -311,6 +393,8 @@ void bind_loop(py::module_& m) {
       .def_readonly("actions_succeeded", &exec::EpisodeMetrics::actions_succeeded, "Moves that succeeded.")
       .def_readonly("actions_failed", &exec::EpisodeMetrics::actions_failed, "Moves that failed.")
       .def_readonly("cycles", &exec::EpisodeMetrics::cycles, "Completed cycles of a recurring task.")
+      .def_readonly("tasks", &exec::EpisodeMetrics::tasks,
+                    "Every task in force, in order (the scenario's first): list of TaskOutcome.")
       .def_readonly("run_length", &exec::EpisodeMetrics::run_length, "States of the observed run.")
       .def_readonly("world_time", &exec::EpisodeMetrics::world_time, "World time (s) at the end.")
       .def_readonly("wall_seconds", &exec::EpisodeMetrics::wall_seconds, "Wall time (s) of the episode.")
@@ -334,9 +418,13 @@ void bind_loop(py::module_& m) {
       m, "Observer",
       "Receives what an episode does; subclass and define any of on_begin(info), on_action(t, what,\n"
       "action, why), on_intervention(event), on_things_changed(t, added, removed), on_progress(t,\n"
-      "placement, automaton_states), on_replan_request(t, why), on_plan(t, dict), on_cycle(t, n),\n"
-      "on_end(t, metrics, placement). Called on the loop's thread with the GIL taken; they must not\n"
-      "call back into the loop.")
+      "placement, automaton_states), on_replan_request(t, why), on_plan(t, dict), on_task(t, dict),\n"
+      "on_redirect(t, action, rule), on_cycle(t, n), on_end(t, metrics, placement). on_task: a new task\n"
+      "was taken in or refused; its dict has task, by, applied, refused (why, '' if applied),\n"
+      "automaton_states (the new automaton's size; None if refused) and propositions ({name: text}).\n"
+      "on_redirect: the running move was halted because finishing it would leave the new task no\n"
+      "accepting future (`rule` says so). Called on the loop's thread with the GIL taken; they must\n"
+      "not call back into the loop.")
       .def(py::init<>());
 
   py::class_<PyLoop>(m, "ReactiveLoop",
@@ -345,12 +433,13 @@ void bind_loop(py::module_& m) {
                      "CostModel), conditions ('action' | 'state'), reconfiguration ('online' | 'offline'),\n"
                      "planning ('worker': plans on a worker thread while the tree ticks, charged its wall\n"
                      "time; 'inline': synchronous, deterministic), max_time, tick_period,\n"
-                     "max_failures_per_move, outside_grace, cycles, seed, world_name.")
+                     "max_failures_per_move, outside_grace, cycles, seed, world_name, new_tasks (a list of\n"
+                     "(time, formula) or (time, formula, {name: expression}): a new task at that world time).")
       .def(py::init([](py::object world, const world::Scenario& s, const std::string& algorithm,
                        const py::object& cost, const std::string& conditions, const std::string& reconfiguration,
                        const std::string& planning, double max_time, double tick_period, int max_failures,
                        double outside_grace, int cycles, std::uint64_t seed, const std::string& world_name,
-                       double time_limit) {
+                       double time_limit, const std::vector<NewTask>& new_task_list) {
              PlannerConfig pc = planner_config(s, algorithm, cost, "partial", true, true, time_limit, 20'000'000);
              exec::LoopOptions o;
              o.planner = pc.options;
@@ -364,13 +453,15 @@ void bind_loop(py::module_& m) {
              o.cycles = cycles;
              o.seed = seed;
              o.world_name = world_name;
+             o.task_changes = task_changes(new_task_list);
              return std::make_unique<PyLoop>(std::move(world), s, std::move(o), std::move(pc.model_ref));
            }),
            py::arg("world"), py::arg("scenario"), py::kw_only(), py::arg("algorithm") = "astar-exp",
            py::arg("cost") = "euclid", py::arg("conditions") = "action", py::arg("reconfiguration") = "online",
            py::arg("planning") = "worker", py::arg("max_time") = 900.0, py::arg("tick_period") = 0.02,
            py::arg("max_failures_per_move") = 5, py::arg("outside_grace") = 3.0, py::arg("cycles") = 0,
-           py::arg("seed") = 0, py::arg("world_name") = "python", py::arg("time_limit") = 60.0)
+           py::arg("seed") = 0, py::arg("world_name") = "python", py::arg("time_limit") = 60.0,
+           py::arg("new_tasks") = std::vector<NewTask>{})
       .def("add_observer", &PyLoop::add_observer, py::arg("observer"), "Attaches an rtamp.Observer (kept alive by the loop).")
       .def("step", [](PyLoop& l) {
         py::gil_scoped_release release;
@@ -381,10 +472,26 @@ void bind_loop(py::module_& m) {
         return l.loop().run();
       }, "Steps until the episode ends; returns its EpisodeMetrics (the GIL is released meanwhile).")
       .def("stop", [](PyLoop& l) { l.loop().stop(); }, "Ends the episode at the next step (thread-safe).")
+      .def(
+          "set_task",
+          [](PyLoop& l, const std::string& formula, const std::optional<PropositionTexts>& propositions) {
+            world::TaskChange c = task_change(0, formula, propositions.value_or(PropositionTexts{}), "set_task");
+            py::gil_scoped_release release;
+            l.loop().set_task(std::move(c));
+          },
+          py::arg("formula"), py::arg("propositions") = py::none(),
+          "A new task from now on (thread-safe: e.g. from another thread while run() runs), taken in at\n"
+          "the next step: `formula` over the scenario's propositions, quoted expressions and the new ones\n"
+          "in `propositions` ({name: expression}). The run is judged for it from the state it takes\n"
+          "effect in (task_from). Raises rtamp.Error naming what is wrong (bad formula, unknown or\n"
+          "redefined proposition, bad expression; the refusal is also reported to observers' on_task),\n"
+          "or if the episode has ended.")
       .def_property_readonly("ended", [](PyLoop& l) { return l.loop().ended(); }, "The episode has ended.")
       .def_property_readonly("metrics", [](PyLoop& l) { return l.loop().metrics(); }, "The EpisodeMetrics so far.")
       .def_property_readonly("observed_run", [](PyLoop& l) { return l.loop().observed_run(); },
                              "The observed run: symbolic states (Placements), in order.")
+      .def_property_readonly("task_from", [](PyLoop& l) { return l.loop().task_from(); },
+                             "The index into observed_run at which the task in force took effect (0: the scenario's).")
       .def_property_readonly("cycle_marks", [](PyLoop& l) { return l.loop().cycle_marks(); },
                              "For recurring tasks: the index into the observed run at which each counted cycle ended.")
       .def_property_readonly("actions", [](PyLoop& l) { return l.loop().tree().tuples(); },

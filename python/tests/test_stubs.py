@@ -105,3 +105,23 @@ def test_mypy_reads_the_stub_and_checks_a_user_against_it(tmp_path):
     out = r.stdout
     # The wrong line is caught (a str argument, a Scenario returned); the correct lines pass.
     assert "user.py:4:" in out and "user.py:2:" not in out and "user.py:3:" not in out, out
+
+
+def test_the_new_task_api_is_typed(tree):
+    # Typed as the module's other names are: no Any where pybind11 knows the type.
+    classes = {c.name: c for c in tree.body if isinstance(c, ast.ClassDef)}
+
+    def member(cls, name):
+        return next(m for m in classes[cls].body if isinstance(m, ast.FunctionDef) and m.name == name)
+
+    assert ast.unparse(member("EpisodeMetrics", "tasks").returns) == "List[TaskOutcome]"
+    outcome = {m.name: ast.unparse(m.returns) for m in classes["TaskOutcome"].body if isinstance(m, ast.FunctionDef)}
+    assert outcome == {"automaton_states": "int", "by": "str", "cycles": "int", "outcome": "str", "task": "str",
+                       "time": "float"}
+    set_task = member("ReactiveLoop", "set_task")
+    assert [ast.unparse(a.annotation) for a in set_task.args.args[1:]] == ["str", "Optional[Dict[str, str]]"]
+    assert ast.unparse(member("ReactiveLoop", "task_from").returns) == "int"
+    new_tasks = "List[Union[Tuple[float, str], Tuple[float, str, Dict[str, str]]]]"
+    assert ast.unparse(member("EpisodeOptions", "new_tasks").returns) == new_tasks
+    init = member("ReactiveLoop", "__init__")
+    assert ast.unparse(next(a for a in init.args.kwonlyargs if a.arg == "new_tasks").annotation) == new_tasks
