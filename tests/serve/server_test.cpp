@@ -403,6 +403,99 @@ TEST(ServeServer, InterventionIsAppliedLoggedAndReactedTo) {
   fs::remove_all(dir);
 }
 
+// A page gives a running episode a new task: the reply accepts it, the log's
+// `task` record carries the new automaton, the episode ends satisfying it (all
+// blocks in r3, not r2); a malformed formula is refused with the reason and the
+// caret line; a page that joins later has the task record in its history; the
+// resulting log replays, and a replay refuses a task request.
+TEST(ServeServer, APageGivesANewTaskAndTheLogReplays) {
+  const world::Scenario s = world::load_scenario("3-block-tray");
+  const fs::path dir = temp_dir("task");
+  {
+    LiveOptions o;
+    o.episode = symbolic_options((dir / "ep.jsonl").string());
+    o.episode.scripted_operator = false;
+    o.paused = true;
+    o.speed = 5;
+    Served sv(s, o);
+    WsClient c(sv.port());
+    auto hello = c.read();
+    ASSERT_TRUE(hello);
+    // Refused: a formula that does not parse, with the caret under the column.
+    c.send(json{{"type", "task"}, {"id", 1}, {"task", "F G ((all_in_r2"}});
+    auto r = c.reply(1);
+    ASSERT_TRUE(r);
+    EXPECT_FALSE((*r)["ok"]);
+    EXPECT_FALSE((*r)["error"].get<std::string>().empty());
+    ASSERT_TRUE((*r)["detail"].is_string()) << r->dump();
+    EXPECT_NE((*r)["detail"].get<std::string>().find('^'), std::string::npos) << r->dump();
+    // Refused: an unknown proposition, named.
+    c.send(json{{"type", "task"}, {"id", 2}, {"task", "F all_in_r9"}});
+    r = c.reply(2);
+    ASSERT_TRUE(r);
+    EXPECT_FALSE((*r)["ok"]);
+    EXPECT_NE((*r)["error"].get<std::string>().find("all_in_r9"), std::string::npos) << r->dump();
+    // Accepted: the blocks in r3 (before anything moved: the arm goes there).
+    c.send(json{{"type", "task"}, {"id", 3}, {"task", "F G \"all block in r3\""}});
+    r = c.reply(3);
+    ASSERT_TRUE(r);
+    EXPECT_TRUE((*r)["ok"]) << r->dump();
+    c.send(json{{"type", "control"}, {"id", 4}, {"action", "resume"}});
+    ASSERT_TRUE(c.reply(4));
+    const auto task = c.read_until([](const json& m) {
+      return m["type"] == "log" && m["record"]["ev"] == "task" && m["record"]["applied"] == true;
+    });
+    ASSERT_TRUE(task);
+    const json& rec = (*task)["record"];
+    EXPECT_EQ(rec["by"], "page");
+    EXPECT_EQ(rec["task"], "F G \"all block in r3\"");
+    EXPECT_EQ(rec["automaton_states"].get<std::size_t>(), rec["automaton"]["states"].size());
+    EXPECT_FALSE(rec["automaton"]["edges"].empty());
+    EXPECT_NE(rec["automaton"].dump(), (*hello)["automaton"].dump());
+    // A page that joins now has the task change in its history.
+    WsClient late(sv.port());
+    auto h2 = late.read();
+    ASSERT_TRUE(h2);
+    bool seen = false;
+    for (const auto& x : (*h2)["history"]) seen = seen || (x["ev"] == "task" && x["applied"] == true);
+    EXPECT_TRUE(seen);
+    const exec::EpisodeMetrics m = sv.episode.wait();
+    EXPECT_TRUE(m.success) << m.reason;
+    // The end placement satisfies the new task: every block in r3.
+    const auto log = read_log(dir / "ep.jsonl");
+    ASSERT_EQ(log.back()["ev"], "end");
+    for (const auto& [thing, where] : log.back()["placement"].items())
+      if (thing.rfind("o", 0) == 0) {
+        EXPECT_EQ(where, "r3") << thing;
+      }
+  }
+  // The log with the task change replays (the checker accepts `task` records).
+  ReplayOptions ro;
+  ro.speed = 0;
+  ro.paused = true;
+  Replay replay(s, (dir / "ep.jsonl").string(), ro);
+  Server server({"127.0.0.1", 0, ""}, replay);
+  server.start();
+  replay.start();
+  WsClient c(server.port());
+  ASSERT_TRUE(c.read());
+  c.send(json{{"type", "task"}, {"id", 1}, {"task", "F all_in_r2"}});
+  auto r = c.reply(1);
+  ASSERT_TRUE(r);
+  EXPECT_FALSE((*r)["ok"]);
+  EXPECT_NE((*r)["error"].get<std::string>().find("replay"), std::string::npos) << r->dump();
+  // Seek to the end: the hello's history holds the task change.
+  c.send(json{{"type", "control"}, {"id", 2}, {"action", "seek"}, {"value", 1e6}});
+  const auto hello = c.read_until([](const json& m) { return m["type"] == "hello"; });
+  ASSERT_TRUE(hello);
+  bool replayed = false;
+  for (const auto& x : (*hello)["history"]) replayed = replayed || (x["ev"] == "task" && x["applied"] == true);
+  EXPECT_TRUE(replayed);
+  replay.stop();
+  server.stop();
+  fs::remove_all(dir);
+}
+
 // A person fixes the scene while the episode is paused (before the first move):
 // the intervention is applied at once and logged when the loop goes on.
 TEST(ServeServer, InterventionWhilePausedIsLoggedAfterResume) {

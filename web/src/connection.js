@@ -55,6 +55,10 @@ export class Connection {
     return this.request('intervene', body);
   }
 
+  task(task) {
+    return this.request('task', { task });
+  }
+
   control(action, value) {
     return this.request('control', value === undefined ? { action } : { action, value });
   }

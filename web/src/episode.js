@@ -19,6 +19,7 @@ export class Episode {
     this.end = null;
     this.placement = null;
     this.info = null;
+    this.task = null; // the task in force after a change: {task, automaton, version}
   }
 
   add(r) {
@@ -63,6 +64,20 @@ export class Episode {
           kind: r.applied ? 'intervention' : 'refused',
           text: `${r.kind} ${r.subject || ''}${r.location ? ' → ' + r.location : ''}${r.applied ? '' : ' (refused)'}${r.detail ? ': ' + r.detail : ''}`,
         });
+        break;
+      case 'task':
+        if (r.applied) {
+          this.task = { task: r.task, automaton: r.automaton, version: (this.task?.version ?? 0) + 1 };
+          this.tracked = [];
+        }
+        this.timeline.push({
+          t,
+          kind: r.applied ? 'task' : 'refused',
+          text: r.applied ? `new task from ${r.by}: ${r.task} (${r.automaton_states} automaton states)` : `new task from ${r.by} refused: ${r.refused}`,
+        });
+        break;
+      case 'redirect':
+        this.timeline.push({ t, kind: 'replan', text: `redirected ${r.action}: ${r.rule}` });
         break;
       case 'replan':
         this.timeline.push({ t, kind: 'replan', text: `replan: ${r.why}` });

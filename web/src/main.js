@@ -85,6 +85,14 @@ new DragInteraction(app.scene, {
   },
 });
 
+// The header's task field: a new task for the running episode (refused: the reason and the caret line).
+$('#task-form').addEventListener('submit', (ev) => {
+  ev.preventDefault();
+  const task = $('#task-input').value.trim();
+  if (!task) return;
+  app.conn.task(task).then((r) => app.notice.reply('new task', r));
+});
+
 function onHello(h) {
   app.hello = h;
   app.t = h.t ?? 0;
@@ -94,6 +102,7 @@ function onHello(h) {
   $('#task').textContent = h.task;
   $('#mode').textContent = `${h.mode} · ${h.world}`;
   app.automaton.setAutomaton(h.automaton);
+  app.taskShown = 0;
   app.timeline.setMode(h.mode, h.replay?.duration);
   app.timeline.reset();
   app.episode.reset();
@@ -109,6 +118,13 @@ function onHello(h) {
 
 function refreshLog() {
   const ep = app.episode;
+  // A task change redraws the automaton and the header's task (hello's are the first task's).
+  const version = ep.task?.version ?? 0;
+  if (version !== app.taskShown) {
+    app.taskShown = version;
+    $('#task').textContent = ep.task ? ep.task.task : app.hello.task;
+    app.automaton.setAutomaton(ep.task ? ep.task.automaton : app.hello.automaton);
+  }
   app.plan.update(ep.plan);
   app.scene.setMoves(ep.end ? [] : ep.remaining());
   app.automaton.highlight(ep.tracked);

@@ -18,7 +18,7 @@ export class Notice {
   // A reply to one of the page's requests: refused ones show why.
   reply(what, r) {
     if (r.ok) this.show(`${what}: accepted`, 'ok');
-    else this.show(`${what}: refused — ${r.error}`, 'error');
+    else this.show(`${what}: refused — ${r.error}${r.detail ? '\n' + r.detail : ''}`, 'error');
     return r;
   }
 }

@@ -162,6 +162,32 @@ async function compareScreenshot(page) {
 }
 
 const cases = {
+  // The person types a new task (blocks onto the tray r3 instead of into r2): a bad one is
+  // refused with the caret line; the accepted one's automaton is drawn, the header shows
+  // it, the timeline has its line, and the robot's plan now ends with blocks in r3.
+  async newtask() {
+    await withPage([scenario('3-block-tray'), '--world', 'symbolic', '--no-operator', '--paused'], async ({ page, ws }) => {
+      const h = hello(ws);
+      const drawnBefore = await page.textContent('#automaton');
+      await page.fill('#task-input', 'F G ((all_in_r2');
+      await page.click('#task-send');
+      await waitFor(async () => (await page.textContent('#notice')).includes('refused'), 'the refusal');
+      assert.match(await page.textContent('#notice'), /\^/);
+      const task = 'F G "all block in r3"';
+      await page.fill('#task-input', task);
+      await page.click('#task-send');
+      await resumeAndWaitForAMove(page, ws);
+      await waitFor(() => logRecords(ws).some((r) => r.ev === 'task' && r.applied), 'the task record');
+      const rec = logRecords(ws).find((r) => r.ev === 'task' && r.applied);
+      await waitFor(async () => (await page.textContent('#task')) === task, 'the header task');
+      assert.notDeepEqual(rec.automaton, h.automaton);
+      await waitFor(async () => (await page.textContent('#automaton')) !== drawnBefore, 'the new automaton drawn');
+      assert.equal(await page.locator('.ba-state').count(), rec.automaton.states.length);
+      await waitFor(async () => (await page.textContent('#timeline')).includes('new task from page'), 'the timeline line');
+      await waitFor(() => logRecords(ws).some((r) => r.ev === 'plan' && r.t >= rec.t && r.actions.some((a) => a.endsWith(', r3)'))), 'a plan into r3');
+    });
+  },
+
   async loads() {
     await withPage([scenario('3-block-tray'), '--world', 'symbolic'], async ({ page, ws }) => {
       const h = hello(ws);

@@ -181,6 +181,26 @@ void LiveEpisode::handle(const Request& r, Reply reply) {
     hub_->state(s);
     return;
   }
+  if (r.type == Request::Type::Task) {
+    // set_task is thread-safe (the loop takes it in at its next step) and
+    // checks the formula at once: a refusal is answered with the Error's
+    // message and detail (the formula with a caret under the column).
+    world::TaskChange change;
+    change.task = r.task;
+    change.task_where = SourceLocation{"task", 1, 1};
+    change.by = "page";
+    change.where = SourceLocation{"page", 0, 0};
+    try {
+      episode_->loop().set_task(std::move(change));
+    } catch (const Error& e) {
+      reply(reply_message(r.id, false, e.message(), "\"detail\":" +
+          nlohmann::json(e.detail()).dump(-1, ' ', false, nlohmann::json::error_handler_t::replace)));
+      return;
+    }
+    reply(reply_message(r.id, true));
+    playback_.wake();
+    return;
+  }
   // Intervene: queued for the loop's thread.
   {
     std::lock_guard lock(mu_);

@@ -26,7 +26,9 @@
 // time it took effect, precedes every record of later world time (the log
 // stays in time order and replays). Each gets one reply: refused
 // (the check's or the world's reason), or applied, with the server-side
-// latency from receipt to applied ("server_ms").
+// latency from receipt to applied ("server_ms"). A page's `task` request goes
+// straight to ReactiveLoop::set_task (thread-safe; taken in at the loop's next
+// step) by "page": a refusal is replied with the Error's message and detail.
 //
 // Invariants: nothing a page sends can throw on the loop's thread or block it
 // (replies and broadcasts only queue); the log is complete whatever ends the

@@ -66,7 +66,8 @@ void numbers(const json& a, const std::string& ev, const char* name, std::size_t
 }
 
 const std::set<std::string> kKinds = {"episode", "run",    "plan",   "tree",  "replan", "things",  "intervention",
-                                      "perceived", "handled_by_tree", "action", "cycle", "tick", "frame", "camera", "end"};
+                                      "perceived", "handled_by_tree", "action", "cycle", "tick", "frame", "camera", "end",
+                                      "task", "redirect"};
 const std::set<std::string> kBeliefStates = {"visible", "occluded", "held", "out-of-view", "missing"};
 const std::set<std::string> kInterventions = {"relocate",         "add", "remove", "add-container",
                                               "remove-container", "take-from-gripper"};
@@ -225,6 +226,21 @@ void LogCheck::record(const json& j) {
       if (!kBeliefStates.count(state.get<std::string>())) bad(ev, "state", "is not a belief state");
       numbers(need(th, ev, "at", &J::is_array, "an array"), ev, "at", 3);
     }
+  } else if (ev == "task") {
+    need(j, ev, "task", &J::is_string, "a string");
+    need(j, ev, "by", &J::is_string, "a string");
+    may(j, ev, "propositions", &J::is_object, "an object");
+    if (need(j, ev, "applied", &J::is_boolean, "true or false").get<bool>()) {
+      need(j, ev, "automaton_states", &J::is_number_unsigned, "a count");
+      const json& a = need(j, ev, "automaton", &J::is_object, "an object");
+      need(a, ev, "states", &J::is_array, "an array");
+      need(a, ev, "edges", &J::is_array, "an array");
+    } else {
+      need(j, ev, "refused", &J::is_string, "a string");
+    }
+  } else if (ev == "redirect") {
+    need(j, ev, "action", &J::is_string, "a string");
+    need(j, ev, "rule", &J::is_string, "a string");
   } else if (ev == "end") {
     need(j, ev, "success", &J::is_boolean, "true or false");
     placement(need(j, ev, "placement", &J::is_object, "an object"), "`end` record: \"placement\"", false);

@@ -240,6 +240,10 @@ void Replay::handle(const Request& r, Reply reply) {
     reply(reply_message(r.id, false, "this is a replay: interventions change nothing (run `rtamp serve` live)"));
     return;
   }
+  if (r.type == Request::Type::Task) {
+    reply(reply_message(r.id, false, "this is a replay: its task changes are the log's (run `rtamp serve` live)"));
+    return;
+  }
   const std::string& a = r.action;
   if (a == "speed" && !(*r.value >= 0 && *r.value <= 1000)) {
     reply(reply_message(r.id, false, "speed must be in [0, 1000] (0: as fast as possible)"));

@@ -59,7 +59,7 @@ Request parse_request(const std::string& text) {
   }
   auto type = j.find("type");
   if (type == j.end() || !type->is_string()) {
-    r.error = "a request needs a 'type' (\"intervene\" or \"control\")";
+    r.error = "a request needs a 'type' (\"intervene\", \"task\" or \"control\")";
     return r;
   }
   const std::string t = type->get<std::string>();
@@ -91,6 +91,15 @@ Request parse_request(const std::string& text) {
     r.type = Request::Type::Intervene;
     return r;
   }
+  if (t == "task") {
+    if (!string_field(j, "task", r.task, r.error)) return r;
+    if (r.task.find_first_not_of(" \t\r\n") == std::string::npos) {
+      r.error = "a task request needs a 'task' (an LTL formula)";
+      return r;
+    }
+    r.type = Request::Type::Task;
+    return r;
+  }
   if (t == "control") {
     if (!string_field(j, "action", r.action, r.error)) return r;
     if (r.action != "pause" && r.action != "resume" && r.action != "step" && r.action != "speed" &&
@@ -112,7 +121,7 @@ Request parse_request(const std::string& text) {
     r.type = Request::Type::Control;
     return r;
   }
-  r.error = "unknown request type '" + t + "' (expected \"intervene\" or \"control\")";
+  r.error = "unknown request type '" + t + "' (expected \"intervene\", \"task\" or \"control\")";
   return r;
 }
 

@@ -14,7 +14,7 @@
 namespace rtamp::serve {
 
 struct Request {
-  enum class Type { Intervene, Control, Invalid };
+  enum class Type { Intervene, Control, Task, Invalid };
   Type type = Type::Invalid;
   std::string id = "null";  // the request's id as JSON text (echoed in the reply)
   std::string error;        // Invalid: why
@@ -23,6 +23,8 @@ struct Request {
   // Control: "pause" | "resume" | "step" | "speed" | "seek"; `value` for speed and seek.
   std::string action;
   std::optional<double> value;
+  // Task: the new task's LTL formula (non-empty).
+  std::string task;
 };
 
 Request parse_request(const std::string& text);
