@@ -164,8 +164,6 @@ def test_a_task_the_current_state_cannot_satisfy_ends_unsatisfiable(blocks):
     assert [x.outcome for x in m.tasks] == ["superseded", "unsatisfiable"]
 
 
-@pytest.mark.xfail(strict=True, reason="the core ends task-done on the belief while the arm holds a block: "
-                   "the held block counts at its source, the move is halted and the episode ends with it in the hand")
 def test_a_task_done_at_once_holds_in_the_world_too(blocks):
     # At t = 5 the arm carries o1 out of r1; the belief still has every block in r1.
     world = rtamp.SymbolicWorld(blocks)
