@@ -844,15 +844,14 @@ bool ReactiveLoop::running_move_defeats_task() {
 void ReactiveLoop::apply_task_change(world::TaskChange c) {
   const double now = world_.time();
   c.time = now;
+  wait_for_worker();  // the worker uses the planner
   try {
-    (void)task::with_task(planner_->scenario(), c);  // e.g. a proposition another task change redefined
+    planner_->set_task(c);  // checks first (e.g. a proposition another task change redefined): nothing changes on a refusal
   } catch (const Error& e) {
     for (auto* o : observers_) o->on_task(now, TaskEvent{c, false, e.message(), nullptr});
     return;
   }
-  wait_for_worker();
   pending_.reset();  // a plan for the old task
-  planner_->set_task(c);
   scenario_.task = planner_->scenario().task;
   scenario_.propositions = planner_->scenario().propositions;
   TaskOutcome& before = metrics_.tasks.back();
