@@ -191,44 +191,29 @@ json automaton_properties() {
 // start, then every applied task change).
 std::string task_schema() {
   const json automaton{{"type", "object"}, {"properties", automaton_properties()}, {"required", {"states", "edges"}}};
-  return json{{"title", "rtamp.Task"},
-              {"description", "The task in force from this time on (docs/exec.md \"A new task\")"},
-              {"type", "object"},
-              {"properties",
-               {{"timestamp", json::parse(kTime)},
-                {"task", {{"type", "string"}, {"description", "the LTL formula"}}},
-                {"by", {{"type", "string"}, {"description", "scenario, script, command line, page or api"}}},
-                {"automaton_states", {{"type", "integer"}, {"minimum", 0}}},
-                {"automaton", automaton},
-                {"propositions", {{"type", "object"}, {"description", "propositions the change brought: name -> expression"}}}}},
-              {"required", {"timestamp", "task", "by"}}}
-      .dump();
+  return rtamp_schema("rtamp.Task", "The task in force from this time on (docs/exec.md \"A new task\")",
+                      {{"task", {{"type", "string"}, {"description", "the LTL formula"}}},
+                       {"by", {{"type", "string"}, {"description", "scenario, script, command line, page or api"}}},
+                       {"automaton_states", {{"type", "integer"}, {"minimum", 0}}},
+                       {"automaton", automaton},
+                       {"propositions", {{"type", "object"}, {"description", "those the change brought: name -> expression"}}}},
+                      {"task", "by"});
 }
 
 // /automaton: the task's Büchi automaton, at the same times as /task.
 std::string automaton_schema() {
   json properties = automaton_properties();
-  properties["timestamp"] = json::parse(kTime);
-  properties["task"] = {{"type", "string"}};
-  return json{{"title", "rtamp.Automaton"},
-              {"description", "The Büchi automaton of the task in force"},
-              {"type", "object"},
-              {"properties", properties},
-              {"required", {"timestamp", "task", "states", "edges"}}}
-      .dump();
+  properties["task"] = of_type("string");
+  return rtamp_schema("rtamp.Automaton", "The Büchi automaton of the task in force", properties,
+                      {"task", "states", "edges"});
 }
 
 // /automaton/tracked: the states of /automaton consistent with the run so far, after a step.
 std::string tracked_schema() {
-  return json{{"title", "rtamp.AutomatonStates"},
-              {"description", "The Büchi states tracked after a step of the run, and the run's state"},
-              {"type", "object"},
-              {"properties",
-               {{"timestamp", json::parse(kTime)},
-                {"automaton_states", {{"type", "array"}, {"items", {{"type", "integer"}, {"minimum", 0}}}}},
-                {"state", {{"type", "object"}, {"description", "thing -> location"}}}}},
-              {"required", {"timestamp", "automaton_states", "state"}}}
-      .dump();
+  return rtamp_schema("rtamp.AutomatonStates", "The Büchi states tracked after a step of the run, and the run's state",
+                      {{"automaton_states", {{"type", "array"}, {"items", {{"type", "integer"}, {"minimum", 0}}}}},
+                       {"state", {{"type", "object"}, {"description", "thing -> location"}}}},
+                      {"automaton_states", "state"});
 }
 
 std::uint64_t nanos(double t) { return t <= 0 ? 0 : static_cast<std::uint64_t>(std::llround(t * 1e9)); }
