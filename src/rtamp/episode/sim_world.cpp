@@ -117,6 +117,7 @@ void SimWorld::start(const exec::Move& m) {
   move_.to = body_of(m.to);
   to_ = m.to;
   taken_ = false;
+  put_backs_ = 0;
   status_ = exec::MoveStatus::Running;
   why_.clear();
   phase_ = Phase::Picking;
@@ -158,11 +159,17 @@ bool SimWorld::place_somewhere(const std::string& preferred) {
 
 // A failed move must not leave its thing in the gripper: put it somewhere valid first. A
 // failed pick backs the empty gripper off (out of the camera's way).
+// A put-back that fails too (its release refused: a person filled that location as well)
+// tries the closest region with room, up to kMaxPutBacks in all, then lets go where it is.
 void SimWorld::fail_or_recover(const std::string& why) {
-  failure_ = why;
-  if (phase_ != Phase::Recovering && holds(move_.thing)) {
+  if (phase_ != Phase::Recovering) failure_ = why;
+  if (holds(move_.thing)) {
+    const bool first = phase_ != Phase::Recovering;
     phase_ = Phase::Recovering;
-    if (place_somewhere(move_.from)) return;
+    if (put_backs_ < kMaxPutBacks) {
+      ++put_backs_;
+      if (place_somewhere(first ? move_.from : std::string())) return;
+    }
     session_.sim().detach();
   }
   if (phase_ == Phase::Picking && session_.sim().held() < 0 && session_.skills().start_retreat() &&
@@ -230,7 +237,15 @@ bool SimWorld::busy() {
   auto& controller = session_.controller();
   if (returning_ && controller.status() != sim::Status::Running) {
     returning_ = false;
-    if (controller.status() == sim::Status::Failure && holds(back_thing_)) session_.sim().detach();
+    if (controller.status() == sim::Status::Failure && holds(back_thing_)) {
+      // The put-back after a halt failed (its release refused, say): the closest region with room.
+      if (put_backs_ < kMaxPutBacks && (++put_backs_, place_somewhere({}))) {
+        returning_ = true;
+        hand_ = placed_at_;
+      } else {
+        session_.sim().detach();
+      }
+    }
   }
   return returning_;
 }

@@ -9,8 +9,10 @@
 //  - a move that fails while holding its thing first puts it back — at its
 //    source, or, if that is gone or full, the closest region with a free
 //    spot — then reports Failed;
-//  - a place whose destination vanished (a tray removed mid-carry) fails the
-//    same way;
+//  - a place whose destination vanished (a tray removed mid-carry), or that the
+//    rule book of space (world/space_rules.hpp) refuses when the fingers are to open
+//    (a person filled the location during the carry: the arm keeps the thing and
+//    backs up), fails the same way — as the symbolic world's place does;
 //  - a thing taken out of the gripper, or a pick that failed (a missed grasp), ends
 //    the move with Failed and the empty gripper backs off;
 //  - halt() stops the arm, puts a held thing back the same way, or backs the
@@ -97,6 +99,8 @@ class SimWorld final : public exec::World, public exec::Intervenable, public exe
   Phase phase_ = Phase::Idle;
   exec::MoveStatus status_ = exec::MoveStatus::Idle;
   std::string why_, failure_, hand_, placed_at_;
+  static constexpr int kMaxPutBacks = 3;  // places tried to put a failed move's thing back
+  int put_backs_ = 0;
   bool returning_ = false;
   bool taken_ = false;  // a person took the carried thing
   std::string back_thing_;
