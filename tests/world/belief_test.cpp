@@ -388,9 +388,7 @@ TEST(Belief, AThingPushedAgainstALookAlikeIsTakenBackByItsCompleteSightings) {
 // b3 restore it, and an incomplete view beside b3 stays a second view of b3 (no candidate).
 TEST(Belief, AMissingThingIsRestoredByCompleteSightingsBesideALookAlike) {
   const Scenario s = scene();
-  BeliefOptions o;
-  o.remove_after = 5;
-  Belief b(s, o);
+  Belief b(s, {.remove_after = 5});
   auto d = all_seen(s);
   b.update(0.1, d, Spots{}, {});
   d.erase(d.begin() + 2);
