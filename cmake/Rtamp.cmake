@@ -116,6 +116,7 @@ function(rtamp_test_pch)
     <unordered_map> <vector>)
 endfunction()
 
+file(MAKE_DIRECTORY ${PROJECT_BINARY_DIR}/test-tmp)
 function(rtamp_add_test name)
   cmake_parse_arguments(T "USES_CLI" "TIMEOUT" "SOURCES;DEPS;LABELS;ENVIRONMENT" ${ARGN})
   # The sanitizer run leaves out the tests labelled slow (make test-asan: ctest -LE slow),
@@ -142,8 +143,8 @@ function(rtamp_add_test name)
   if(T_LABELS)
     list(APPEND props LABELS "${T_LABELS}")
   endif()
-  if(T_ENVIRONMENT)
-    list(APPEND props ENVIRONMENT "${T_ENVIRONMENT}")
-  endif()
+  # A temporary directory of the build tree's own: tests that write fixed names there
+  # do not meet the same test run from another checkout at the same time.
+  list(APPEND props ENVIRONMENT "TMPDIR=${PROJECT_BINARY_DIR}/test-tmp;${T_ENVIRONMENT}")
   gtest_discover_tests(${name} DISCOVERY_MODE PRE_TEST PROPERTIES ${props})
 endfunction()
