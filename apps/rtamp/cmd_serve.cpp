@@ -19,7 +19,9 @@
 #include "rtamp/serve/server.hpp"
 #include "rtamp/task/validate.hpp"
 #include "rtamp/util/error.hpp"
+#include "rtamp/util/file_set.hpp"
 #include "rtamp/util/format.hpp"
+#include "rtamp/util/text_file.hpp"
 #include "rtamp/world/scenario_io.hpp"
 
 namespace {
@@ -87,6 +89,13 @@ rtamp::cli::Registrar reg{
         const world::Scenario scenario = world::load_scenario(o->scenario);
         task::validate_task(scenario);
         const episode::EpisodeOptions episode_options = rtamp::cli::episode_options(*o);
+        {  // no output is an input or another output (by device and inode)
+          FileSet files;
+          if (path_exists(o->scenario)) files.input("SCENARIO", o->scenario);
+          if (!o->replay.empty()) files.input("--replay", o->replay);
+          if (!episode_options.outputs.log.empty()) files.output("--log", episode_options.outputs.log);
+          if (!episode_options.outputs.mcap.empty()) files.output("--mcap", episode_options.outputs.mcap);
+        }
         if (!episode_options.outputs.log.empty()) rtamp::cli::check_output_file("--log", episode_options.outputs.log);
         if (!episode_options.outputs.mcap.empty()) rtamp::cli::check_output_file("--mcap", episode_options.outputs.mcap);
         if (!episode_options.outputs.trees.empty())

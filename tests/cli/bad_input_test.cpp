@@ -647,7 +647,7 @@ void serve_cases(std::vector<Case>& t) {
   add({"--allow-origin", "http://lab.example:99999"}, "--allow-origin:", "a port in 1-65535");
   add({"--allow-origin", "http://127.0.0.1:8080", "--allow-origin", "*"}, "--allow-origin: '*'", "no scheme");
   add({"--allow-origin", "http://" + std::string(5000, 'a')}, "--allow-origin: 'http://aaa", "...' (5007 bytes)");
-  add({"--replay", "no-such.jsonl"}, "--replay:", "cannot read 'no-such.jsonl'");
+  add({"--replay", "no-such.jsonl"}, "--replay: no-such.jsonl:", "no such file");
   add({"--algo", "bfs"}, "--algo:", "unknown");
   {
     const std::string p = file("{\"ev\":\"episode\",\"t\":0}\nnot json\n", ".jsonl");

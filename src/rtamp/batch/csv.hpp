@@ -41,8 +41,10 @@ CsvRows parse_csv(const std::string& text, const std::string& file = {});
 void write_header(std::ostream& out);
 void write_record(std::ostream& out, const EpisodeRecord& r);
 void write_csv(std::ostream& out, const std::vector<EpisodeRecord>& records);
-// Writes to `path` (replacing it); throws rtamp::Error if it cannot.
-void write_csv_file(const std::string& path, const std::vector<EpisodeRecord>& records);
+// Writes to `path` as every output is written (util/output_file.hpp: locked,
+// checked); throws rtamp::OutputError "WHAT: cannot write 'PATH': WHY" if it cannot.
+void write_csv_file(const std::string& path, const std::vector<EpisodeRecord>& records,
+                    const std::string& what = "--output");
 
 // Parses CSV text written by write_csv (the header must be exactly
 // csv_columns()). `file` is used in error messages only.
