@@ -139,9 +139,9 @@ void LogCheck::record(const json& j) {
   if (!t || !is_finite_number(*t) || t->get<double>() < 0 || t->get<double>() > kMaxTime)
     bad(ev, "t", "must be a time in world seconds, a number in [0, 1e8]");
   const double time = t->get<double>();
+  if (ended_) throw Error("a `" + ev + "` record after the `end` record (the end is the last line)");
   if (records_ > 0 && time < t_ - 1e-9)
     throw Error("records out of time order (t=" + std::to_string(time) + " after t=" + std::to_string(t_) + ")");
-  if (ended_) throw Error("a `" + ev + "` record after the `end` record (the end is the last line)");
   if ((records_ == 0) != (ev == "episode"))
     throw Error(records_ == 0 ? "the first record is `" + ev + "`, not `episode`"
                               : std::string("a second `episode` record (a log holds one episode)"));
