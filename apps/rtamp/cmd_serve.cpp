@@ -157,7 +157,15 @@ rtamp::cli::Registrar reg{
           live->start();
           while (!live->ended() && g_signal.load() == 0) std::this_thread::sleep_for(std::chrono::milliseconds(20));
           if (g_signal.load() != 0) live->stop();
-          const exec::EpisodeMetrics m = live->wait();
+          exec::EpisodeMetrics m;
+          try {
+            m = live->wait();
+          } catch (...) {  // a lost --log or --mcap: the server stops before the episode goes, then exit 2
+            server.stop();
+            std::signal(SIGINT, SIG_DFL);
+            std::signal(SIGTERM, SIG_DFL);
+            throw;
+          }
           if (!o->quiet) {
             const std::string completion = m.completion_time ? format_number(*m.completion_time) + " s" : "none";
             std::printf("\n%s: %s\n  completion %s (world time), %d replans, %d interventions (%d applied, %d refused)\n",
