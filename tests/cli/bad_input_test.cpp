@@ -891,6 +891,14 @@ void output_cases(std::vector<Case>& t) {
     t.push_back({"outputs", {"batch", "3-block", "--world", "symbolic", "--resume", "-o", other, "--change", "add"},
                  name_of(other) + ":2:", "is not a trial of this batch", {}, {other}});
   }
+  // bt check: the schema to write is the file checked.
+  {
+    const std::string xml = file("<root BTCPP_format=\"4\">\n<BehaviorTree ID=\"T\"><Go/></BehaviorTree>\n"
+                                 "<TreeNodesModel><Action ID=\"Go\"/></TreeNodesModel>\n</root>\n",
+                                 ".xml");
+    t.push_back({"outputs", {"bt", "check", xml, "--xsd", xml}, "--xsd: cannot write", "it is also the input FILE",
+                 {}, {xml}});
+  }
   // serve: the log to write is the log replayed.
   t.push_back({"outputs", {"serve", "3-block", "--replay", ep, "--log", link}, "--log: cannot write",
                "it is also the input --replay", {}, {ep}});

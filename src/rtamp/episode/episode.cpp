@@ -188,6 +188,7 @@ EpisodeMetrics Episode::run() {
   };
   close(log_);
   close(mcap_);
+  close(trees_);
   close(video_);
   if (failed) std::rethrow_exception(failed);
   return m;
