@@ -225,7 +225,7 @@ int run_batch(const BatchArgs& a) {
       if (!csv.regular()) throw Error("--resume: '" + a.output + "' is not a regular file (nothing to resume from)");
       // Read and checked while it is locked, before anything is changed or runs.
       const batch::Resumed r =
-          batch::resume(read_text_file(a.output, "the CSV file", std::size_t(1) << 30), a.output, scenario.name, trials);
+          batch::resume(read_text_file(a.output, "the CSV file", batch::kMaxCsvBytes), a.output, scenario.name, trials);
       kept = r.kept;
       trials = r.missing;
       csv.resize(r.whole_bytes);  // a torn last line dropped

@@ -287,7 +287,7 @@ std::vector<EpisodeRecord> read_csv(const std::string& text, const std::string& 
 }
 
 std::vector<EpisodeRecord> read_csv_file(const std::string& path) {
-  return read_csv(read_text_file(path, "the CSV file"), path);
+  return read_csv(read_text_file(path, "the CSV file", kMaxCsvBytes), path);
 }
 
 }  // namespace rtamp::batch

@@ -14,6 +14,7 @@
 // variant / change kind, a malformed or non-finite number, a broken quote.
 #pragma once
 
+#include <cstddef>
 #include <iosfwd>
 #include <string>
 #include <vector>
@@ -21,6 +22,9 @@
 #include "rtamp/batch/record.hpp"
 
 namespace rtamp::batch {
+
+// The largest CSV file read (--merge, --resume): a million rows take about 200 MB.
+inline constexpr std::size_t kMaxCsvBytes = std::size_t(1) << 30;
 
 const std::vector<std::string>& csv_columns();
 
