@@ -40,7 +40,11 @@ std::string default_web_root() {
 
 void check_input_file(const std::string& option, const std::string& path) {
   std::error_code ec;
-  if (!std::filesystem::is_regular_file(path, ec)) throw rtamp::Error(option + ": cannot read '" + path + "': no such file");
+  if (std::filesystem::is_regular_file(path, ec)) return;
+  const bool exists = std::filesystem::exists(path, ec);
+  throw rtamp::Error(option + ": cannot read '" + path + "': " +
+                     (!exists ? "no such file" : std::filesystem::is_directory(path, ec) ? "it is a directory"
+                                                                                         : "it is not a regular file"));
 }
 
 rtamp::cli::Registrar reg{
