@@ -217,34 +217,43 @@ int run_batch(const BatchArgs& a) {
   OutputFile csv;
   bool appending = false;
   std::vector<batch::EpisodeRecord> kept;  // rows of an earlier run (--resume)
+  std::size_t keep_bytes = 0;              // of the file: its whole rows (--resume), else nothing
+  bool has_header = false;
   if (!a.output.empty()) {
-    csv = OutputFile(a.output, "--output", OutputFile::Lock::Exclusive,
-                     a.resume ? OutputFile::Open::Keep : OutputFile::Open::Truncate);
+    // Locked, and read while it is locked, before anything is changed or runs.
+    csv = OutputFile(a.output, "--output", OutputFile::Lock::Exclusive, OutputFile::Open::Keep);
     appending = csv.regular();
     if (a.resume) {
       if (!csv.regular()) throw Error("--resume: '" + a.output + "' is not a regular file (nothing to resume from)");
-      // Read and checked while it is locked, before anything is changed or runs.
       const batch::Resumed r =
           batch::resume(read_text_file(a.output, "the CSV file", batch::kMaxCsvBytes), a.output, scenario.name, trials);
       kept = r.kept;
       trials = r.missing;
-      csv.resize(r.whole_bytes);  // a torn last line dropped
-      if (!r.has_header) {
-        std::ostringstream header;
-        batch::write_header(header);
-        csv.write(header.str());
-      }
-      if (!a.quiet)
-        std::cerr << "rtamp batch: resuming " << a.output << ": " << kept.size() << " episode(s) kept, "
-                  << trials.size() << " to run\n";
-    } else if (appending) {
+      keep_bytes = r.whole_bytes;  // a torn last line dropped
+      has_header = r.has_header;
+    }
+  }
+  const std::size_t planned = kept.size() + trials.size();
+  // The log directory before the CSV changes: one that takes no file leaves the CSV as it was.
+  if (!a.log_dir.empty()) {
+    try {
+      prepare_log_dir(a.log_dir);
+    } catch (...) {
+      if (csv.created()) csv.discard();  // no CSV left behind by a refused batch
+      throw;
+    }
+  }
+  if (appending) {
+    csv.resize(keep_bytes);
+    if (!has_header) {
       std::ostringstream header;
       batch::write_header(header);
       csv.write(header.str());
     }
   }
-  const std::size_t planned = kept.size() + trials.size();
-  if (!a.log_dir.empty()) prepare_log_dir(a.log_dir);
+  if (a.resume && !a.quiet)
+    std::cerr << "rtamp batch: resuming " << a.output << ": " << kept.size() << " episode(s) kept, " << trials.size()
+              << " to run\n";
   opt.episode.loop.interrupt = &g_signal;
   std::signal(SIGINT, on_batch_signal);
   std::signal(SIGTERM, on_batch_signal);

@@ -103,6 +103,7 @@ OutputFile::OutputFile(std::string path, std::string what, Lock lock, Open open)
     fail(statted ? kind_of(now.st_mode) : reason(e));
   }
   regular_ = true;
+  created_ = !exists;
   if (lock == Lock::Exclusive && ::flock(fd_, LOCK_EX | LOCK_NB) != 0) {
     const int e = errno;
     ::close(fd_);
@@ -130,13 +131,18 @@ OutputFile::~OutputFile() {
 }
 
 OutputFile::OutputFile(OutputFile&& o) noexcept
-    : fd_(std::exchange(o.fd_, -1)), regular_(o.regular_), path_(std::move(o.path_)), what_(std::move(o.what_)) {}
+    : fd_(std::exchange(o.fd_, -1)),
+      regular_(o.regular_),
+      created_(o.created_),
+      path_(std::move(o.path_)),
+      what_(std::move(o.what_)) {}
 
 OutputFile& OutputFile::operator=(OutputFile&& o) noexcept {
   if (this != &o) {
     if (fd_ >= 0) ::close(fd_);
     fd_ = std::exchange(o.fd_, -1);
     regular_ = o.regular_;
+    created_ = o.created_;
     path_ = std::move(o.path_);
     what_ = std::move(o.what_);
   }

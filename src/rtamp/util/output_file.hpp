@@ -58,6 +58,7 @@ class OutputFile {
 
   bool is_open() const { return fd_ >= 0; }
   bool regular() const { return regular_; }
+  bool created() const { return created_; }  // the file did not exist before
   const std::string& path() const { return path_; }
   const std::string& what() const { return what_; }
 
@@ -65,7 +66,7 @@ class OutputFile {
   [[noreturn]] void fail(const std::string& why) const;
 
   int fd_ = -1;
-  bool regular_ = false;
+  bool regular_ = false, created_ = false;
   std::string path_, what_;
 };
 
