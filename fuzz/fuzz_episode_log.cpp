@@ -36,7 +36,8 @@ std::string scratch_path(const char* tail) {
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   const std::string_view text(reinterpret_cast<const char*>(data), size);
   const std::string log = scratch_path("log.jsonl"), mcap = scratch_path("log.mcap");
-  std::ofstream(log, std::ios::binary | std::ios::trunc).write(text.data(), static_cast<std::streamsize>(text.size()));
+  std::ofstream(log, std::ios::binary | std::ios::trunc)
+      .write(text.data(), static_cast<std::streamsize>(text.size()));
   bool passed = false;
   try {
     rtamp::episode::read_episode_log(log, nullptr);

@@ -27,15 +27,16 @@ namespace fs = std::filesystem;
 namespace ct = rtamp::cli::testing;
 using rtamp::batch::EpisodeRecord;
 
-const std::vector<std::string> kBatch = {"batch", "3-block-tray", "--world", "symbolic", "--trials", "2000",
-                                         "--algo", "astar-exp", "--change", "relocate", "-q"};
+const std::vector<std::string> kBatch = {"batch",  "3-block-tray", "--world",  "symbolic", "--trials", "2000",
+                                         "--algo", "astar-exp",    "--change", "relocate", "-q"};
 
 pid_t spawn(const fs::path& dir, std::vector<std::string> args) {
   args.insert(args.begin(), kBatch.begin(), kBatch.end());
   const pid_t pid = ::fork();
   if (pid == 0) {
     const std::string out = (dir / "batch.out").string(), err = (dir / "batch.err").string();
-    if (!std::freopen(out.c_str(), "w", stdout) || !std::freopen(err.c_str(), "w", stderr) || ::chdir(dir.c_str()))
+    if (!std::freopen(out.c_str(), "w", stdout) || !std::freopen(err.c_str(), "w", stderr) ||
+        ::chdir(dir.c_str()))
       ::_exit(127);
     ::alarm(300);
     std::vector<char*> argv{const_cast<char*>(RTAMP_BIN)};
@@ -67,9 +68,10 @@ int interrupt_after(pid_t pid, const fs::path& csv, int rows, int sig) {
 // The columns that do not measure wall time (first_plan_s, replan_s, wall_s and rtf do).
 std::string deterministic(const EpisodeRecord& r) {
   return r.scenario + "," + r.algorithm + "," + r.bt + "," + r.change + "," + std::to_string(r.trial) + "," +
-         std::to_string(r.seed) + "," + std::to_string(r.success) + "," + r.reason + "," + std::to_string(r.replans) +
-         "," + std::to_string(r.tree_changes) + "," + std::to_string(r.completion_s) + "," +
-         std::to_string(r.motion_cost) + "," + std::to_string(r.interventions);
+         std::to_string(r.seed) + "," + std::to_string(r.success) + "," + r.reason + "," +
+         std::to_string(r.replans) + "," + std::to_string(r.tree_changes) + "," +
+         std::to_string(r.completion_s) + "," + std::to_string(r.motion_cost) + "," +
+         std::to_string(r.interventions);
 }
 
 TEST(CliBatchResume, KilledThenInterruptedThenResumedEqualsAnUninterruptedRun) {
@@ -96,7 +98,8 @@ TEST(CliBatchResume, KilledThenInterruptedThenResumedEqualsAnUninterruptedRun) {
   ASSERT_TRUE(WIFEXITED(status)) << err;
   ASSERT_EQ(WEXITSTATUS(status), 130) << err;
   EXPECT_NE(err.find("interrupted by SIGINT"), std::string::npos) << err;
-  const auto interrupted = rtamp::batch::read_csv_file((dir / "part.csv").string());  // whole rows, or it throws
+  const auto interrupted =
+      rtamp::batch::read_csv_file((dir / "part.csv").string());  // whole rows, or it throws
   EXPECT_GT(interrupted.size(), static_cast<std::size_t>(after_kill));
   EXPECT_LT(interrupted.size(), 2000u);
   EXPECT_TRUE(std::is_sorted(interrupted.begin(), interrupted.end(), rtamp::batch::canonical_less));
@@ -116,7 +119,8 @@ TEST(CliBatchResume, KilledThenInterruptedThenResumedEqualsAnUninterruptedRun) {
   ASSERT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << ct::slurp(dir / "batch.err");
   const auto merged = rtamp::batch::read_csv_file((dir / "part.csv").string());
   ASSERT_EQ(merged.size(), whole.size());
-  for (std::size_t i = 0; i < whole.size(); ++i) ASSERT_EQ(deterministic(merged[i]), deterministic(whole[i])) << i;
+  for (std::size_t i = 0; i < whole.size(); ++i)
+    ASSERT_EQ(deterministic(merged[i]), deterministic(whole[i])) << i;
 
   // 4. Resuming a finished batch runs nothing and keeps every row.
   const std::string before = ct::slurp(dir / "part.csv");
@@ -134,7 +138,8 @@ TEST(CliBatchResume, SigtermIsExit143WithTheSummaryOfWhatRan) {
   EXPECT_EQ(WEXITSTATUS(status), 143);
   const auto rows = rtamp::batch::read_csv_file((dir / "t.csv").string());
   const std::string out = ct::slurp(dir / "batch.out");  // the JSON summary of the rows that ran
-  EXPECT_NE(out.find("\"episodes\": " + std::to_string(rows.size())), std::string::npos) << out.substr(0, 200);
+  EXPECT_NE(out.find("\"episodes\": " + std::to_string(rows.size())), std::string::npos)
+      << out.substr(0, 200);
 }
 
 }  // namespace

@@ -3,12 +3,13 @@
 // dropped (whole_bytes ends at the last line end), an empty file or a torn
 // header is a batch that had not started; a row of another scenario, another
 // seed, another grid, or a row twice is refused at its line.
+#include "rtamp/batch/resume.hpp"
+
 #include <gtest/gtest.h>
 
 #include <sstream>
 
 #include "rtamp/batch/csv.hpp"
-#include "rtamp/batch/resume.hpp"
 #include "rtamp/util/error.hpp"
 
 namespace {

@@ -33,7 +33,7 @@ namespace {
 namespace fs = std::filesystem;
 
 struct Outcome {
-  int code = -1;    // exit code, -1 if killed
+  int code = -1;  // exit code, -1 if killed
   int signal = 0;
   std::string err;
 };
@@ -78,7 +78,8 @@ class OutputLoss : public ::testing::Test {
     fs::remove_all(dir_);
     fs::create_directories(dir_);
   }
-  void expect_lost(const Outcome& r, const std::string& option, const std::string& file, const std::string& why) {
+  void expect_lost(const Outcome& r, const std::string& option, const std::string& file,
+                   const std::string& why) {
     EXPECT_EQ(r.signal, 0) << r.err;
     EXPECT_EQ(r.code, 2) << r.err;
     const std::string line = "rtamp: error: " + option + ": cannot write '" + file + "': " + why;
@@ -87,7 +88,8 @@ class OutputLoss : public ::testing::Test {
   fs::path dir_;
 };
 
-const std::vector<std::string> kRun = {"run", "3-block-tray", "--world", "symbolic", "--quiet", "--rate", "0.2"};
+const std::vector<std::string> kRun = {"run",     "3-block-tray", "--world", "symbolic",
+                                       "--quiet", "--rate",       "0.2"};
 
 std::vector<std::string> with(std::vector<std::string> a, const std::vector<std::string>& more) {
   a.insert(a.end(), more.begin(), more.end());
@@ -105,20 +107,24 @@ TEST_F(OutputLoss, AFileSizeLimitIsExit2NamingTheFileNeverSuccess) {
   const std::string kept = slurp(dir_ / "ep.jsonl"), whole = slurp(dir_ / "whole.jsonl");
   EXPECT_EQ(kept.substr(0, kept.find('\n')), whole.substr(0, whole.find('\n')));
   expect_lost(run_in(dir_, with(kRun, {"--mcap", "ep.mcap"}), 2048), "--mcap", "ep.mcap", too_large);
-  expect_lost(run_in(dir_, {"serve", "3-block-tray", "--world", "symbolic", "--port", "0", "--speed", "0",
-                            "--exit-at-end", "--quiet", "--log", "sv.jsonl"},
+  expect_lost(run_in(dir_,
+                     {"serve", "3-block-tray", "--world", "symbolic", "--port", "0", "--speed", "0",
+                      "--exit-at-end", "--quiet", "--log", "sv.jsonl"},
                      2048),
               "--log", "sv.jsonl", too_large);
-  expect_lost(run_in(dir_, {"batch", "3-block", "--world", "symbolic", "--trials", "30", "-q", "-o", "b.csv"}, 1024),
-              "--output", "b.csv", too_large);
-  r = run_in(dir_, {"batch", "3-block", "--world", "symbolic", "--trials", "3", "-q", "-o", "c.csv", "--log-dir", "logs"},
-             4096);  // which episode's log reaches the limit first depends on the workers
+  expect_lost(
+      run_in(dir_, {"batch", "3-block", "--world", "symbolic", "--trials", "30", "-q", "-o", "b.csv"}, 1024),
+      "--output", "b.csv", too_large);
+  r = run_in(
+      dir_,
+      {"batch", "3-block", "--world", "symbolic", "--trials", "3", "-q", "-o", "c.csv", "--log-dir", "logs"},
+      4096);  // which episode's log reaches the limit first depends on the workers
   EXPECT_EQ(r.code, 2) << r.err;
   EXPECT_NE(r.err.find("rtamp: error: --log-dir: cannot write 'logs/"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find(".jsonl': the file is too large"), std::string::npos) << r.err;
   // log to-mcap: the half-written OUT does not stay.
-  expect_lost(run_in(dir_, {"log", "to-mcap", "whole.jsonl", "out.mcap", "--compression", "none"}, 1024), "OUT",
-              "out.mcap", too_large);
+  expect_lost(run_in(dir_, {"log", "to-mcap", "whole.jsonl", "out.mcap", "--compression", "none"}, 1024),
+              "OUT", "out.mcap", too_large);
   EXPECT_FALSE(fs::exists(dir_ / "out.mcap"));
   // The same commands without the limit succeed (the limit, not the command, failed).
   EXPECT_EQ(run_in(dir_, {"log", "to-mcap", "whole.jsonl", "out.mcap", "--compression", "none"}).code, 0);
@@ -152,7 +158,7 @@ TEST_F(OutputLoss, AFifoWithAReaderGetsTheWholeLogAndStaysAFifo) {
   reader.join();
   ::close(fd);
   EXPECT_EQ(r.code, 0) << r.err;
-  struct stat st{};
+  struct stat st {};
   ASSERT_EQ(::lstat(fifo.c_str(), &st), 0);
   EXPECT_TRUE(S_ISFIFO(st.st_mode));
   ASSERT_FALSE(got.empty());
@@ -169,7 +175,7 @@ TEST_F(OutputLoss, PrivateDevicesAreWrittenDirectlyAndStayDevices) {
       ::mknod(full.c_str(), S_IFCHR | 0666, ::makedev(1, 7)) != 0)
     GTEST_SKIP() << "mknod is not allowed here";
   auto still_device = [](const fs::path& p, unsigned minor) {
-    struct stat st{};
+    struct stat st {};
     ASSERT_EQ(::lstat(p.c_str(), &st), 0);
     EXPECT_TRUE(S_ISCHR(st.st_mode)) << p << " is no longer a character device";
     EXPECT_EQ(::minor(st.st_rdev), minor);
@@ -181,8 +187,9 @@ TEST_F(OutputLoss, PrivateDevicesAreWrittenDirectlyAndStayDevices) {
   EXPECT_EQ(r.code, 0) << r.err;
   still_device(null, 3);
   // The full device: every write fails — exit 2 with the reason, the node kept.
-  expect_lost(run_in(dir_, {"batch", "3-block", "--world", "symbolic", "--trials", "2", "-q", "-o", full.string()}),
-              "--output", full.string(), "no space left on the device");
+  expect_lost(
+      run_in(dir_, {"batch", "3-block", "--world", "symbolic", "--trials", "2", "-q", "-o", full.string()}),
+      "--output", full.string(), "no space left on the device");
   expect_lost(run_in(dir_, with(kRun, {"--log", full.string()})), "--log", full.string(),
               "no space left on the device");
   ASSERT_EQ(run_in(dir_, with(kRun, {"--log", "ep.jsonl"})).code, 0);
@@ -199,13 +206,16 @@ TEST_F(OutputLoss, PrivateDevicesAreWrittenDirectlyAndStayDevices) {
   EXPECT_FALSE(fs::exists(dir_ / "z.mcap"));
   r = run_in(dir_, {"serve", "3-block", "--world", "symbolic", "--port", "0", "--replay", zero.string()});
   EXPECT_EQ(r.code, 2) << r.err;
-  EXPECT_NE(r.err.find("--replay: cannot read '" + zero.string() + "': it is not a regular file"), std::string::npos)
+  EXPECT_NE(r.err.find("--replay: cannot read '" + zero.string() + "': it is not a regular file"),
+            std::string::npos)
       << r.err;
   still_device(zero, 5);
   // --resume needs a regular file to resume from.
-  r = run_in(dir_, {"batch", "3-block", "--world", "symbolic", "--trials", "2", "-q", "--resume", "-o", null.string()});
+  r = run_in(dir_, {"batch", "3-block", "--world", "symbolic", "--trials", "2", "-q", "--resume", "-o",
+                    null.string()});
   EXPECT_EQ(r.code, 2) << r.err;
-  EXPECT_NE(r.err.find("--resume: '" + null.string() + "' is not a regular file"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("--resume: '" + null.string() + "' is not a regular file"), std::string::npos)
+      << r.err;
   still_device(null, 3);
 }
 

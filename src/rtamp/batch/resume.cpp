@@ -21,7 +21,7 @@ Resumed resume(const std::string& text, const std::string& file, const std::stri
   }
   out.has_header = true;
   using Key = std::tuple<std::string, std::string, std::string, int>;  // algorithm, bt, change, trial
-  std::map<Key, std::size_t> index;  // into trials
+  std::map<Key, std::size_t> index;                                    // into trials
   for (std::size_t i = 0; i < trials.size(); ++i) {
     const Trial& t = trials[i];
     index[{plan::to_string(t.algorithm), to_string(t.bt), to_string(t.change), t.index}] = i;

@@ -11,7 +11,7 @@ namespace rtamp {
 
 FileSet::Entry FileSet::entry(const std::string& what, const std::string& path) {
   Entry e{what, path, {}, false, false, 0, 0};
-  struct stat st{};
+  struct stat st {};
   if (::stat(path.c_str(), &st) == 0) {
     e.exists = true;
     e.device = S_ISCHR(st.st_mode);
@@ -24,7 +24,9 @@ FileSet::Entry FileSet::entry(const std::string& what, const std::string& path) 
   return e;
 }
 
-void FileSet::input(const std::string& what, const std::string& path) { inputs_.push_back(entry(what, path)); }
+void FileSet::input(const std::string& what, const std::string& path) {
+  inputs_.push_back(entry(what, path));
+}
 
 void FileSet::output(const std::string& what, const std::string& path) {
   const Entry e = entry(what, path);

@@ -46,9 +46,11 @@ std::string directory_of(const std::string& path) {
 }  // namespace
 
 void check_output(const std::string& path, const std::string& what) {
-  auto fail = [&](const std::string& why) { throw OutputError(what + ": cannot write " + shown(path) + ": " + why); };
+  auto fail = [&](const std::string& why) {
+    throw OutputError(what + ": cannot write " + shown(path) + ": " + why);
+  };
   if (path.empty()) fail("empty path");
-  struct stat st{};
+  struct stat st {};
   if (::stat(path.c_str(), &st) == 0) {
     if (const std::string why = refusal(st.st_mode); !why.empty()) fail(why);
     if (::access(path.c_str(), W_OK) != 0) fail(reason(errno));
@@ -63,7 +65,7 @@ void check_output(const std::string& path, const std::string& what) {
   }
   if (errno != ENOENT) fail(reason(errno));
   const std::string dir = directory_of(path);
-  struct stat ds{};
+  struct stat ds {};
   if (::stat(dir.c_str(), &ds) != 0 || !S_ISDIR(ds.st_mode)) fail("no directory " + shown(dir));
   if (::access(dir.c_str(), W_OK | X_OK) != 0) fail(reason(errno));
 }
@@ -71,7 +73,7 @@ void check_output(const std::string& path, const std::string& what) {
 OutputFile::OutputFile(std::string path, std::string what, Lock lock, Open open)
     : path_(std::move(path)), what_(std::move(what)) {
   if (path_.empty()) fail("empty path");
-  struct stat st{};
+  struct stat st {};
   const bool exists = ::stat(path_.c_str(), &st) == 0;
   if (exists) {
     if (const std::string why = refusal(st.st_mode); !why.empty()) fail(why);
@@ -94,7 +96,7 @@ OutputFile::OutputFile(std::string path, std::string what, Lock lock, Open open)
     if (errno == ENOENT) fail("no directory " + shown(directory_of(path_)));
     fail(reason(errno));
   }
-  struct stat now{};
+  struct stat now {};
   const bool statted = ::fstat(fd_, &now) == 0;
   if (!statted || !S_ISREG(now.st_mode)) {  // replaced between stat and open
     const int e = errno;
