@@ -21,6 +21,23 @@
 #     rather than a -D on every target, so that objects that do not use the path compile
 #     the same in every checkout (a shared compiler cache serves them all).
 
+# A compiler cache when Debian's ccache is installed (RTAMP_CCACHE, on by default; a launcher
+# given on the command line wins): paths are taken relative to the checkout (base_dir) and the
+# build directory is not hashed, so a fresh clone in another folder hits what an earlier one
+# compiled; the sloppiness lets objects that use precompiled headers be cached, and clang's
+# precompiled headers carry no timestamps for the same reason.
+option(RTAMP_CCACHE "Compile through ccache when it is installed" ON)
+if(RTAMP_CCACHE AND NOT CMAKE_CXX_COMPILER_LAUNCHER)
+  find_program(RTAMP_CCACHE_PROGRAM ccache)
+  if(RTAMP_CCACHE_PROGRAM)
+    set(CMAKE_CXX_COMPILER_LAUNCHER ${CMAKE_COMMAND} -E env CCACHE_BASEDIR=${PROJECT_SOURCE_DIR} CCACHE_NOHASHDIR=true
+        CCACHE_SLOPPINESS=pch_defines,time_macros,include_file_mtime,include_file_ctime ${RTAMP_CCACHE_PROGRAM})
+  endif()
+endif()
+if(CMAKE_CXX_COMPILER_ID STREQUAL "Clang")
+  add_compile_options($<$<COMPILE_LANGUAGE:CXX>:SHELL:-Xclang -fno-pch-timestamp>)
+endif()
+
 set(RTAMP_WARNINGS -Wall -Wextra -Wpedantic $<$<CXX_COMPILER_ID:GNU>:-Wshadow=local> $<$<CXX_COMPILER_ID:GNU>:-Wno-restrict> -Wnon-virtual-dtor -Wno-missing-field-initializers)
 if(RTAMP_WERROR)
   list(APPEND RTAMP_WARNINGS -Werror)

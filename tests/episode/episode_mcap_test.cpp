@@ -1,9 +1,12 @@
 // EpisodeMcap's messages written as text directly (no nlohmann objects): read
 // back from an uncompressed file by a minimal MCAP reader written here from the
-// specification, the /tree, /timeline and /automaton messages are the text
+// specification, the /tree, /timeline and /automaton/tracked messages are the text
 // nlohmann dumps for the same values (so they read back as before, keys in
 // order, strings escaped); the arm (arm()) gives six joint states and a /tf
-// chain whose composition is the UR5's forward kinematics in the world.
+// chain whose composition is the UR5's forward kinematics in the world; an
+// episode with task changes has every task in force on /task and its automaton
+// on /automaton, in time order, as the log's `episode` and `task` records give
+// them, and the log converted later gives the same messages on every channel.
 #include "rtamp/episode/episode_mcap.hpp"
 
 #include <gtest/gtest.h>
@@ -24,6 +27,8 @@
 #include <png.h>
 
 #include "rtamp/episode/episode.hpp"
+#include "rtamp/exec/reactive_loop.hpp"
+#include "rtamp/world/propositions.hpp"
 #include "rtamp/robot/ur5_kinematics.hpp"
 #include "rtamp/world/camera.hpp"
 #include "rtamp/world/scenario_io.hpp"
@@ -120,7 +125,7 @@ TEST(EpisodeMcap, MessagesWrittenDirectlyAreNlohmannsText) {
   EXPECT_EQ(topics.at("/tree")[1], dumped(status));
 
   const json automaton{{"automaton_states", {0, 2}}, {"state", run.at("state")}, {"timestamp", stamp(2250000000)}};
-  EXPECT_EQ(topics.at("/automaton").at(0), dumped(automaton));
+  EXPECT_EQ(topics.at("/automaton/tracked").at(0), dumped(automaton));
 
   const json line{{"timestamp", stamp(3000000000)},
                   {"level", 3},
@@ -129,6 +134,106 @@ TEST(EpisodeMcap, MessagesWrittenDirectlyAreNlohmannsText) {
                   {"file", ""},
                   {"line", 0}};
   EXPECT_EQ(topics.at("/timeline").back(), dumped(line));
+}
+
+std::uint64_t nanos_of(const json& stamp) { return stamp.at("sec").get<std::uint64_t>() * 1000000000ULL + stamp.at("nsec").get<std::uint64_t>(); }
+
+// A new task at world time `time` given `by` "api", with new propositions {name, text}.
+world::TaskChange task_change(double time, const std::string& task,
+                              const std::vector<std::pair<std::string, std::string>>& props = {}) {
+  world::TaskChange c;
+  c.time = time;
+  c.task = task;
+  c.task_where = SourceLocation{"<test>", 1, 1};
+  c.by = "api";
+  for (const auto& [name, text] : props) {
+    world::Proposition p;
+    p.name = name;
+    p.text = text;
+    p.where = SourceLocation{"<test>", 1, 1};
+    p.expr = world::parse_prop_expr(text, p.where);
+    c.propositions.push_back(std::move(p));
+  }
+  return c;
+}
+
+TEST(EpisodeMcap, EveryTaskInForceOnTaskAndItsAutomaton) {
+  const auto dir = std::filesystem::path(::testing::TempDir());
+  const std::string log = (dir / "episode_mcap_tasks.jsonl").string(), live = (dir / "episode_mcap_tasks.mcap").string(),
+                    converted = (dir / "episode_mcap_tasks_converted.mcap").string();
+  EpisodeOptions o;
+  o.world = "symbolic";
+  o.loop.planning = exec::PlanningMode::Inline;
+  o.loop.max_time = 200;
+  // o1 is carried to r2 when the first change forbids r2 for it (a redirect); the
+  // second brings a proposition of its own.
+  o.loop.task_changes = {task_change(2, "G !\"o1 in r2\" & F G \"o2 in r2\""),
+                         task_change(5, "F G all_in_r1", {{"all_in_r1", "all block in r1"}})};
+  o.outputs.log = log;
+  o.outputs.mcap = live;
+  o.outputs.mcap_compression = McapCompression::None;
+  const auto metrics = run_episode(world::load_scenario("3-block"), o);
+  EXPECT_TRUE(metrics.success) << metrics.reason;
+  ASSERT_EQ(metrics.tasks.size(), 3u);
+
+  // The oracle: the log's records that put a task in force.
+  std::vector<json> in_force;
+  std::size_t runs = 0, redirects = 0;
+  std::ifstream in(log);
+  for (std::string line; std::getline(in, line);) {
+    const json r = json::parse(line);
+    if (r.at("ev") == "episode" || (r.at("ev") == "task" && r.at("applied") == true)) in_force.push_back(r);
+    runs += r.at("ev") == "run";
+    redirects += r.at("ev") == "redirect";
+  }
+  ASSERT_EQ(in_force.size(), 3u);
+  EXPECT_GE(redirects, 1u) << "the first change redirects the carry of o1 to r2";
+
+  const auto topics = messages(live);
+  const auto& tasks = topics.at("/task");
+  const auto& automata = topics.at("/automaton");
+  ASSERT_EQ(tasks.size(), in_force.size());
+  ASSERT_EQ(automata.size(), in_force.size());
+  EXPECT_EQ(topics.at("/automaton/tracked").size(), runs);
+  std::uint64_t last = 0;
+  for (std::size_t i = 0; i < in_force.size(); ++i) {
+    const json& r = in_force[i];
+    const json task = json::parse(tasks[i]), automaton = json::parse(automata[i]);
+    const std::uint64_t ns = std::llround(r.at("t").get<double>() * 1e9);
+    EXPECT_EQ(nanos_of(task.at("timestamp")), ns);
+    EXPECT_GE(ns, last) << "in time order";
+    last = ns;
+    EXPECT_EQ(task.at("task"), r.at("task"));
+    EXPECT_EQ(task.at("task"), metrics.tasks[i].task);
+    EXPECT_EQ(task.at("by"), i == 0 ? "scenario" : "api");
+    EXPECT_EQ(task.at("automaton_states"), r.at("automaton_states"));
+    EXPECT_EQ(task.at("automaton_states").get<std::size_t>(), metrics.tasks[i].automaton_states);
+    EXPECT_EQ(task.at("automaton"), r.at("automaton"));
+    EXPECT_EQ(task.at("automaton").at("states").size(), r.at("automaton_states").get<std::size_t>());
+    EXPECT_EQ(task.contains("propositions"), i == 2);
+    if (i == 2) {
+      EXPECT_EQ(task.at("propositions"), json({{"all_in_r1", "all block in r1"}}));
+    }
+    json graph = r.at("automaton");
+    graph["timestamp"] = task.at("timestamp");
+    graph["task"] = r.at("task");
+    EXPECT_EQ(automaton, graph);
+  }
+  // The timeline names each change and the redirect.
+  std::size_t new_task_lines = 0, redirect_lines = 0;
+  for (const std::string& m : topics.at("/timeline")) {
+    const std::string text = json::parse(m).at("message");
+    new_task_lines += text.rfind("new task from api: ", 0) == 0;
+    redirect_lines += text.rfind("redirected move(", 0) == 0;
+  }
+  EXPECT_EQ(new_task_lines, 2u);
+  EXPECT_EQ(redirect_lines, redirects);
+
+  // `rtamp log to-mcap` of the log: the same messages on every channel.
+  log_to_mcap(log, converted, McapCompression::None, nullptr);
+  EXPECT_EQ(messages(converted), topics);
+  if (!::testing::Test::HasFailure())
+    for (const auto& f : {log, live, converted}) std::filesystem::remove(f);
 }
 
 TEST(EpisodeMcap, TheArmIsAChainOfTheUr5sFrames) {
@@ -201,8 +306,6 @@ bool decode_png(const std::string& bytes, int& width, int& height, std::vector<u
   height = static_cast<int>(image.height);
   return true;
 }
-
-std::uint64_t nanos_of(const json& stamp) { return stamp.at("sec").get<std::uint64_t>() * 1000000000ULL + stamp.at("nsec").get<std::uint64_t>(); }
 
 struct CameraRun {
   std::map<std::string, std::vector<std::string>> topics;

@@ -77,9 +77,23 @@ TEST(IkCostModel, LowerBoundNeverExceedsTheCost) {
       EXPECT_LE(m.lower_bound(h, p, t, false), c + 1e-9) << i << " container " << container;
       EXPECT_LE(m.lower_bound(h, p, t, true), m.lower_bound(h, p, t, false));
       EXPECT_GE(m.lower_bound(h, p, t, true), 0.0);
+      EXPECT_LE(m.carry_bound(p, t), c + 1e-9) << i << " container " << container;
     }
   }
   EXPECT_GT(finite, 100);
+}
+
+TEST(IkCostModel, ABoundSolvesTheHandsIkOncePerHandPoint) {
+  IkCostModel m(scene());
+  const Eigen::Vector3d h(0.4, 0.3, 0), p(0.4, -0.3, 0), t(0.3, 0.1, 0);
+  const double first = m.lower_bound(h, p, t, false);
+  for (int i = 0; i < 10; ++i) EXPECT_EQ(m.lower_bound(h, p, t, i % 2 == 0), i % 2 == 0 ? m.lower_bound(h, p, t, true) : first);
+  EXPECT_EQ(m.bound_points(), 1u);
+  (void)m.lower_bound(p, h, t, false);
+  EXPECT_EQ(m.bound_points(), 2u);
+  // The kept tool point is the one a fresh model computes.
+  IkCostModel fresh(scene());
+  EXPECT_EQ(fresh.lower_bound(h, p, t, false), first);
 }
 
 TEST(IkCostModel, UnreachableMovesCostInfinity) {

@@ -354,6 +354,42 @@ TEST(ServeHub, ALateClientCatchesUpWithTheHistory) {
   EXPECT_EQ(hub.history_size(), 3u);
 }
 
+// hello's task and automaton are the task in force: the constructor's, then the
+// latest record that put one in force (the episode record's automaton, an applied
+// task record; a refused one, or another record that holds the text "ev":"task",
+// changes nothing), and after a seek the latest one of the history given.
+TEST(ServeHub, HelloNamesTheTaskInForce) {
+  Hub hub(R"({"mode":"live","world":"symbolic","task":"F a","automaton":{"states":[],"edges":[]}})");
+  const auto task_of = [&] { return json::parse(hub.hello()).at("task"); };
+  const auto automaton_of = [&] { return json::parse(hub.hello()).at("automaton"); };
+  EXPECT_EQ(task_of(), "F a");
+  EXPECT_EQ(json::parse(hub.hello()).at("mode"), "live");
+  const std::string episode = R"({"automaton":{"edges":[],"states":[{"id":0}]},"ev":"episode","task":"F a","t":0})";
+  const std::string applied = R"({"applied":true,"automaton":{"edges":[],"states":[{"id":0},{"id":1}]},"by":"page","ev":"task","task":"F b","t":2})";
+  hub.log_record(episode);
+  EXPECT_EQ(automaton_of(), json::parse(R"({"edges":[],"states":[{"id":0}]})"));
+  hub.log_record(R"({"ev":"replan","why":"a new task was given: \"ev\":\"task\"","t":1})");
+  hub.log_record(R"({"automaton":{"edges":[],"states":[]},"ev":"plan","start":{"ev":"task"},"task":"F z","t":1})");
+  hub.log_record(R"({"applied":false,"by":"page","ev":"task","refused":"no","task":"F c","t":1.5})");
+  EXPECT_EQ(task_of(), "F a");
+  hub.log_record(applied);
+  EXPECT_EQ(task_of(), "F b");
+  EXPECT_EQ(automaton_of()["states"].size(), 2u);
+  hub.log_record(R"({"applied":true,"automaton":{"edges":[],"states":[]},"by":"api","ev":"task","propositions":{"ev":"episode"},"task":"F d","t":3})");
+  EXPECT_EQ(task_of(), "F d");
+  auto c = std::make_shared<RecordingClient>();
+  hub.join(c);
+  EXPECT_EQ(c->got.at(0)["task"], "F d");
+  // A seek: the history up to the time shown decides.
+  hub.reset({episode, applied}, "", "", {});
+  EXPECT_EQ(task_of(), "F b");
+  EXPECT_EQ(c->got.back()["type"], "hello");
+  EXPECT_EQ(c->got.back()["task"], "F b");
+  hub.reset({}, "", "", {});
+  EXPECT_EQ(task_of(), "F a");
+  EXPECT_EQ(automaton_of(), json::parse(R"({"states":[],"edges":[]})"));
+}
+
 // Records not urgent wait for the next message of any kind (or a flush, or a
 // join) and go out together, in order; an urgent one takes the waiting ones with
 // it. A client that joins meanwhile gets them in its hello, and never again.

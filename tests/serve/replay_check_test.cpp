@@ -173,6 +173,19 @@ TEST_F(ReplayCheck, BrokenLogsAreRefusedWithTheirLine) {
   edited("plan_nowhere.jsonl", run, "plan", [](json& p) { p["actions"][0] = "move(o1, r9)"; },
          "no location 'r9' exists here");
   edited("type.jsonl", run, "tree", [](json& t) { t["applied"] = "yes"; }, "\"applied\" must be true or false");
+  edited("episode_automaton.jsonl", run, "episode", [](json& e) { e["automaton"] = "F G p"; },
+         "\"automaton\" must be an object");
+  edited("episode_edges.jsonl", run, "episode", [](json& e) { e["automaton"].erase("edges"); },
+         "`episode` record: \"edges\" is missing");
+  {  // a log written before the episode record carried its automaton passes
+    auto ls = run;
+    json e = json::parse(ls[0]);
+    ASSERT_TRUE(e.contains("automaton"));
+    e.erase("automaton");
+    e.erase("automaton_states");
+    ls[0] = e.dump();
+    EXPECT_EQ(refusal("episode_old.jsonl", ls), "");
+  }
   {  // a camera record (MuJoCo with --perception camera): its belief's own names pass, a state not
      // of the belief and a position of two numbers do not
     auto ls = run;

@@ -406,8 +406,9 @@ TEST(ServeServer, InterventionIsAppliedLoggedAndReactedTo) {
 // A page gives a running episode a new task: the reply accepts it, the log's
 // `task` record carries the new automaton, the episode ends satisfying it (all
 // blocks in r3, not r2); a malformed formula is refused with the reason and the
-// caret line; a page that joins later has the task record in its history; the
-// resulting log replays, and a replay refuses a task request.
+// caret line; a page that joins later has the task record in its history and
+// the new task and automaton in its hello; the resulting log replays, a replay's
+// hello names the task in force at the time shown, and a replay refuses a task request.
 TEST(ServeServer, APageGivesANewTaskAndTheLogReplays) {
   const world::Scenario s = world::load_scenario("3-block-tray");
   const fs::path dir = temp_dir("task");
@@ -459,6 +460,9 @@ TEST(ServeServer, APageGivesANewTaskAndTheLogReplays) {
     bool seen = false;
     for (const auto& x : (*h2)["history"]) seen = seen || (x["ev"] == "task" && x["applied"] == true);
     EXPECT_TRUE(seen);
+    EXPECT_EQ((*hello)["task"], s.task);
+    EXPECT_EQ((*h2)["task"], rec["task"]);
+    EXPECT_EQ((*h2)["automaton"], rec["automaton"]);
     const exec::EpisodeMetrics m = sv.episode.wait();
     EXPECT_TRUE(m.success) << m.reason;
     // The end placement satisfies the new task: every block in r3.
@@ -489,8 +493,23 @@ TEST(ServeServer, APageGivesANewTaskAndTheLogReplays) {
   const auto hello = c.read_until([](const json& m) { return m["type"] == "hello"; });
   ASSERT_TRUE(hello);
   bool replayed = false;
-  for (const auto& x : (*hello)["history"]) replayed = replayed || (x["ev"] == "task" && x["applied"] == true);
-  EXPECT_TRUE(replayed);
+  json change;
+  for (const auto& x : (*hello)["history"])
+    if (x["ev"] == "task" && x["applied"] == true) {
+      replayed = true;
+      change = x;
+    }
+  ASSERT_TRUE(replayed);
+  EXPECT_EQ((*hello)["task"], change["task"]);
+  EXPECT_EQ((*hello)["automaton"], change["automaton"]);
+  // Back to the start: the scenario's task, with the automaton the episode record logged.
+  c.send(json{{"type", "control"}, {"id", 3}, {"action", "seek"}, {"value", 0}});
+  const auto start = c.read_until([](const json& m) { return m["type"] == "hello"; });
+  ASSERT_TRUE(start);
+  EXPECT_EQ((*start)["task"], s.task);
+  ASSERT_FALSE((*start)["history"].empty());
+  EXPECT_EQ((*start)["automaton"], (*start)["history"][0]["automaton"]);
+  EXPECT_NE((*start)["automaton"], change["automaton"]);
   replay.stop();
   server.stop();
   fs::remove_all(dir);

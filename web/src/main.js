@@ -118,7 +118,8 @@ function onHello(h) {
 
 function refreshLog() {
   const ep = app.episode;
-  // A task change redraws the automaton and the header's task (hello's are the first task's).
+  // A task change redraws the automaton and the header's task (hello's are the task in
+  // force when it was sent; the history's task records after it are the same or newer).
   const version = ep.task?.version ?? 0;
   if (version !== app.taskShown) {
     app.taskShown = version;

@@ -185,6 +185,14 @@ const cases = {
       assert.equal(await page.locator('.ba-state').count(), rec.automaton.states.length);
       await waitFor(async () => (await page.textContent('#timeline')).includes('new task from page'), 'the timeline line');
       await waitFor(() => logRecords(ws).some((r) => r.ev === 'plan' && r.t >= rec.t && r.actions.some((a) => a.endsWith(', r3)'))), 'a plan into r3');
+      // A page that joins now: its hello names the new task, and it draws its automaton.
+      const late = await openPage(page.context(), page.url(), true);
+      const h2 = hello(late.ws);
+      assert.equal(h2.task, task);
+      assert.deepEqual(h2.automaton, rec.automaton);
+      await waitFor(async () => (await late.page.textContent('#task')) === task, 'the late page\'s header task');
+      assert.equal(await late.page.locator('.ba-state').count(), rec.automaton.states.length);
+      assert.deepEqual(late.errors, [], 'the late page logged errors');
     });
   },
 

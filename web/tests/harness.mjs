@@ -88,9 +88,10 @@ export async function launch({ gpu = false } = {}) {
 }
 
 // Opens the page of a started server; returns {page, ws, errors} where ws.received is
-// every message the page got (parsed), ws.sent every message it sent.
-export async function openPage(context, url) {
-  const page = context.pages()[0] || (await context.newPage());
+// every message the page got (parsed), ws.sent every message it sent. `another`: in a
+// new tab beside the context's first page (a second viewer), not in that page.
+export async function openPage(context, url, another = false) {
+  const page = (!another && context.pages()[0]) || (await context.newPage());
   const errors = [];
   page.on('pageerror', (e) => errors.push(String(e)));
   page.on('console', (m) => m.type() === 'error' && errors.push(m.text()));

@@ -10,7 +10,9 @@
 // equal the statistics; every message satisfies its channel's JSON Schema, and a
 // foxglove.* schema is a part of the npm @foxglove/schemas one of that name, whose
 // whole schema every message satisfies too; the MuJoCo arm's joint states and
-// frame transforms (`rtamp run` and `rtamp batch`) one per tick, a rigid chain.
+// frame transforms (`rtamp run` and `rtamp batch`) one per tick, a rigid chain;
+// every task in force (an episode with `--new-task`) on /task and /automaton as the
+// log's `episode` and `task` records give them.
 // Bad input: a malformed log and an unwritable --mcap give one line and exit 2.
 import assert from 'node:assert/strict';
 import { execFileSync, spawnSync } from 'node:child_process';
@@ -155,7 +157,7 @@ async function check(file, logFile, compression, liveArm = false) {
   assert.equal(logViaIndex.length, lines.length);
   assert.deepEqual([...logViaIndex].sort(), [...lines].sort());
   const topics = new Set([...indexed.channelsById.values()].map((c) => c.topic));
-  for (const t of ['/rtamp/log', '/scene', '/joint_states', '/tf', '/plan', '/tree', '/automaton', '/timeline', '/interventions', '/replans'])
+  for (const t of ['/rtamp/log', '/scene', '/joint_states', '/tf', '/plan', '/tree', '/task', '/automaton', '/automaton/tracked', '/timeline', '/interventions', '/replans'])
     assert.ok(topics.has(t), `channel ${t}`);
 
   // The data-section CRC: every byte before the DataEnd record.
@@ -184,7 +186,28 @@ async function check(file, logFile, compression, liveArm = false) {
   const interventions = lines.filter((l) => JSON.parse(l).ev === 'intervention').length;
   assert.equal((byTopic.get('/interventions') ?? []).length, interventions);
   assert.equal((byTopic.get('/replans') ?? []).length, lines.filter((l) => JSON.parse(l).ev === 'replan').length);
-  assert.equal((byTopic.get('/automaton') ?? []).length, lines.filter((l) => JSON.parse(l).ev === 'run').length);
+  assert.equal((byTopic.get('/automaton/tracked') ?? []).length, lines.filter((l) => JSON.parse(l).ev === 'run').length);
+  // Every task in force (the episode's, then each applied change), in time order, with
+  // its automaton as the log's record has it, on /task and /automaton.
+  const inForce = lines.map((l) => JSON.parse(l)).filter((r) => r.ev === 'episode' || (r.ev === 'task' && r.applied));
+  const tasks = byTopic.get('/task') ?? [], automata = byTopic.get('/automaton') ?? [];
+  assert.equal(tasks.length, inForce.length, `${file}: /task`);
+  assert.equal(automata.length, inForce.length, `${file}: /automaton`);
+  inForce.forEach((r, i) => {
+    const task = JSON.parse(tasks[i].text), automaton = JSON.parse(automata[i].text);
+    assert.equal(tasks[i].logTime, BigInt(Math.round(r.t * 1e9)));
+    assert.equal(automata[i].logTime, tasks[i].logTime);
+    if (i > 0) assert.ok(tasks[i].logTime >= tasks[i - 1].logTime, 'in time order');
+    assert.equal(task.task, r.task);
+    assert.equal(task.by, r.ev === 'episode' ? 'scenario' : r.by);
+    assert.equal(task.automaton_states, r.automaton_states);
+    assert.deepEqual(task.automaton, r.automaton);
+    assert.deepEqual({ states: automaton.states, edges: automaton.edges, state_based: automaton.state_based }, r.automaton);
+    assert.equal(automaton.task, r.task);
+  });
+  const timeline = (byTopic.get('/timeline') ?? []).map((m) => JSON.parse(m.text).message);
+  assert.equal(timeline.filter((m) => m.startsWith('new task from ')).length, lines.filter((l) => JSON.parse(l).ev === 'task').length);
+  assert.equal(timeline.filter((m) => m.startsWith('redirected ')).length, lines.filter((l) => JSON.parse(l).ev === 'redirect').length);
 
   // The arm: joint states from the live MuJoCo world (where it starts, then after each
   // tick) or from `frame` records with joint angles; /tf a chain world -> ur5/base ->
@@ -217,11 +240,15 @@ const runs = [
   { name: 'tray', args: ['3-block-tray', '--world', 'symbolic', '--rate', '0.2', '--seed', '3'], compression: 'zstd' },
   { name: 'lz4', args: ['3-block', '--world', 'symbolic', '--rate', '0.3', '--seed', '5'], compression: 'lz4' },
   { name: 'none', args: ['3-block-tray', '--world', 'symbolic', '--change', 'add', '--seed', '7'], compression: 'none' },
+  // Two task changes, the first redirecting the carry of o1 to r2.
+  { name: 'tasks', args: ['3-block', '--world', 'symbolic', '--new-task', '1@G "o1 in r1" & F G "o2 in r2"', '--new-task', '6@F G "o3 in r2"'],
+    compression: 'zstd', tasks: 3 },
 ];
 for (const r of runs) {
   const log = path.join(tmp, `${r.name}.jsonl`), live = path.join(tmp, `${r.name}.mcap`);
   rtamp(['run', ...r.args, '--quiet', '--log', log, '--mcap', live, '--mcap-compression', r.compression], 'ran');
-  await check(live, log, r.compression);
+  const live1 = await check(live, log, r.compression);
+  if (r.tasks) assert.equal(live1.topics.get('/task').length, r.tasks, `${r.name}: every task in force`);
   for (const c of ['zstd', 'lz4', 'none']) {
     const converted = path.join(tmp, `${r.name}-${c}.mcap`);
     rtamp(['log', 'to-mcap', log, converted, '--compression', c]);

@@ -121,13 +121,100 @@ std::string joint_states_schema() {
       .dump();
 }
 
-// rtamp's own channels: an object with a timestamp and the record's fields.
-std::string rtamp_schema(const std::string& title, const std::string& description) {
-  return json{{"title", title},
-              {"description", description},
-              {"type", "object"},
-              {"properties", {{"timestamp", json::parse(kTime)}}}}
+// rtamp's own channels: an object with a timestamp and the record's fields
+// (`properties`, each {"type": ...}; docs/exec.md "The episode log").
+std::string rtamp_schema(const std::string& title, const std::string& description, json properties,
+                         std::initializer_list<const char*> required) {
+  properties["timestamp"] = json::parse(kTime);
+  json r = json::array({"timestamp"});
+  for (const char* k : required) r.push_back(k);
+  return json{{"title", title}, {"description", description}, {"type", "object"}, {"properties", properties}, {"required", r}}
       .dump();
+}
+
+json of_type(const char* type) { return {{"type", type}}; }
+json array_of(const char* type) { return {{"type", "array"}, {"items", of_type(type)}}; }
+
+std::string plan_schema() {
+  return rtamp_schema("rtamp.Plan", "A plan: its moves, costs and search",
+                      {{"first", of_type("boolean")},
+                       {"cost", of_type("number")},
+                       {"actions", array_of("string")},
+                       {"costs", array_of("number")},
+                       {"in_cycle", array_of("boolean")},
+                       {"automaton_states", array_of("integer")},
+                       {"start", of_type("object")},
+                       {"hand", of_type("string")},
+                       {"seconds", of_type("number")},
+                       {"expanded", of_type("integer")},
+                       {"generated", of_type("integer")},
+                       {"cache_used", of_type("boolean")},
+                       {"cache_hits", of_type("integer")},
+                       {"cache_misses", of_type("integer")}},
+                      {"actions", "costs", "in_cycle"});
+}
+
+std::string tree_schema() {
+  return rtamp_schema("rtamp.TreeStatus", "The behavior tree: its last change and tick status",
+                      {{"applied", of_type("boolean")},
+                       {"deferred", of_type("boolean")},
+                       {"inserted", of_type("integer")},
+                       {"removed", of_type("integer")},
+                       {"updated", of_type("integer")},
+                       {"changes", of_type("integer")},
+                       {"status", of_type("string")},
+                       {"running", of_type("string")}},
+                      {"status", "running"});
+}
+
+// The automaton of a task as exec::automaton_json gives it (the log's `episode` and
+// `task` records): its states, its edges with their guards as text.
+json automaton_properties() {
+  const json state{{"type", "object"},
+                   {"properties",
+                    {{"id", {{"type", "integer"}, {"minimum", 0}}},
+                     {"initial", {{"type", "boolean"}}},
+                     {"accepting", {{"type", "boolean"}}}}},
+                   {"required", {"id", "initial", "accepting"}}};
+  const json edge{{"type", "object"},
+                  {"properties",
+                   {{"from", {{"type", "integer"}, {"minimum", 0}}},
+                    {"to", {{"type", "integer"}, {"minimum", 0}}},
+                    {"label", {{"type", "string"}, {"description", "the guard, a conjunction of atoms"}}},
+                    {"accepting", {{"type", "boolean"}, {"description", "carries every acceptance mark (transition-based)"}}}}},
+                  {"required", {"from", "to", "label"}}};
+  return {{"states", {{"type", "array"}, {"items", state}}},
+          {"edges", {{"type", "array"}, {"items", edge}}},
+          {"state_based", {{"type", "boolean"}}}};
+}
+
+// /task: one message per task in force, when it took effect (the first task at the
+// start, then every applied task change).
+std::string task_schema() {
+  const json automaton{{"type", "object"}, {"properties", automaton_properties()}, {"required", {"states", "edges"}}};
+  return rtamp_schema("rtamp.Task", "The task in force from this time on (docs/exec.md \"A new task\")",
+                      {{"task", {{"type", "string"}, {"description", "the LTL formula"}}},
+                       {"by", {{"type", "string"}, {"description", "scenario, script, command line, page or api"}}},
+                       {"automaton_states", {{"type", "integer"}, {"minimum", 0}}},
+                       {"automaton", automaton},
+                       {"propositions", {{"type", "object"}, {"description", "those the change brought: name -> expression"}}}},
+                      {"task", "by"});
+}
+
+// /automaton: the task's Büchi automaton, at the same times as /task.
+std::string automaton_schema() {
+  json properties = automaton_properties();
+  properties["task"] = of_type("string");
+  return rtamp_schema("rtamp.Automaton", "The Büchi automaton of the task in force", properties,
+                      {"task", "states", "edges"});
+}
+
+// /automaton/tracked: the states of /automaton consistent with the run so far, after a step.
+std::string tracked_schema() {
+  return rtamp_schema("rtamp.AutomatonStates", "The Büchi states tracked after a step of the run, and the run's state",
+                      {{"automaton_states", {{"type", "array"}, {"items", {{"type", "integer"}, {"minimum", 0}}}}},
+                       {"state", {{"type", "object"}, {"description", "thing -> location"}}}},
+                      {"automaton_states", "state"});
 }
 
 std::uint64_t nanos(double t) { return t <= 0 ? 0 : static_cast<std::uint64_t>(std::llround(t * 1e9)); }
@@ -241,7 +328,7 @@ struct EpisodeMcap::Impl {
   std::string scratch;                                        // another message being written
   std::vector<std::string> region_tails;                      // the regions' entities after their timestamps
   std::map<std::string, std::pair<std::array<double, 11>, std::string>> thing_tails;  // a thing's, with its pose
-  std::uint16_t log, timeline, interventions, replans, plan, tree_ch, automaton, scene, joints, tf;
+  std::uint16_t log, timeline, interventions, replans, plan, tree_ch, task_ch, automaton, tracked, scene, joints, tf;
   std::map<std::string, std::uint16_t> observer_schemas;  // add_channel's, by name
 
   Impl(const std::string& path, McapCompression c, const world::Scenario* s, std::size_t chunk_bytes,
@@ -257,14 +344,11 @@ struct EpisodeMcap::Impl {
     timeline = out.add_channel("/timeline", log_s, "json");
     interventions = out.add_channel("/interventions", log_s, "json");
     replans = out.add_channel("/replans", log_s, "json");
-    plan = out.add_channel("/plan", json_schema("rtamp.Plan", rtamp_schema("rtamp.Plan", "A plan: its moves, costs and search")), "json");
-    tree_ch = out.add_channel(
-        "/tree", json_schema("rtamp.TreeStatus", rtamp_schema("rtamp.TreeStatus", "The behavior tree: its last change and tick status")),
-        "json");
-    automaton = out.add_channel(
-        "/automaton",
-        json_schema("rtamp.AutomatonStates", rtamp_schema("rtamp.AutomatonStates", "The Büchi states tracked after a step of the run")),
-        "json");
+    plan = out.add_channel("/plan", json_schema("rtamp.Plan", plan_schema()), "json");
+    tree_ch = out.add_channel("/tree", json_schema("rtamp.TreeStatus", tree_schema()), "json");
+    task_ch = out.add_channel("/task", json_schema("rtamp.Task", task_schema()), "json");
+    automaton = out.add_channel("/automaton", json_schema("rtamp.Automaton", automaton_schema()), "json");
+    tracked = out.add_channel("/automaton/tracked", json_schema("rtamp.AutomatonStates", tracked_schema()), "json");
     scene = out.add_channel("/scene", json_schema("foxglove.SceneUpdate", scene_schema()), "json");
     joints = out.add_channel("/joint_states", json_schema("foxglove.JointStates", joint_states_schema()), "json");
     tf = out.add_channel("/tf", json_schema("foxglove.FrameTransforms", transforms_schema()), "json");
@@ -459,6 +543,25 @@ struct EpisodeMcap::Impl {
     out.write(tree_ch, ns, ns, o);
   }
 
+  // A task took effect (the `episode` record's, an applied `task` record's): /task,
+  // and /automaton when the record has the automaton (logs before it had none).
+  void task_in_force(std::uint64_t ns, const json& j, const std::string& by) {
+    json m{{"timestamp", stamp(ns)}, {"task", text_of(j, "task")}, {"by", by}};
+    const auto a = j.find("automaton");
+    const bool has_automaton = a != j.end() && a->is_object();
+    if (has_automaton) {
+      m["automaton_states"] = j.value("automaton_states", 0);
+      m["automaton"] = *a;
+    }
+    if (const auto p = j.find("propositions"); p != j.end() && p->is_object()) m["propositions"] = *p;
+    put(task_ch, ns, m);
+    if (!has_automaton) return;
+    json g = *a;
+    g["timestamp"] = stamp(ns);
+    g["task"] = m["task"];
+    put(automaton, ns, g);
+  }
+
   void tick(double t, std::string_view r, std::string_view s, std::string_view text) {
     const std::uint64_t ns = nanos(t);
     out.write(log, ns, ns, text);
@@ -487,6 +590,15 @@ struct EpisodeMcap::Impl {
               "episode " + text_of(j, "scenario") + ": " + text_of(j, "task") + " (world " + text_of(j, "world") +
                   ", seed " + text_of(j, "seed") + ")");
       if (scenario) draw(ns, {});  // the regions, before anything is perceived
+      task_in_force(ns, j, "scenario");
+    } else if (ev == "task") {
+      const bool applied = j.value("applied", false);
+      logline(timeline, ns, applied ? 2 : 3, ev,
+              "new task from " + text_of(j, "by") + ": " + text_of(j, "task") +
+                  (applied ? " (" + text_of(j, "automaton_states") + " automaton states)" : " refused: " + text_of(j, "refused")));
+      if (applied) task_in_force(ns, j, text_of(j, "by"));
+    } else if (ev == "redirect") {
+      logline(timeline, ns, 2, ev, "redirected " + text_of(j, "action") + ": " + text_of(j, "rule"));
     } else if (ev == "action") {
       const std::string what = text_of(j, "what"), why = text_of(j, "reason");
       logline(timeline, ns, what == "failed" ? 3 : 2, ev, what + " " + text_of(j, "action") + (why.empty() ? "" : ": " + why));
@@ -513,7 +625,7 @@ struct EpisodeMcap::Impl {
       scratch += ",\"timestamp\":";
       put_sorted_stamp(scratch, ns);
       scratch += '}';
-      out.write(automaton, ns, ns, scratch);
+      out.write(tracked, ns, ns, scratch);
     } else if (ev == "handled_by_tree") {
       logline(timeline, ns, 2, ev, "handled by the tree: " + text_of(j, "by"));
     } else if (ev == "replan") {

@@ -10,7 +10,9 @@
 //   /tf             foxglove.FrameTransforms  the arm's link frames, a chain from the world (UR5 FK)
 //   /plan           rtamp.Plan             each plan
 //   /tree           rtamp.TreeStatus       tree changes and the tick status when it changes
-//   /automaton      rtamp.AutomatonStates  the tracked Büchi states after each step of the run
+//   /task           rtamp.Task             the task in force: at the start and at every task change
+//   /automaton      rtamp.Automaton        its Büchi automaton, at the same times
+//   /automaton/tracked  rtamp.AutomatonStates  the tracked Büchi states after each step of the run
 //   /timeline       foxglove.Log           everything that happened, one line each
 //   /interventions  foxglove.Log           interventions (refused ones as warnings)
 //   /replans        foxglove.Log           replan requests

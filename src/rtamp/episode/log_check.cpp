@@ -162,6 +162,11 @@ void LogCheck::record(const json& j) {
     }
     may(j, ev, "world", &J::is_string, "a string");
     may(j, ev, "conditions", &J::is_string, "a string");
+    may(j, ev, "automaton_states", &J::is_number_unsigned, "a count");
+    if (const json* a = may(j, ev, "automaton", &J::is_object, "an object")) {
+      need(*a, ev, "states", &J::is_array, "an array");
+      need(*a, ev, "edges", &J::is_array, "an array");
+    }
   } else if (ev == "run") {
     placement(need(j, ev, "state", &J::is_object, "an object"), "`run` record: \"state\"", false);
     if (const json* a = may(j, ev, "automaton_states", &J::is_array, "an array"))

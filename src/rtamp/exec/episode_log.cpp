@@ -107,16 +107,21 @@ void EpisodeLog::write(double t, const std::string& object) {
 }
 
 void EpisodeLog::on_begin(const EpisodeInfo& i) {
-  write(0, json{{"ev", "episode"},
-                {"version", kEpisodeLogVersion},
-                {"scenario", i.scenario},
-                {"task", i.task},
-                {"algorithm", i.algorithm},
-                {"conditions", i.conditions},
-                {"reconfiguration", i.reconfiguration},
-                {"world", i.world},
-                {"seed", i.seed}}
-               .dump());
+  json j{{"ev", "episode"},
+         {"version", kEpisodeLogVersion},
+         {"scenario", i.scenario},
+         {"task", i.task},
+         {"algorithm", i.algorithm},
+         {"conditions", i.conditions},
+         {"reconfiguration", i.reconfiguration},
+         {"world", i.world},
+         {"seed", i.seed}};
+  // The first task's automaton, as a `task` record has a new one's.
+  if (i.automaton) {
+    j["automaton_states"] = i.automaton->num_states();
+    j["automaton"] = automaton_value(*i.automaton);
+  }
+  write(0, j.dump(-1, ' ', false, json::error_handler_t::replace));
 }
 
 void EpisodeLog::on_action(double t, const char* what, const std::string& action, const std::string& why) {

@@ -1,6 +1,6 @@
 // The episode log: an EpisodeObserver that writes one JSON object a line
 // (JSON Lines) for everything the reactive loop reports — the episode's
-// settings, perceived placements, interventions (applied or refused), steps
+// settings and its first task's automaton, new tasks, perceived placements, interventions (applied or refused), steps
 // of the observed run with the tracked automaton states, replan requests,
 // plans, tree changes, cycles, ticks — and an `end` record with the metrics.
 // Every record has "ev" (its kind) and "t" (world seconds, 1e-4 s resolution).

@@ -27,6 +27,7 @@ struct EpisodeInfo {
   std::string scenario, task;
   std::string algorithm, conditions, reconfiguration, world;
   std::uint64_t seed = 0;
+  const automata::Automaton* automaton = nullptr;  // the task's, as the planner translated it
 };
 
 struct PlanEvent {

@@ -328,6 +328,7 @@ void ReactiveLoop::begin() {
   info.reconfiguration = name_of(reconfigurations(), options_.reconfiguration);
   info.world = options_.world_name;
   info.seed = options_.seed;
+  info.automaton = &planner_->automaton();
   for (auto* o : observers_) o->on_begin(info);
   metrics_.tasks.push_back(TaskOutcome{world_.time(), scenario_.task, "scenario", planner_->automaton().num_states()});
 

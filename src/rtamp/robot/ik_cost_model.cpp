@@ -1,5 +1,6 @@
 #include "rtamp/robot/ik_cost_model.hpp"
 
+#include <bit>
 #include <cmath>
 #include <limits>
 
@@ -24,6 +25,24 @@ std::size_t IkCostModel::KeyHash::operator()(const Key& k) const {
     h ^= h >> 31;
   }
   return static_cast<std::size_t>(h);
+}
+
+std::size_t IkCostModel::PointKeyHash::operator()(const PointKey& k) const {
+  std::uint64_t h = 0x9e3779b97f4a7c15ull;
+  for (std::uint64_t x : k.v) {
+    h ^= x + 0x9e3779b97f4a7c15ull + (h << 6) + (h >> 2);
+    h *= 0xbf58476d1ce4e5b9ull;
+    h ^= h >> 31;
+  }
+  return static_cast<std::size_t>(h);
+}
+
+const Eigen::Vector3d& IkCostModel::hand_tool_point(const Eigen::Vector3d& hand) const {
+  PointKey key{};
+  for (int i = 0; i < 3; ++i) key.v[i] = std::bit_cast<std::uint64_t>(hand[i]);
+  auto it = tool_points_.find(key);
+  if (it == tool_points_.end()) it = tool_points_.emplace(key, arm_.tool_point(hand_configuration(hand))).first;
+  return it->second;
 }
 
 Eigen::Vector3d IkCostModel::snap(const Eigen::Vector3d& x, std::int64_t* out) const {
@@ -72,7 +91,7 @@ double IkCostModel::lower_bound(const Eigen::Vector3d& hand, const Eigen::Vector
   if (!bound_valid_) return 0.0;
   // The tool starts at H (the hand configuration's tool point) and must reach the hover
   // point above `from` (up to the grasp offset, paid for by the margin), then above `to`.
-  const Eigen::Vector3d tool = arm_.tool_point(hand_configuration(hand));
+  const Eigen::Vector3d& tool = hand_tool_point(hand);
   const Eigen::Vector3d hover_from = from + Eigen::Vector3d(0, 0, hover_height());
   return (tool - hover_from).norm() + (to_anywhere ? 0.0 : (from - to).norm());
 }

@@ -14,7 +14,9 @@
 // Cache: key = (container?, h, p, t) with the points snapped to `quantum`; the
 // cost is computed from the snapped points, so a cached value is exactly what a
 // cold computation would return. A collision checker, when set, makes costs
-// depend on the world it checks: call clear() when that world changes.
+// depend on the world it checks: call clear() when that world changes. The
+// lower bound's tool point of each hand point is kept too (IK, no collisions:
+// it never changes), so a bound costs no IK after the first at that point.
 // Not thread-safe (the cache is mutated by const calls).
 #pragma once
 
@@ -61,6 +63,21 @@ class IkCostModel {
   // is 0 (docs/robot.md has the argument).
   double lower_bound(const Eigen::Vector3d& hand, const Eigen::Vector3d& from, const Eigen::Vector3d& to,
                      bool to_anywhere) const;
+  // Lower bound on the cost of the moves of one thing, each carrying it, from point
+  // `from` to point `to`, wherever the hand is: |from − to| (each move's tool path
+  // goes from above its start to above its end, with the same margin), or 0 where
+  // lower_bound is 0.
+  double carry_bound(const Eigen::Vector3d& from, const Eigen::Vector3d& to) const {
+    return bound_valid_ ? (from - to).norm() : 0.0;
+  }
+  // The point P with |P − p| = |H − (p + hover)| for every p, H the tool point of
+  // hand_configuration(hand): the euclid bounds on P and the location points bound
+  // the tool's travel between hover points.
+  Eigen::Vector3d bound_hand_point(const Eigen::Vector3d& hand) const {
+    return hand_tool_point(hand) - Eigen::Vector3d(0, 0, hover_height());
+  }
+  // Whether the bounds above are the ones documented (false: they are 0).
+  bool bounds_valid() const { return bound_valid_; }
 
   void set_collision_checker(CollisionChecker* checker) {
     checker_ = checker;
@@ -77,6 +94,7 @@ class IkCostModel {
   std::uint64_t cache_hits() const { return hits_; }
   double cold_seconds() const { return cold_seconds_; }  // total time spent in cold computations
   std::size_t cache_size() const { return cache_.size(); }
+  std::size_t bound_points() const { return tool_points_.size(); }  // hand points whose tool point is kept
 
  private:
   struct Key {
@@ -88,6 +106,15 @@ class IkCostModel {
     std::size_t operator()(const Key& k) const;
   };
   Eigen::Vector3d snap(const Eigen::Vector3d& x, std::int64_t* out) const;
+  // The tool point of hand_configuration(hand), kept by the hand point's exact bits.
+  const Eigen::Vector3d& hand_tool_point(const Eigen::Vector3d& hand) const;
+  struct PointKey {
+    std::uint64_t v[3];
+    friend bool operator==(const PointKey&, const PointKey&) = default;
+  };
+  struct PointKeyHash {
+    std::size_t operator()(const PointKey& k) const;
+  };
 
   IkCostParams params_;
   Ur5Kinematics arm_;
@@ -95,6 +122,7 @@ class IkCostModel {
   CollisionChecker* checker_ = nullptr;
   bool bound_valid_ = true;
   mutable std::unordered_map<Key, double, KeyHash> cache_;
+  mutable std::unordered_map<PointKey, Eigen::Vector3d, PointKeyHash> tool_points_;
   mutable std::uint64_t cold_ = 0, hits_ = 0;
   mutable double cold_seconds_ = 0;
 };

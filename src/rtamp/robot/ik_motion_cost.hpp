@@ -48,6 +48,22 @@ class IkMotionCost final : public plan::MotionCostModel {
   double lower_bound(const plan::MotionQuery& q, bool to_anywhere) const override {
     return model_.lower_bound(v(q.hand), v(q.from), v(q.to), to_anywhere);
   }
+  double carry_bound(const world::Vec3& from, const world::Vec3& to) const override {
+    return model_.carry_bound(v(from), v(to));
+  }
+  // Without containers every move carries one block, whose tool path runs through
+  // the hover points above its start and end (hover height above the points) and
+  // goes down and up `approach` at both: the euclid transport bound on the hover
+  // points, from the hand's tool point, plus 4·approach per delivered block
+  // (docs/robot.md). With containers, the default (from lower_bound).
+  double transport_bound(const plan::TransportQuery& t) const override {
+    if (!t.one_at_a_time || !model_.bounds_valid()) return plan::MotionCostModel::transport_bound(t);
+    plan::TransportQuery u = t;
+    const Eigen::Vector3d h = model_.bound_hand_point(v(t.hand));
+    u.hand = {h.x(), h.y(), h.z()};
+    return plan::EuclidCost().transport_bound(u) +
+           4.0 * model_.params().skills.approach_height * static_cast<double>(t.m);
+  }
   unsigned depends() const override {
     return plan::kDependsThing | plan::kDependsHand | plan::kDependsFrom | plan::kDependsTo;
   }

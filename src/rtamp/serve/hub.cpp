@@ -1,6 +1,7 @@
 #include "rtamp/serve/hub.hpp"
 
 #include <algorithm>
+#include <optional>
 #include <string_view>
 
 #include <nlohmann/json.hpp>
@@ -28,17 +29,47 @@ std::string tree_body(const std::string& tree_message, const std::string& status
     for (std::size_t i = 0; i < statuses.size(); ++i) nodes[i]["status"] = status_name(statuses[i]);
   return j.dump();
 }
+// The `"task":..,"automaton":..` members of hello for a record that puts a task in
+// force (an `episode` record with its automaton, an applied `task` record), else none.
+std::optional<std::string> task_members(const std::string& record) {
+  if (record.find("\"ev\":\"task\"") == std::string::npos && record.find("\"ev\":\"episode\"") == std::string::npos)
+    return std::nullopt;  // the quick test: most records are neither
+  const json j = json::parse(record, nullptr, false);
+  if (!j.is_object()) return std::nullopt;
+  const auto ev = j.find("ev"), task = j.find("task"), automaton = j.find("automaton");
+  if (ev == j.end() || !ev->is_string() || task == j.end() || !task->is_string() || automaton == j.end() ||
+      !automaton->is_object())
+    return std::nullopt;
+  const auto applied = j.find("applied");
+  const bool in_force = *ev == "episode" || (*ev == "task" && applied != j.end() && *applied == true);
+  if (!in_force) return std::nullopt;
+  const std::string members = json{{"task", *task}, {"automaton", *automaton}}.dump(-1, ' ', false, json::error_handler_t::replace);
+  return members.substr(1, members.size() - 2);
+}
+
 }  // namespace
 
 std::string state_message(const PlaybackState& s) {
   return json{{"type", "state"}, {"speed", s.speed}, {"paused", s.paused}, {"t", s.t}, {"ended", s.ended}}.dump();
 }
 
-Hub::Hub(std::string hello_fields) : fields_(std::move(hello_fields)) {}
+Hub::Hub(std::string hello_fields) {
+  // The task and automaton are the task in force, kept apart from the fixed members.
+  json fields = json::parse(hello_fields);
+  const json first{{"task", fields.value("task", "")}, {"automaton", fields.value("automaton", json::object())}};
+  fields.erase("task");
+  fields.erase("automaton");
+  fields_ = fields.dump(-1, ' ', false, json::error_handler_t::replace);
+  first_task_ = first.dump(-1, ' ', false, json::error_handler_t::replace);
+  first_task_ = first_task_.substr(1, first_task_.size() - 2);
+  task_ = first_task_;
+}
 
 std::string Hub::hello_locked() const {
   std::string h = "{\"type\":\"hello\",\"protocol\":2,";
   h += fields_.substr(1, fields_.size() - 2);
+  h += ',';
+  h += task_;
   h += ",\"speed\":" + json(state_.speed).dump() + ",\"paused\":" + (state_.paused ? "true" : "false") +
        ",\"t\":" + json(state_.t).dump() + ",\"ended\":" + (state_.ended ? "true" : "false");
   h += ",\"tree\":" + tree_body(tree_, statuses_);
@@ -92,6 +123,7 @@ void Hub::broadcast_locked(const std::shared_ptr<const std::string>& m, Slot slo
 void Hub::log_record(const std::string& record, bool urgent) {
   std::lock_guard lock(mu_);
   history_.push_back(record);
+  if (auto task = task_members(record)) task_ = std::move(*task);
   if (clients_.empty()) return;
   batch_ += batch_.empty() ? kLogHead : std::string_view(",");
   batch_ += record;
@@ -164,6 +196,9 @@ void Hub::reset(std::vector<std::string> history, std::string tree, std::string 
   std::lock_guard lock(mu_);
   batch_.clear();  // the new hello has the history
   history_ = std::move(history);
+  task_ = first_task_;
+  for (const auto& r : history_)
+    if (auto task = task_members(r)) task_ = std::move(*task);
   tree_ = std::move(tree);
   statuses_.clear();
   frame_ = std::move(frame);

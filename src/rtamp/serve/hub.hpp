@@ -13,7 +13,9 @@
 //
 // Invariants: a client that join()s gets `hello` (built from the state at that
 // instant, every record kept, the tree with its latest statuses, `t` the
-// latest frame's), then that frame and the latest camera image (if any),
+// latest frame's, `task` and `automaton` the task in force: the latest record of
+// the history that put one in force — an `episode` record with its automaton,
+// an applied `task` record — else the constructor's), then that frame and the latest camera image (if any),
 // before any later message,
 // and never a message or record twice or out of order: join, leave and every
 // broadcast hold one lock, and join flushes the pending records first.
@@ -49,8 +51,9 @@ struct PlaybackState {
 
 class Hub {
  public:
-  // `hello_fields`: the fixed members of hello as a JSON object text
-  // ({"mode":..,"world":..,"scene":..,"task":..,"automaton":..}).
+  // `hello_fields`: the members of hello as a JSON object text
+  // ({"mode":..,"world":..,"scene":..,"task":..,"automaton":..}); its task and
+  // automaton are the first task's, until a record puts another in force.
   explicit Hub(std::string hello_fields);
 
   void join(const std::shared_ptr<Client>& c);
@@ -80,7 +83,8 @@ class Hub {
   // The playback state: kept (hello's speed, paused, t) and broadcast as `state`.
   void state(const PlaybackState& s);
   PlaybackState state() const;
-  // Replay seek: replaces the history, tree and frame, and sends every client a new hello.
+  // Replay seek: replaces the history (and so the task in force), tree and frame,
+  // and sends every client a new hello.
   void reset(std::vector<std::string> history, std::string tree, std::string frame, const PlaybackState& s);
   // Number of log records kept.
   std::size_t history_size() const;
@@ -95,7 +99,8 @@ class Hub {
   void flush_locked();
 
   mutable std::mutex mu_;
-  std::string fields_;
+  std::string fields_;             // hello's fixed members (a JSON object)
+  std::string first_task_, task_;  // hello's "task":..,"automaton":.. members: the first task's, the one in force
   std::vector<std::string> history_;  // the log records so far
   std::string batch_;  // the pending `log` message, unterminated ("" = none)
   std::string tree_, frame_;  // latest tree message, latest frame message ("" = none)
