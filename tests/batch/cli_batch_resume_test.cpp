@@ -2,7 +2,8 @@
 // killed (SIGKILL) once it has written some rows, a torn last line is added
 // as a kill mid-write would leave it, the batch is resumed and interrupted
 // (SIGINT: exit 130, every log of the log directory ends with its `end`
-// record, the CSV holds whole rows only), then resumed to its end. The merged
+// record and every MCAP file with its footer, the CSV holds whole rows only),
+// then resumed to its end. The merged
 // CSV must have the rows of an uninterrupted run of the same seeds: equal in
 // every column that does not measure wall time. Also: --resume refuses a CSV
 // of another batch and changes nothing (the bad-input table has more).
@@ -92,7 +93,7 @@ TEST(CliBatchResume, KilledThenInterruptedThenResumedEqualsAnUninterruptedRun) {
   std::ofstream(dir / "part.csv", std::ios::app) << "3-block-tray,astar-exp,online-act";
 
   // 2. --resume, then SIGINT: exit 130, whole rows only, every log ended.
-  status = interrupt_after(spawn(dir, {"-o", "part.csv", "--resume", "--log-dir", "logs"}), dir / "part.csv",
+  status = interrupt_after(spawn(dir, {"-o", "part.csv", "--resume", "--log-dir", "logs", "--mcap"}), dir / "part.csv",
                            after_kill + 60, SIGINT);
   const std::string err = ct::slurp(dir / "batch.err");
   ASSERT_TRUE(WIFEXITED(status)) << err;
@@ -104,7 +105,14 @@ TEST(CliBatchResume, KilledThenInterruptedThenResumedEqualsAnUninterruptedRun) {
   EXPECT_LT(interrupted.size(), 2000u);
   EXPECT_TRUE(std::is_sorted(interrupted.begin(), interrupted.end(), rtamp::batch::canonical_less));
   int logs = 0;
+  const std::string magic("\x89MCAP0\r\n", 8);
   for (const auto& e : fs::directory_iterator(dir / "logs")) {
+    if (e.path().extension() == ".mcap") {  // closed: its summary and footer written, the magic last
+      const std::string mcap = ct::slurp(e.path());
+      ASSERT_GT(mcap.size(), 2 * magic.size()) << e.path();
+      EXPECT_EQ(mcap.substr(mcap.size() - magic.size()), magic) << e.path() << " has no end";
+      continue;
+    }
     const std::string log = ct::slurp(e.path());
     ASSERT_FALSE(log.empty()) << e.path();
     const std::size_t last = log.rfind('\n', log.size() - 2);
