@@ -50,7 +50,7 @@ class OutputFile {
   void write(std::string_view bytes);
   // A regular file cut (or extended) to `size` bytes, the next write there.
   void resize(std::size_t size);
-  // Flushes to the file system and closes; OutputError if anything was lost. Idempotent.
+  // Closes; OutputError if the close reports a loss (every write was checked already). Idempotent.
   void close();
   // Closes quietly and removes the file if it is a regular file (a failed conversion
   // leaves no half-written file); a FIFO or a device is never removed.
