@@ -1,6 +1,7 @@
 # rtamp — the two commands of the README and a few more.
 #   make demo    install missing Debian packages, build, run the built-in scenario
-#   make test    install missing Debian packages, build, run every test (ctest -j2)
+#   make test    install missing Debian packages, build, run every test (ctest -j2);
+#                NOT_IN=TREE: only the tests that sanitizer tree TREE does not run (.ci/run)
 #   make test-asan   build with clang under ASan+UBSan into build-asan/ and run the fast tests
 #   make fuzz    build the libFuzzer targets in that same tree (build-asan/), run each for FUZZ_SECONDS, JOBS at a time
 #   make bench   build and run the Google Benchmark suites
@@ -29,7 +30,7 @@ demo: build
 	@scripts/demo $(BUILD)/bin/rtamp
 
 test: build
-	ctest --test-dir $(BUILD) -j$(JOBS) --output-on-failure
+	ctest --test-dir $(BUILD) -j$(JOBS) --output-on-failure $(if $(NOT_IN),-R "$$(scripts/tests-only-in $(BUILD) $(NOT_IN) slow)")
 
 # One clang tree serves the sanitizer tests and the fuzzers: the libraries are built once
 # with ASan + UBSan and libFuzzer's coverage instrumentation (-fsanitize=fuzzer-no-link),

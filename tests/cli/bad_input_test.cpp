@@ -617,23 +617,24 @@ void camera_cases(std::vector<Case>& t) {
 // camera) two classes the colour segmentation cannot tell apart.
 void colour_cases(std::vector<Case>& t) {
   auto add = [&](const std::string& entry, const std::string& word, const std::string& what,
-                 std::vector<std::string> args = {"plan"}) {
+                 std::vector<std::string> args = {"plan"}, int line = kTaskLine + 2) {
     const std::string text = scenario("F G all_in_r2", "colours:\n" + entry + "\n");
     const std::string p = file(text);
     std::vector<std::string> not_created;
     if (args.size() > 1) not_created.push_back(args.back());
     args.insert(args.begin() + 1, p);
-    t.push_back({"colours", args, at(p, text, kTaskLine + 2, word), what, not_created});
+    t.push_back({"colours", args, at(p, text, line, word), what, not_created});
   };
   add("  cup: [1, 0, 0]", "cup", "colours: unknown class 'cup'");
   add("  block: [1.5, 0, 0]", "1.5", "each channel lies in [0, 1]");
   add("  block: [1, 0]", "[1, 0]", "must be a list [r, g, b]");
   add("  block: red", "red", "must be a list [r, g, b]");
-  // The blocks painted the trays' wood: refused before anything runs, with the camera only.
-  add("  block: [0.56, 0.37, 0.2]", "block", "look alike to the camera",
-      {"sim", "--perception", "camera", "--snapshot", "k.png"});
-  add("  tray: [0.8, 0.1, 0.1]", "tray", "look alike to the camera",
-      {"run", "--perception", "camera", "--log", "k.jsonl"});
+  // The blocks and the trays painted alike by the user: refused before anything runs,
+  // with the camera only, at the later entry (a default colour would move instead).
+  add("  tray: [0.55, 0.36, 0.2]\n  block: [0.56, 0.37, 0.2]", "block", "look alike to the camera",
+      {"sim", "--perception", "camera", "--snapshot", "k.png"}, kTaskLine + 3);
+  add("  block: [0.85, 0.15, 0.12]\n  tray: [0.8, 0.1, 0.1]", "tray", "look alike to the camera",
+      {"run", "--perception", "camera", "--log", "k.jsonl"}, kTaskLine + 3);
   add("  block: [0.5, 0.5, 0.52]", "block", "too grey for the camera",
       {"sim", "--perception", "camera", "--snapshot", "k.png"});
 }

@@ -7,13 +7,16 @@
 // classes whose colours the segmentation cannot tell apart.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <functional>
 
 #include "rtamp/sim/camera_rig.hpp"
+#include "rtamp/sim/class_colours.hpp"
 #include "rtamp/sim/colour_segmentation.hpp"
 #include "rtamp/sim/scene_style.hpp"
 #include "rtamp/util/error.hpp"
+#include "rtamp/util/splitmix.hpp"
 #include "test_scenarios.hpp"
 
 namespace rtamp::sim {
@@ -113,41 +116,91 @@ TEST(ColourSegmentation, ClassesOfTheirOwnColourAndAddedThingsAreFound) {
 }
 
 TEST(ColourSegmentation, ClassesTheCameraCannotTellApartAreRefused) {
-  // Every palette hue is told apart from the default classes' red and wood.
-  for (int i = 0; i < 40; ++i)
-    EXPECT_NO_THROW(check_scene_colours(with_classes({}, {"class" + std::to_string(i)}))) << i;
-  // Two classes of the same palette hue (names hash to one of five): refused, naming both,
-  // until one is given a colour of its own.
-  std::string a, b;
-  for (int i = 0; i < 40 && b.empty(); ++i)
-    for (int j = 0; j < i && b.empty(); ++j) {
-      const world::Scenario one = with_classes({}, {"k" + std::to_string(j)});
-      const world::Scenario two = with_classes({}, {"k" + std::to_string(i)});
-      if (class_colour(one, "k" + std::to_string(j)) == class_colour(two, "k" + std::to_string(i)))
-        a = "k" + std::to_string(j), b = "k" + std::to_string(i);
-    }
-  ASSERT_FALSE(b.empty());
+  // Two classes of one's own whose colours collide: refused, naming both, at the entry
+  // of the later one, until one is given a colour apart.
   try {
-    check_scene_colours(with_classes({}, {a, b}));
-    ADD_FAILURE() << a << " and " << b << " were not refused";
+    check_scene_colours(with_classes({{"cup", {0.1, 0.7, 0.65}}, {"bowl", {0.12, 0.72, 0.66}}}, {"cup", "bowl"}));
+    ADD_FAILURE() << "cup and bowl were not refused";
   } catch (const Error& e) {
     const std::string m = e.what();
-    EXPECT_NE(m.find("'" + a + "'"), std::string::npos) << m;
-    EXPECT_NE(m.find("'" + b + "'"), std::string::npos) << m;
-    EXPECT_NE(m.find("0.0° apart"), std::string::npos) << m;
-    EXPECT_EQ(e.where().line, 32) << m;  // the later one's operator action
+    EXPECT_NE(m.find("'cup'"), std::string::npos) << m;
+    EXPECT_NE(m.find("'bowl'"), std::string::npos) << m;
+    EXPECT_NE(m.find("look alike to the camera"), std::string::npos) << m;
+    EXPECT_EQ(e.where().line, 20) << m;  // the colours: entry
   }
-  EXPECT_NO_THROW(check_scene_colours(with_classes({{b, {0.85, 0.2, 0.55}}}, {a, b})));
-  // A colour of one's own near another class's hue (orange by the trays' wood), or grey.
+  EXPECT_NO_THROW(check_scene_colours(with_classes({{"cup", {0.1, 0.7, 0.65}}, {"bowl", {0.85, 0.2, 0.55}}}, {"cup", "bowl"})));
+  // A user's colour on a default's hue (orange by the trays' wood): the user's wins and the
+  // default moves away; given both, they are the user's collision, refused.
+  const world::Scenario orange = with_classes({{"cup", {0.9, 0.45, 0.1}}}, {"cup"});
+  EXPECT_NO_THROW(check_scene_colours(orange));
+  EXPECT_EQ(class_colour(orange, "cup"), (std::array<double, 3>{0.9, 0.45, 0.1}));
+  EXPECT_GE(hue_angle_deg(class_colour(orange, "tray"), class_colour(orange, "cup")), kMinHueApart);
   try {
-    check_scene_colours(with_classes({{"cup", {0.9, 0.45, 0.1}}}, {"cup"}));
-    ADD_FAILURE() << "orange was not refused beside wood";
+    check_scene_colours(with_classes({{"cup", {0.9, 0.45, 0.1}}, {"tray", {0.55, 0.36, 0.2}}}, {"cup"}));
+    ADD_FAILURE() << "orange was not refused beside the user's wood";
   } catch (const Error& e) {
     EXPECT_NE(std::string(e.what()).find("'tray'"), std::string::npos) << e.what();
-    EXPECT_EQ(e.where().line, 20);  // at the colours entry
   }
-  EXPECT_THROW(check_scene_colours(with_classes({{"cup", {0.5, 0.5, 0.55}}}, {"cup"})), Error);
-  EXPECT_THROW(check_scene_colours(with_classes({{"block", {0.6, 0.4, 0.22}}}, {})), Error);
+  EXPECT_THROW(check_scene_colours(with_classes({{"cup", {0.5, 0.5, 0.55}}}, {"cup"})), Error);  // grey
+}
+
+// Default colours tell classes apart: for sets of 2-6 classes of arbitrary names (colour
+// names among them, in any case and inside longer names), every pair of thing classes,
+// the default block and tray included, is at least 12° apart in hue and the scene passes
+// the camera's check; a class named after a colour gets that colour (within 10° of hue)
+// unless a user's colour has it; a user's colour is kept.
+TEST(ColourSegmentation, DefaultColoursTellArbitraryClassesApart) {
+  const std::vector<std::string> words{"red", "Blue", "green_cube", "bigYellow", "cup", "bowl", "k7", "crate",
+                                       "purple-box", "teal", "widget", "x", "orange", "pink", "lime", "navy",
+                                       "RED", "gizmo", "brown", "cyan"};
+  SplitMix64 rng(7);
+  for (int trial = 0; trial < 300; ++trial) {
+    const int n = 2 + static_cast<int>(rng.below(5));
+    std::vector<std::string> classes;
+    while (static_cast<int>(classes.size()) < n) {
+      std::string c = words[rng.below(words.size())];
+      if (rng.below(3) == 0) c += std::to_string(rng.below(100));  // names of one's own
+      if (std::find(classes.begin(), classes.end(), c) == classes.end()) classes.push_back(c);
+    }
+    std::vector<std::pair<std::string, world::Vec3>> own;
+    if (rng.below(4) == 0) own.push_back({classes[0], {0.1, 0.7, 0.65}});
+    const world::Scenario s = with_classes(own, classes);
+    std::string listed;
+    for (const auto& c : classes) listed += c + " ";
+    SCOPED_TRACE(listed);
+    EXPECT_NO_THROW(check_scene_colours(s));
+    const auto all = class_colours(s);
+    for (const auto& c : classes) ASSERT_TRUE(all.count(c)) << c;
+    for (auto a = all.begin(); a != all.end(); ++a)
+      for (auto b = std::next(a); b != all.end(); ++b)
+        EXPECT_GE(hue_angle_deg(a->second, b->second), kMinHueApart) << a->first << " " << b->first;
+    if (!own.empty()) {
+      EXPECT_EQ(all.at(classes[0]), (std::array<double, 3>{0.1, 0.7, 0.65}));
+    }
+    // The first class named after a colour (not the user's) has it exactly.
+    for (const auto& c : classes) {
+      if (!own.empty() && c == classes[0]) continue;
+      if (const Rgb* named = colour_named_in(c)) {
+        if (own.empty() || hue_angle_deg(*named, own[0].second) >= kMinHueApart + 10) {
+          EXPECT_LE(hue_angle_deg(all.at(c), *named), 10.0 + 1e-9) << c;
+        }
+        break;
+      }
+    }
+    for (const auto& c : classes) EXPECT_EQ(class_colour(s, c), all.at(c));
+  }
+  // The named colours themselves.
+  EXPECT_EQ(*colour_named_in("red"), *named_colour("red"));
+  EXPECT_EQ(*colour_named_in("bigBlueBox"), *named_colour("blue"));
+  EXPECT_EQ(*colour_named_in("green-2"), *named_colour("green"));
+  EXPECT_EQ(colour_named_in("redwood"), nullptr);  // a word, not a part of one
+  EXPECT_EQ(colour_named_in("block"), nullptr);
+  // `red` and `blue` of one's own: their colours, and the blocks move off red.
+  const world::Scenario rb = with_classes({}, {"red", "blue"});
+  EXPECT_EQ(class_colour(rb, "red"), *named_colour("red"));
+  EXPECT_LE(hue_angle_deg(class_colour(rb, "blue"), *named_colour("blue")), 10.0 + 1e-9);
+  EXPECT_GE(hue_angle_deg(class_colour(rb, "block"), class_colour(rb, "red")), kMinHueApart);
+  EXPECT_NO_THROW(check_scene_colours(rb));
 }
 
 TEST(ColourSegmentation, ABadPaletteOrOptionIsRefused) {

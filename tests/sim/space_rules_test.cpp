@@ -3,7 +3,9 @@
 // symbolic world's words (the same interventions applied to an exec::SymbolicWorld of
 // the same scenario give the same outcome and detail), the arm does not place into a
 // full location, and the person sets things down with the arm's clearance
-// (world::kPlaceGap), so the arm's next pick does not knock a neighbour out.
+// (world::kPlaceGap), so the arm's next pick does not knock a neighbour out; a place the
+// rule book refuses at the moment of the release (the location filled during the place)
+// keeps the thing in hand and fails in the same words.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -88,6 +90,43 @@ TEST(SimSpaceRules, ArmDoesNotPlaceIntoAFullLocation) {
   // The same question the skill runner asks, answered by the rule book directly.
   EXPECT_EQ(space_refusal(s.sim(), "o2", {{0.04, 0.04, 0.04}, false}, "r2", {}), "r2 has no room (capacity 1)");
   EXPECT_EQ(space_refusal(s.sim(), "o2", {{0.04, 0.04, 0.04}, false}, "r3", {}), "");
+}
+
+TEST(SimSpaceRules, AReleaseTheRuleBookRefusesKeepsTheThingInHand) {
+  // r2 (capacity 2) holds o2; the arm carries o1 there, and while the place runs a person
+  // adds a block into r2. At the release the rule book says no: the arm keeps o1, backs
+  // up, and the place fails in the symbolic world's words.
+  world::Scenario sc = testing::three_block();
+  sc.regions[1].capacity = 2;
+  Session s(sc);
+  s.sim().step(50);
+  ASSERT_TRUE(s.op().apply(relocate("o2", "r2")).applied);
+  s.sim().step(200);
+  bool added = false;
+  std::string refused_then;
+  const ActionResult r = s.skills().move("o1", "r2", [&] {
+    const Controller& c = s.controller();
+    if (added || c.plan().skill != "place" || c.elapsed() < 0.2) return;
+    const OperatorEvent e = s.op().apply(add("x1", "r2"));
+    ASSERT_TRUE(e.applied) << e.detail;
+    added = true;
+    refused_then = space_refusal(s.sim(), "o1", {{0.04, 0.04, 0.04}, false}, "r2", {s.sim().find("o1")});
+  });
+  ASSERT_TRUE(added);
+  EXPECT_EQ(refused_then, "r2 has no room (capacity 2)");
+  EXPECT_EQ(r.status, Status::Failure);
+  EXPECT_EQ(r.reason, "cannot place o1: r2 has no room (capacity 2)");
+  EXPECT_EQ(s.sim().held(), s.sim().find("o1"));  // kept, not let go of over r2
+  s.sim().step(200);
+  EXPECT_EQ(perceived(s, "o1"), "hand");
+  EXPECT_EQ(perceived(s, "o2"), "r2");
+  EXPECT_EQ(perceived(s, "x1"), "r2");
+  // Put back where it came from: r1 has room, and the release there is let go.
+  ASSERT_TRUE(s.skills().start_place("r1"));
+  EXPECT_EQ(s.skills().run_controller({}), Status::Success) << s.controller().reason();
+  s.sim().step(200);
+  EXPECT_EQ(s.sim().held(), -1);
+  EXPECT_EQ(perceived(s, "o1"), "r1");
 }
 
 // The gap between two footprints: the larger of their x and y separations.

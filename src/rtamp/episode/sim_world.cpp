@@ -117,6 +117,7 @@ void SimWorld::start(const exec::Move& m) {
   move_.to = body_of(m.to);
   to_ = m.to;
   taken_ = false;
+  put_backs_ = 0;
   status_ = exec::MoveStatus::Running;
   why_.clear();
   phase_ = Phase::Picking;
@@ -130,6 +131,18 @@ void SimWorld::start(const exec::Move& m) {
       seen->size = b->size;
       seen->container = b->container;
     }
+  // The point of the location the thing is picked from (its region's centre, its container),
+  // from which a failed move's put-back looks for the closest location with room.
+  const sim::Simulation& sim = session_.sim();
+  const int body = sim.find(move_.thing), from = sim.find(move_.from);
+  if (const world::Region* r = sim.scenario().find_region(move_.from))
+    source_point_ = Eigen::Vector3d(r->center[0], r->center[1], r->center[2]);
+  else if (from >= 0 && sim.thing(from).present)
+    source_point_ = sim.position(from);
+  else if (body >= 0 && sim.thing(body).present)
+    source_point_ = sim.position(body);
+  else
+    source_point_ = sim.tool_pose().translation();
   if (!session_.skills().start_pick(move_.thing, seen)) end(exec::MoveStatus::Failed, session_.controller().reason());
 }
 
@@ -139,12 +152,20 @@ bool SimWorld::place_somewhere(const std::string& preferred) {
   if (held < 0) return false;
   std::vector<std::string> candidates;
   if (!preferred.empty()) candidates.push_back(preferred);
-  std::vector<std::pair<double, std::string>> regions;
-  const Eigen::Vector3d tool = sim.tool_pose().translation();
-  for (const auto& r : sim.scenario().regions)
-    regions.emplace_back(std::hypot(r.center[0] - tool.x(), r.center[1] - tool.y()), r.name);
-  std::sort(regions.begin(), regions.end());
-  for (const auto& [d, name] : regions) candidates.push_back(name);
+  // Then, as the symbolic world puts a thing back, every location by the distance of its
+  // point from the point of the location the thing was picked from (regions first on
+  // ties, then declaration order; into a container only an object).
+  std::vector<std::pair<double, std::string>> others;
+  auto add = [&](double x, double y, const std::string& name) {
+    others.emplace_back(std::hypot(x - source_point_.x(), y - source_point_.y()), name);
+  };
+  for (const auto& r : sim.scenario().regions) add(r.center[0], r.center[1], r.name);
+  if (!sim.thing(held).container)
+    for (int i = 0; i < static_cast<int>(sim.things().size()); ++i)
+      if (const sim::Thing& t = sim.thing(i); t.container && t.present && !t.name.empty() && i != held)
+        add(sim.position(i).x(), sim.position(i).y(), t.name);
+  std::stable_sort(others.begin(), others.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+  for (const auto& [d, name] : others) candidates.push_back(name);
   for (const std::string& loc : candidates) {
     if (loc == move_.thing) continue;
     if (!session_.skills().place_spot(held, loc)) continue;
@@ -158,11 +179,17 @@ bool SimWorld::place_somewhere(const std::string& preferred) {
 
 // A failed move must not leave its thing in the gripper: put it somewhere valid first. A
 // failed pick backs the empty gripper off (out of the camera's way).
+// A put-back that fails too (its release refused: a person filled that location as well)
+// tries the next closest location with room, up to kMaxPutBacks in all, then lets go where it is.
 void SimWorld::fail_or_recover(const std::string& why) {
-  failure_ = why;
-  if (phase_ != Phase::Recovering && holds(move_.thing)) {
+  if (phase_ != Phase::Recovering) failure_ = why;
+  if (holds(move_.thing)) {
+    const bool first = phase_ != Phase::Recovering;
     phase_ = Phase::Recovering;
-    if (place_somewhere(move_.from)) return;
+    if (put_backs_ < kMaxPutBacks) {
+      ++put_backs_;
+      if (place_somewhere(first ? move_.from : std::string())) return;
+    }
     session_.sim().detach();
   }
   if (phase_ == Phase::Picking && session_.sim().held() < 0 && session_.skills().start_retreat() &&
@@ -230,7 +257,15 @@ bool SimWorld::busy() {
   auto& controller = session_.controller();
   if (returning_ && controller.status() != sim::Status::Running) {
     returning_ = false;
-    if (controller.status() == sim::Status::Failure && holds(back_thing_)) session_.sim().detach();
+    if (controller.status() == sim::Status::Failure && holds(back_thing_)) {
+      // The put-back after a halt failed (its release refused, say): the closest location with room.
+      if (put_backs_ < kMaxPutBacks && (++put_backs_, place_somewhere({}))) {
+        returning_ = true;
+        hand_ = placed_at_;
+      } else {
+        session_.sim().detach();
+      }
+    }
   }
   return returning_;
 }

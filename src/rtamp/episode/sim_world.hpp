@@ -7,10 +7,13 @@
 //
 // Failure and preemption never leave the arm in a bad spot:
 //  - a move that fails while holding its thing first puts it back — at its
-//    source, or, if that is gone or full, the closest region with a free
-//    spot — then reports Failed;
-//  - a place whose destination vanished (a tray removed mid-carry) fails the
-//    same way;
+//    source, or, if that is gone or full, the location with room and a free
+//    spot closest to the source (regions first on ties; a container only for
+//    an object), as the symbolic world does — then reports Failed;
+//  - a place whose destination vanished (a tray removed mid-carry), or that the
+//    rule book of space (world/space_rules.hpp) refuses when the fingers are to open
+//    (a person filled the location during the carry: the arm keeps the thing and
+//    backs up), fails the same way — as the symbolic world's place does;
 //  - a thing taken out of the gripper, or a pick that failed (a missed grasp), ends
 //    the move with Failed and the empty gripper backs off;
 //  - halt() stops the arm, puts a held thing back the same way, or backs the
@@ -85,7 +88,8 @@ class SimWorld final : public exec::World, public exec::Intervenable, public exe
   std::string body_of(const std::string& believed) const;
   void note(const sim::OperatorEvent& e);
   void fail_or_recover(const std::string& why);
-  // Starts placing the held thing at `preferred`, else the closest region with room; false if none.
+  // Starts placing the held thing at `preferred`, else the location with room closest to
+  // source_point_; false if none.
   bool place_somewhere(const std::string& preferred);
   void end(exec::MoveStatus s, const std::string& why);
   void park_if_idle();
@@ -97,6 +101,9 @@ class SimWorld final : public exec::World, public exec::Intervenable, public exe
   Phase phase_ = Phase::Idle;
   exec::MoveStatus status_ = exec::MoveStatus::Idle;
   std::string why_, failure_, hand_, placed_at_;
+  static constexpr int kMaxPutBacks = 3;  // places tried to put a failed move's thing back
+  int put_backs_ = 0;
+  Eigen::Vector3d source_point_ = Eigen::Vector3d::Zero();  // the point of the move's source location
   bool returning_ = false;
   bool taken_ = false;  // a person took the carried thing
   std::string back_thing_;

@@ -72,7 +72,8 @@ class EpisodeObserver {
   virtual void on_cycle(double /*t*/, int /*completed*/) {}
   // A new task was given (applied or refused).
   virtual void on_task(double /*t*/, const TaskEvent&) {}
-  // The running move was halted because finishing it would break the new task (`rule` says why).
+  // The running move was halted because finishing it would break the new task, or the rule
+  // book of space would refuse its place now (`rule` says why).
   virtual void on_redirect(double /*t*/, const std::string& /*action*/, const std::string& /*rule*/) {}
   virtual void on_tick(double /*t*/, bt::Status, const std::string& /*running*/) {}
   virtual void on_end(double /*t*/, const EpisodeMetrics&, const world::Placement& /*final_placement*/) {}

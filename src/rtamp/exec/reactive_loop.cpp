@@ -9,6 +9,7 @@
 #include "rtamp/util/format.hpp"
 #include "rtamp/world/geometry.hpp"
 #include "rtamp/world/propositions.hpp"
+#include "rtamp/world/space_rules.hpp"
 
 namespace rtamp::exec {
 
@@ -660,6 +661,16 @@ void ReactiveLoop::forbid_failed_moves(const Starts& st) {
 
 // ---- planning -----------------------------------------------------------------
 
+// "" if the rule book of space lets the running move `m` put its thing at its
+// destination in the current state (sizes and capacities as the planner has
+// them, added things included), else why not.
+std::string ReactiveLoop::place_refusal(const Move& m) const {
+  const world::Scenario& in = planner_->scenario();
+  const std::string why =
+      world::refusal(m.thing, world::body_of(in, m.thing), m.to, world::location_now(in, symbolic_, m.to, m.thing));
+  return why.empty() ? why : "cannot place " + m.thing + ": " + why;
+}
+
 // The planner's start: the current state, the hand and the tracked automaton
 // states — and, while a move runs undisturbed, the state after that move
 // (`ahead`, tried first: the move is not cut).
@@ -673,7 +684,7 @@ ReactiveLoop::Starts ReactiveLoop::starts() {
     const std::string* at = seen_.location_of(cur.thing);
     const bool on_track = at && (*at == kInHand || *at == cur.from);
     if (on_track && symbolic_.things.count(cur.thing) && is_location(scenario_, symbolic_, cur.to) &&
-        cur.to != cur.thing) {
+        cur.to != cur.thing && (st.cannot_finish = place_refusal(cur)).empty()) {
       Start a = st.now;
       a.placement.things.at(cur.thing).location = cur.to;
       a.hand = cur.to;
@@ -732,6 +743,10 @@ plan::PlanResult ReactiveLoop::plan_from(const Starts& st, Outcome& out) {
     return r;
   };
   plan::PlanResult r = st.ahead ? attempt(*st.ahead) : attempt(st.now);
+  if (!st.cannot_finish.empty()) {  // the running move cannot finish: it stops, its thing put back
+    out.stop_running_move = true;
+    out.cannot_finish = st.cannot_finish;
+  }
   if (!r.found && st.ahead) {
     plan::PlanResult now = attempt(st.now);
     if (now.found) {
@@ -756,16 +771,28 @@ bool ReactiveLoop::collect_plan() {
   if (!r.found) {
     if (!settled()) {  // not judged on a percept that may still be catching up: asked again once settled
       replan_when_settled_ = true;
-      if (outcome.stop_running_move) tree_->tree().halt();
+      if (outcome.stop_running_move) stop_running_move(outcome);
       return true;
     }
     finish(r.reason == plan::NoPlanReason::NoAcceptingCycle ? EndReason::Unsatisfiable : EndReason::NoPlan,
            std::string("no plan: ") + r.message + caused_by());
     return true;
   }
-  if (outcome.stop_running_move) tree_->tree().halt();  // the world puts its thing back
+  if (outcome.stop_running_move) stop_running_move(outcome);
   install(r, false, outcome);
   return true;
+}
+
+// Halts the running move (the world puts its thing back); a move the rule book
+// stopped is reported as a redirection with the reason.
+void ReactiveLoop::stop_running_move(const Outcome& outcome) {
+  const std::string action = runner_->current().action;
+  tree_->tree().halt();
+  if (!outcome.cannot_finish.empty() && !action.empty())
+    for (auto* o : observers_)
+      o->on_redirect(world_.time(), action,
+                     outcome.cannot_finish + " — the move cannot finish: halted, its thing put back where it was "
+                                             "picked (or another valid place), planned from there");
 }
 
 void ReactiveLoop::install(plan::PlanResult& r, bool first, const Outcome& outcome) {

@@ -21,7 +21,12 @@
 // Planning. Every plan and replan starts from (the current state, the tracked
 // automaton states). While a move runs and its thing is still where the move
 // expects, the plan starts from the state after that move (the move is not
-// cut). The task is done when every step of the tree is done and staying in
+// cut) — unless the rule book of space (world/space_rules.hpp) would refuse
+// that move's place now (a person filled its destination during the carry):
+// the move cannot finish, so the plan starts from the current state (its
+// thing back where it was picked) and the move is halted (the world puts the
+// thing back; on_redirect says why). No plan starts from a state that breaks
+// the rule book because a running move was assumed finished. The task is done when every step of the tree is done and staying in
 // the current state forever satisfies the task from a tracked state; a task
 // whose plans cycle through moves (patrolling) counts completed cycles — a
 // cycle counts when the tree has run the whole plan and the run since the
@@ -184,6 +189,7 @@ class ReactiveLoop {
   struct Starts {
     Start now;
     std::optional<Start> ahead;  // after the running move
+    std::string cannot_finish;   // why the running move's place would be refused now ("" none)
   };
   // What the worker tells besides the plan (read after its future is ready).
   struct Outcome {
@@ -191,6 +197,7 @@ class ReactiveLoop {
     world::Placement placement;         // the state it started from (`now` or `ahead`)
     std::string hand;                   // and the hand's location ("" home)
     bool stop_running_move = false;     // planned from the current state: halt the running move
+    std::string cannot_finish;          // Starts::cannot_finish: why it is halted
   };
   struct Pending {
     std::future<plan::PlanResult> future;
@@ -214,6 +221,8 @@ class ReactiveLoop {
   void after_moves();
   static std::string state_key(const world::Placement& p);
   Starts starts();
+  std::string place_refusal(const Move& m) const;
+  void stop_running_move(const Outcome& outcome);
   void forbid_failed_moves(const Starts& st);
   void request_plan(const std::string& why);
   plan::PlanResult plan_from(const Starts& st, Outcome& out);

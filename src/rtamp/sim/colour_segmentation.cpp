@@ -9,6 +9,7 @@
 #include <opencv2/core.hpp>
 #include <opencv2/imgproc.hpp>
 
+#include "rtamp/sim/class_colours.hpp"
 #include "rtamp/sim/scene_style.hpp"
 #include "rtamp/util/error.hpp"
 
@@ -28,16 +29,23 @@ std::array<double, 3> unit(const std::array<double, 3>& c) {
 
 // The chroma vector, the colour minus its smallest channel: its direction is the hue
 // (shading scales it, white light leaves it), its largest entry the chroma.
-double chroma_span(const std::array<double, 3>& c) {
-  return std::max({c[0], c[1], c[2]}) - std::min({c[0], c[1], c[2]});
-}
-
 std::array<double, 3> hue_direction(const std::array<double, 3>& c) {
   const double lo = std::min({c[0], c[1], c[2]});
   return unit({c[0] - lo, c[1] - lo, c[2] - lo});
 }
 
 }  // namespace
+
+double chroma_span(const std::array<double, 3>& c) {
+  return std::max({c[0], c[1], c[2]}) - std::min({c[0], c[1], c[2]});
+}
+
+double hue_angle_deg(const std::array<double, 3>& a, const std::array<double, 3>& b) {
+  const auto u = hue_direction(a), v = hue_direction(b);
+  if (u == std::array<double, 3>{0, 0, 0} || v == std::array<double, 3>{0, 0, 0}) return 0;
+  const double cs = std::clamp(u[0] * v[0] + u[1] * v[1] + u[2] * v[2], -1.0, 1.0);
+  return std::acos(cs) * 180 / std::numbers::pi;
+}
 
 ColourSegmenter::ColourSegmenter(std::vector<KnownColour> colours, ColourSegmentationOptions options)
     : colours_(std::move(colours)), options_(options) {
@@ -191,9 +199,7 @@ void check_scene_colours(const world::Scenario& s, const ColourSegmentationOptio
                   where_class(s, a.label));
     for (std::size_t j = 0; j < i; ++j) {
       const KnownColour& b = things[j];
-      const auto u = hue_direction(a.rgb), v = hue_direction(b.rgb);
-      const double cs = std::clamp(u[0] * v[0] + u[1] * v[1] + u[2] * v[2], -1.0, 1.0);
-      const double angle = std::acos(cs) * 180 / std::numbers::pi;
+      const double angle = hue_angle_deg(a.rgb, b.rgb);
       if (angle < needed) {
         char buf[32];
         std::snprintf(buf, sizeof buf, "%.1f", angle);
@@ -210,15 +216,14 @@ void check_scene_colours(const world::Scenario& s, const ColourSegmentationOptio
 }
 
 std::vector<KnownColour> scene_colours(const world::Scenario& s) {
-  std::set<std::string> classes;
-  for (const auto& o : s.objects) classes.insert(o.cls);
-  for (const auto& c : s.containers) classes.insert(c.cls);
-  for (const auto& i : s.interventions)
-    if (!i.cls.empty()) classes.insert(i.cls);
-  classes.insert("block");
-  classes.insert("tray");
   std::vector<KnownColour> out;
-  for (const std::string& c : classes) out.push_back({c, class_colour(s, c), true});
+  for (const auto& [cls, rgb] : class_colours(s)) out.push_back({cls, rgb, true});
+  for (KnownColour& k : backdrop_colours(s)) out.push_back(std::move(k));
+  return out;
+}
+
+std::vector<KnownColour> backdrop_colours(const world::Scenario& s) {
+  std::vector<KnownColour> out;
   for (std::size_t i = 0; i < s.regions.size(); ++i) {
     const auto c = region_colour(i);
     out.push_back({"region " + s.regions[i].name, c, false});

@@ -78,5 +78,13 @@ void check_scene_colours(const world::Scenario& s, const ColourSegmentationOptio
 // The colours a MuJoCo model built from `s` shows (mjcf_builder.hpp): each thing class,
 // each region's fill and outline, the table, the floor, the arm and the gripper.
 std::vector<KnownColour> scene_colours(const world::Scenario& s);
+// scene_colours without the thing classes: the regions', the table's, the arm's.
+std::vector<KnownColour> backdrop_colours(const world::Scenario& s);
+
+// The angle between two colours' hues as the segmentation measures it (the directions of
+// their chroma vectors), in degrees in [0, 90]; 0 if either has no chroma.
+double hue_angle_deg(const std::array<double, 3>& a, const std::array<double, 3>& b);
+// A colour's chroma: its largest channel minus its smallest.
+double chroma_span(const std::array<double, 3>& c);
 
 }  // namespace rtamp::sim

@@ -28,6 +28,7 @@ void Controller::start(MotionPlan plan) {
   next_event_ = 0;
   gripper_ = Gripper::Idle;
   failing_.clear();
+  refused_.clear();
   object_ = plan_.object.empty() ? -1 : sim_.find(plan_.object);
   holding_ = false;
   if (plan_.trajectory.empty()) return finish(Status::Failure, "empty motion plan");
@@ -129,6 +130,11 @@ Status Controller::update() {
         sim_.set_finger_target(options_.closed_opening);
         gripper_ = Gripper::Closing;
       } else {
+        if (holding_ && plan_.release_check)
+          if (std::string why = plan_.release_check(); !why.empty()) {
+            refused_ = std::move(why);  // kept in hand: the plan's retreat takes it back up
+            continue;
+          }
         if (object_ >= 0 && sim_.held() == object_) sim_.detach();
         holding_ = false;
         sim_.set_finger_target(sim_.finger_max());
@@ -152,7 +158,10 @@ Status Controller::update() {
                                next_event_ >= plan_.events.size();
   if (trajectory_done) {
     if (done_at_ < 0) done_at_ = now;
-    if (now - done_at_ >= options_.settle_time) finish(Status::Success);
+    if (now - done_at_ >= options_.settle_time) {
+      if (!refused_.empty()) return finish(Status::Failure, std::move(refused_)), status_;
+      finish(Status::Success);
+    }
   }
   return status_;
 }

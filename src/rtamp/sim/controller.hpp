@@ -14,14 +14,19 @@
 //  - the object left the hand while it had to be held (taken away by the operator,
 //    hidden, or slipped more than slip_tolerance from its grasp pose);
 //  - the object to grasp vanished before the grasp;
-//  - tracking diverged (joint error above tracking_limit, e.g. the arm is blocked).
+//  - tracking diverged (joint error above tracking_limit, e.g. the arm is blocked);
+//  - the plan's release check refused to let go (a place the rule book refuses at the
+//    moment of the release: a person filled the location since the place began); the
+//    object is kept, the rest of the plan (its retreat) runs, then FAILURE with that reason.
 // The trajectory clock pauses while the gripper is closing or opening, so plans need no
 // exact gripper timing. halt() stops where the arm is (a BT preemption). A pick opens
 // the fingers as it starts (a grasp halted while closing leaves them closed).
 // Invariants: at most one plan runs; after SUCCESS of a plan ending with the object in
-// hand, sim.held() is that object; after a release, it is -1.
+// hand, sim.held() is that object; after a release, it is -1; a refused release leaves
+// the object in hand (sim.held() is still it) and ends the plan FAILURE.
 #pragma once
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -46,6 +51,9 @@ struct MotionPlan {
   bool absent_ok = false;            // a pick toward where `object` is perceived: it may not be there
   double cost = 0;                   // motion cost (tool path length, m), for reports
   std::string skill;                 // "pick", "place", ... (for reports)
+  // Asked when an open event is due with `object` in hand: "" lets go; else why it may
+  // not be let go of here now (then it is kept and the plan ends FAILURE with that).
+  std::function<std::string()> release_check;
 };
 
 struct ControllerOptions {
@@ -96,6 +104,7 @@ class Controller {
   Gripper gripper_ = Gripper::Idle;
   bool holding_ = false;  // the plan has grasped the object and not released it yet
   std::string failing_;   // a failed grasp's reason, reported once the fingers are open
+  std::string refused_;   // the release check's refusal, reported once the plan has run
   Eigen::Isometry3d grasp_rel_ = Eigen::Isometry3d::Identity();
 };
 

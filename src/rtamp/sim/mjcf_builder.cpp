@@ -1,4 +1,6 @@
 #include "rtamp/sim/mjcf_builder.hpp"
+
+#include "rtamp/sim/class_colours.hpp"
 #include "rtamp/sim/scene_style.hpp"
 
 #include "rtamp/sim/ur5_model.hpp"
@@ -111,22 +113,9 @@ std::string gripper_mjcf(const MjcfOptions& opt) {
 
 }  // namespace
 
-// A colour per class name: a small palette indexed by a stable hash of the name.
+// The scene's default colours by class (class_colours.hpp).
 std::array<double, 3> class_colour(const world::Scenario& s, const std::string& cls) {
-  if (const world::ClassColour* c = s.find_colour(cls)) return c->rgb;
-  static const std::array<std::array<double, 3>, 6> palette{{
-      {0.85, 0.15, 0.12},  // red
-      {0.15, 0.35, 0.85},  // blue
-      {0.95, 0.75, 0.10},  // yellow
-      {0.55, 0.20, 0.70},  // purple
-      {0.10, 0.70, 0.65},  // teal
-      {0.25, 0.70, 0.20},  // green (not orange: one degree of hue from the trays' wood)
-  }};
-  if (cls == "block") return palette[0];
-  if (cls == "tray") return {0.55, 0.36, 0.20};  // wood
-  unsigned h = 2166136261u;
-  for (char c : cls) h = (h ^ static_cast<unsigned char>(c)) * 16777619u;
-  return palette[1 + h % 5];
+  return class_colours(s, cls).at(cls);
 }
 
 std::array<double, 3> region_colour(std::size_t i) {

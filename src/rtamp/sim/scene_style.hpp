@@ -1,9 +1,9 @@
 // How the generated MuJoCo model (mjcf_builder.hpp) looks, for anything that
 // draws the same scene (the page of `rtamp serve`): the colour of things of a
-// class — the scenario's `colours:` where it lists the class, else a stable palette
-// by name ("block" red, "tray" wood, others one of five hues, each at least 30° of
-// hue from red, wood and each other) — and of the i-th region's outline (the table
-// top's extent is world/table.hpp).
+// class — the scenario's `colours:` where it lists the class, else its default
+// (class_colours.hpp: a colour its name names, `block` red, `tray` wood, other classes
+// distinct hues in declaration order, never within 12° of hue of another class) — and
+// of the i-th region's outline (the table top's extent is world/table.hpp).
 #pragma once
 
 #include <array>

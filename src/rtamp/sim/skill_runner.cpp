@@ -142,6 +142,13 @@ bool SkillRunner::start_place(const std::string& location) {
   m.object = object;
   m.cost = p.cost;
   m.skill = "place";
+  // The rule book again at the moment of the release: a person may have filled the
+  // location while the arm carried the thing there.
+  if (options_.space_rules)
+    m.release_check = [this, object, body = world::Body{t.size, t.container}, location, riding] {
+      const std::string why = space_refusal(sim_, object, body, location, riding);
+      return why.empty() ? why : "cannot place " + object + ": " + why;
+    };
   controller_.start(std::move(m));
   return controller_.status() == Status::Running;
 }

@@ -83,7 +83,10 @@ class SkillRunner {
   bool start_pick(const std::string& object, const std::optional<SeenThing>& seen = {});
   // Plan and start placing the held object into `location` (region or container). False
   // (controller in FAILURE) if the rule book refuses it there ("cannot place o3: r2 has no
-  // room (capacity 2)", sim::space_refusal), there is no free spot or no plan.
+  // room (capacity 2)", sim::space_refusal), there is no free spot or no plan. The rule
+  // book is asked again when the fingers are to open: refused then (a person filled the
+  // location meanwhile), the thing stays in hand, the arm backs up and the controller
+  // ends FAILURE with the same words.
   bool start_place(const std::string& location);
   // Back the empty gripper straight up by `height` (after a halted skill), unless the
   // tool is already that high above the table. False (controller in FAILURE) if the

@@ -124,6 +124,7 @@ void Belief::follow_gripper(const Gripper& g) {
 void Belief::match(double time, const std::vector<Detection>& seen) {
   used_.assign(seen.size(), 0);
   matched_.assign(things_.size(), 0);
+  whole_.assign(things_.size(), 0);
   // Below the table: a side face taken for a top; no thing's pose.
   for (std::size_t j = 0; j < seen.size(); ++j)
     if (seen[j].base[2] < -kBelowTolerance) used_[j] = 1;
@@ -159,6 +160,7 @@ void Belief::match(double time, const std::vector<Detection>& seen) {
       const auto [i, j] = ij;
       if (matched_[i] || used_[j]) continue;
       matched_[i] = used_[j] = 1;
+      whole_[i] = seen[j].complete;
       BelievedThing& t = things_[i];
       t.state = ThingState::Visible;
       t.last_seen = time;
@@ -267,11 +269,12 @@ void Belief::judge_unseen(double time, const Visibility& visibility) {
       removed_.push_back({t, time});
       continue;
     }
-    if (k != i) things_[k] = std::move(things_[i]), matched_[k] = matched_[i];
+    if (k != i) things_[k] = std::move(things_[i]), matched_[k] = matched_[i], whole_[k] = whole_[i];
     ++k;
   }
   things_.resize(k);
   matched_.resize(k);
+  whole_.resize(k);
   std::erase_if(removed_, [&](const Removed& r) { return time - r.time > options_.reidentify_within + kTimeTolerance; });
 }
 
@@ -280,11 +283,16 @@ void Belief::promote(double time, const std::vector<Detection>& seen) {
   for (std::size_t j = 0; j < seen.size(); ++j) {
     if (used_[j]) continue;
     const Detection& d = seen[j];
-    // A second view of a thing already explained (a blob the arm cut in two) is no candidate.
+    // A second view of a thing already explained (a blob the arm cut in two) is no
+    // candidate — but a complete view beside a thing this frame saw whole is another thing
+    // (a look-alike pushed against it), whatever the distance.
     bool known = false;
-    for (const auto& t : things_)
+    for (std::size_t i = 0; i < things_.size(); ++i) {
+      const BelievedThing& t = things_[i];
+      if (d.complete && i < whole_.size() && whole_[i]) continue;
       known = known || (t.cls == d.cls && distance(t.base, d.base) <= (d.complete ? options_.match_radius
                                                                                   : reach(t, options_.match_radius)));
+    }
     if (known) continue;
     Candidate* nearest = nullptr;
     for (auto& c : candidates_)
@@ -314,8 +322,10 @@ void Belief::promote(double time, const std::vector<Detection>& seen) {
         continue;
       }
       candidates_.erase(candidates_.begin() + static_cast<std::ptrdiff_t>(k));
-      bool known = false;  // explained meanwhile (carried with its container)
-      for (const auto& t : things_) known = known || (t.cls == c.seen.cls && distance(t.base, c.seen.base) <= options_.match_radius);
+      bool known = false;  // explained meanwhile (carried with its container), by a thing not seen whole beside it
+      for (std::size_t i = 0; i < things_.size(); ++i)
+        known = known || (!(c.seen.complete && i < whole_.size() && whole_[i]) && things_[i].cls == c.seen.cls &&
+                          distance(things_[i].base, c.seen.base) <= options_.match_radius);
       if (known) continue;
       // A Missing thing of the class moved here (the nearest); or one removed a moment ago;
       // or, once no hidden thing of the class may be it, a new thing.

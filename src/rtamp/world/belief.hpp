@@ -12,7 +12,10 @@
 //    says the thing is there.
 //  - A thing is believed removed only after it has been Missing for remove_after seconds,
 //    on a frame that judges it Missing (never on one that does not see its spot).
-//  - A detection no thing explains is a candidate (at its last complete pose, if any); after
+//  - A detection no thing explains is a candidate (at its last complete pose, if any): a
+//    thing within match_radius explains it (its reach for an incomplete one: a second
+//    view of it), unless both are whole — a complete detection beside a thing that frame
+//    saw complete elsewhere is another thing (a look-alike pushed against it). After
 //    confirm_sightings sightings
 //    (each within candidate_timeout of the last) it is a Missing thing of its class that
 //    moved there (the nearest one), or else the one of its class believed removed last
@@ -167,6 +170,7 @@ class Belief {
   // Per frame scratch, kept to spare allocations.
   std::vector<char> used_;
   std::vector<char> matched_;
+  std::vector<char> whole_;  // this frame matched the thing to a complete detection
   std::vector<std::pair<double, std::pair<std::size_t, std::size_t>>> pairs_;
   std::vector<Vec3> before_;  // containers' bases at the frame's start
 };

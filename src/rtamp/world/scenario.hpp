@@ -56,8 +56,8 @@ struct Object {
 };
 
 // `colours:` — the colour things of a class are drawn in, and, with camera perception,
-// recognised by (sim/colour_segmentation.hpp). Classes not listed take a stable palette
-// colour by name (sim/scene_style.hpp).
+// recognised by (sim/colour_segmentation.hpp). Classes not listed take a default: the
+// colour their name names, else a hue of their own (sim/class_colours.hpp).
 struct ClassColour {
   std::string cls;
   Vec3 rgb{0, 0, 0};     // each channel in [0, 1]
