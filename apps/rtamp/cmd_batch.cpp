@@ -2,14 +2,18 @@
 // table of the paper's Table I (batch/summary.hpp); `--shard K/N` runs one
 // slice of the trial list, `--merge CSV...` joins slices (batch/merge.hpp).
 // Options and output: docs/cli.md and docs/experiments.md.
+#include <sys/stat.h>
 #include <unistd.h>
+
+#include <atomic>
+#include <csignal>
+#include <sstream>
 
 #include <algorithm>
 #include <chrono>
 #include <condition_variable>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
 #include <iostream>
 #include <mutex>
 #include <thread>
@@ -27,13 +31,21 @@
 #include "rtamp/exec/plan_tree.hpp"
 #include "rtamp/exec/reactive_loop.hpp"
 #include "rtamp/task/validate.hpp"
+#include "rtamp/batch/resume.hpp"
 #include "rtamp/util/error.hpp"
+#include "rtamp/util/file_set.hpp"
+#include "rtamp/util/output_file.hpp"
+#include "rtamp/util/text_file.hpp"
 #include "rtamp/world/scenario_io.hpp"
 
 namespace {
 
 using namespace rtamp;
 using Clock = std::chrono::steady_clock;
+
+std::atomic<int> g_signal{0};
+static_assert(std::atomic<int>::is_always_lock_free);
+extern "C" void on_batch_signal(int sig) { g_signal.store(sig); }
 
 struct BatchArgs {
   std::string scenario, world = "mujoco", perception = "truth";
@@ -59,6 +71,7 @@ struct BatchArgs {
   bool scripted = false;
   bool no_randomize = false;
   bool quiet = false;
+  bool resume = false;
   std::vector<world::TaskChange> new_tasks;
   CLI::Option* change_opt = nullptr;
   CLI::Option* algo_opt = nullptr;
@@ -87,14 +100,34 @@ void print_summary(const BatchArgs& a, const std::vector<batch::EpisodeRecord>& 
   std::cout.flush();
 }
 
-// Replaces `path` atomically with the records in canonical order.
+// Replaces the regular file `path` atomically with the records in canonical
+// order (a FIFO or a device is written directly: it is never replaced).
 void write_sorted(const std::string& path, std::vector<batch::EpisodeRecord> records) {
   batch::sort_canonical(records);
+  struct stat st{};
+  if (::stat(path.c_str(), &st) == 0 && !S_ISREG(st.st_mode)) {
+    batch::write_csv_file(path, records);
+    return;
+  }
   const std::string tmp = path + ".tmp";
   batch::write_csv_file(tmp, records);
   std::error_code ec;
   std::filesystem::rename(tmp, path, ec);
-  if (ec) throw Error("cannot replace '" + path + "': " + ec.message());
+  if (ec) throw OutputError("--output: cannot replace '" + path + "': " + ec.message());
+}
+
+// The log directory, made (or checked) before anything else is written: a
+// file written and removed in it proves it takes files.
+void prepare_log_dir(const std::string& dir) {
+  std::error_code ec;
+  std::filesystem::create_directories(dir, ec);
+  if (ec) throw OutputError("--log-dir: cannot write into '" + dir + "': " + ec.message());
+  std::string probe = (std::filesystem::path(dir) / ".rtamp-probe-XXXXXX").string();
+  const int fd = ::mkstemp(probe.data());
+  if (fd < 0)
+    throw OutputError("--log-dir: cannot write into '" + dir + "': " + std::error_code(errno, std::generic_category()).message());
+  ::close(fd);
+  ::unlink(probe.c_str());
 }
 
 template <typename E>
@@ -107,6 +140,11 @@ std::vector<E> parse_all(const std::vector<std::string>& names, E (*parse)(std::
 int run_merge(const BatchArgs& a) {
   if (!a.scenario.empty())
     throw Error("give either a scenario to run or --merge CSV files, not both (scenario '" + a.scenario + "')");
+  if (!a.output.empty()) {  // the output is none of the files merged (by device and inode)
+    FileSet files;
+    for (const std::string& m : a.merge) files.input("--merge", m);
+    files.output("--output", a.output);
+  }
   auto records = batch::merge_files(a.merge);
   // Explicit --algo / --bt / --change select rows.
   auto keep = [&](const batch::EpisodeRecord& r) {
@@ -133,9 +171,15 @@ int run_batch(const BatchArgs& a) {
   if (a.scenario.empty()) throw Error("rtamp batch needs a scenario (or --merge CSV files)");
   const world::Scenario scenario = world::load_scenario(a.scenario);
   task::validate_task(scenario);  // a bad task is refused once, not run as failed trials
-  if (!a.output.empty()) rtamp::cli::check_output_file("--output", a.output);
+  if (!a.output.empty()) {
+    FileSet files;
+    if (path_exists(a.scenario)) files.input("SCENARIO", a.scenario);
+    files.output("--output", a.output);
+    rtamp::cli::check_output_file("--output", a.output);
+  }
   if (!a.log_dir.empty()) rtamp::cli::check_output_dir("--log-dir", a.log_dir);
   if (a.mcap && a.log_dir.empty()) throw Error("--mcap: writes one MCAP file per episode into --log-dir; give --log-dir");
+  if (a.resume && a.output.empty()) throw Error("--resume: resumes the --output CSV of an interrupted batch; give -o");
   batch::Grid grid;
   grid.algorithms = parse_all(a.algos, plan::parse_algorithm);
   grid.changes = parse_all(a.changes, batch::parse_change_kind);
@@ -167,14 +211,52 @@ int run_batch(const BatchArgs& a) {
   }
 
   // Rows are appended as episodes finish (so a killed batch keeps what it
-  // did), then the file is rewritten in canonical order at the end.
-  std::ofstream csv;
+  // did, and --resume goes on from there), then the file is rewritten in
+  // canonical order at the end. The CSV is locked while the batch writes it.
+  // A FIFO or a device gets the sorted rows once, at the end.
+  OutputFile csv;
+  bool appending = false;
+  std::vector<batch::EpisodeRecord> kept;  // rows of an earlier run (--resume)
+  std::size_t keep_bytes = 0;              // of the file: its whole rows (--resume), else nothing
+  bool has_header = false;
   if (!a.output.empty()) {
-    csv.open(a.output, std::ios::binary | std::ios::trunc);
-    if (!csv) throw Error("--output: cannot write '" + a.output + "'");
-    batch::write_header(csv);
-    csv.flush();
+    // Locked, and read while it is locked, before anything is changed or runs.
+    csv = OutputFile(a.output, "--output", OutputFile::Lock::Exclusive, OutputFile::Open::Keep);
+    appending = csv.regular();
+    if (a.resume) {
+      if (!csv.regular()) throw Error("--resume: '" + a.output + "' is not a regular file (nothing to resume from)");
+      const batch::Resumed r =
+          batch::resume(read_text_file(a.output, "the CSV file", batch::kMaxCsvBytes), a.output, scenario.name, trials);
+      kept = r.kept;
+      trials = r.missing;
+      keep_bytes = r.whole_bytes;  // a torn last line dropped
+      has_header = r.has_header;
+    }
   }
+  const std::size_t planned = kept.size() + trials.size();
+  // The log directory before the CSV changes: one that takes no file leaves the CSV as it was.
+  if (!a.log_dir.empty()) {
+    try {
+      prepare_log_dir(a.log_dir);
+    } catch (...) {
+      if (csv.created()) csv.discard();  // no CSV left behind by a refused batch
+      throw;
+    }
+  }
+  if (appending) {
+    csv.resize(keep_bytes);
+    if (!has_header) {
+      std::ostringstream header;
+      batch::write_header(header);
+      csv.write(header.str());
+    }
+  }
+  if (a.resume && !a.quiet)
+    std::cerr << "rtamp batch: resuming " << a.output << ": " << kept.size() << " episode(s) kept, " << trials.size()
+              << " to run\n";
+  opt.episode.loop.interrupt = &g_signal;
+  std::signal(SIGINT, on_batch_signal);
+  std::signal(SIGTERM, on_batch_signal);
 
   const bool tty = !a.quiet && ::isatty(STDERR_FILENO);
   std::cerr << "rtamp batch: " << scenario.name << ", " << trials.size() << " episode(s)";
@@ -203,12 +285,14 @@ int run_batch(const BatchArgs& a) {
     });
   }
 
-  std::vector<batch::EpisodeRecord> records;
+  std::vector<batch::EpisodeRecord> records = kept;
   try {
-    records = batch::run_batch(scenario, trials, opt, [&](const batch::Trial& t, const batch::EpisodeRecord& r) {
-      if (csv.is_open()) {
-        batch::write_record(csv, r);
-        csv.flush();
+    (void)batch::run_batch(scenario, trials, opt, [&](const batch::Trial& t, const batch::EpisodeRecord& r) {
+      records.push_back(r);
+      if (appending) {
+        std::ostringstream row;
+        batch::write_record(row, r);
+        csv.write(row.str());
       }
       std::lock_guard lock(mutex);
       ++progress.done;
@@ -238,8 +322,13 @@ int run_batch(const BatchArgs& a) {
     }
     cv.notify_all();
     if (ticker.joinable()) ticker.join();
+    std::signal(SIGINT, SIG_DFL);
+    std::signal(SIGTERM, SIG_DFL);
     throw;
   }
+  std::signal(SIGINT, SIG_DFL);
+  std::signal(SIGTERM, SIG_DFL);
+  const int sig = g_signal.load();
   {
     std::lock_guard lock(mutex);
     finished = true;
@@ -252,15 +341,28 @@ int run_batch(const BatchArgs& a) {
   if (ticker.joinable()) ticker.join();
 
   if (csv.is_open()) {
-    csv.close();
-    write_sorted(a.output, records);
+    if (appending) {
+      csv.close();  // checked: every row is there
+      write_sorted(a.output, records);
+    } else {
+      batch::sort_canonical(records);
+      std::ostringstream text;
+      batch::write_csv(text, records);
+      csv.write(text.str());
+      csv.close();
+    }
   }
   std::cerr << "rtamp batch: " << records.size() << " episode(s) in " << batch::format_duration(elapsed())
             << ", " << progress.failures << " failed";
+  if (sig != 0)
+    std::cerr << "; interrupted by " << (sig == SIGTERM ? "SIGTERM" : "SIGINT") << " (" << records.size() << " of "
+              << planned << " ran; --resume runs the rest)";
   if (!a.output.empty()) std::cerr << "; wrote " << a.output;
   std::cerr << "\n";
   print_summary(a, records);
-  return progress.failures == 0 ? 0 : 1;
+  if (sig != 0) return sig == SIGTERM ? 143 : 130;
+  const bool failures = std::any_of(records.begin(), records.end(), [](const auto& r) { return !r.success; });
+  return failures ? 1 : 0;
 }
 
 rtamp::cli::Registrar reg{
@@ -312,6 +414,8 @@ rtamp::cli::Registrar reg{
       sub.add_flag("--scripted", a->scripted, "Also apply the scenario's own operator script in every episode");
       sub.add_flag("--no-randomize", a->no_randomize, "Keep the scenario's initial object positions");
       sub.add_flag("--quiet,-q", a->quiet, "No progress on standard error");
+      sub.add_flag("--resume", a->resume,
+                   "Keep the whole rows of the --output CSV an interrupted batch left and run only the missing trials");
       return [a]() -> int {
         batch::parse_grouping(a->group_by);  // reject a bad --group-by before running anything
         if (!a->merge.empty()) return run_merge(*a);

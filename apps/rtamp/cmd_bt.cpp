@@ -10,6 +10,8 @@
 #include <memory>
 
 #include "command.hpp"
+#include "rtamp/util/file_set.hpp"
+#include "rtamp/util/output_file.hpp"
 #include "rtamp/bt/text_render.hpp"
 #include "rtamp/bt/tree.hpp"
 #include "rtamp/bt/xml_import.hpp"
@@ -25,6 +27,11 @@ struct BtCheckArgs {
 };
 
 int run_check(const BtCheckArgs& a) {
+  if (!a.xsd.empty()) {  // the schema is not the file checked (by device and inode)
+    rtamp::FileSet files;
+    files.input("FILE", a.file);
+    files.output("--xsd", a.xsd);
+  }
   const std::string xml = rtamp::read_text_file(a.file, "the behavior-tree file");
   const rtamp::bt::XmlDocument doc = rtamp::bt::parse_xml(xml, a.file);
   rtamp::bt::NodeRegistry stand_ins;
@@ -40,9 +47,7 @@ int run_check(const BtCheckArgs& a) {
   tree.set_root(rtamp::bt::from_btcpp_xml(xml, stand_ins, {a.file, a.tree_id}));
   std::cout << rtamp::bt::to_text(tree);
   if (!a.xsd.empty()) {
-    std::ofstream out(a.xsd, std::ios::binary);
-    out << rtamp::bt::btcpp_xsd(rtamp::bt::read_tree_nodes_model(doc, a.file));
-    if (!out) throw rtamp::Error("cannot write the schema file", rtamp::SourceLocation{a.xsd});
+    rtamp::write_output_file(a.xsd, "--xsd", rtamp::bt::btcpp_xsd(rtamp::bt::read_tree_nodes_model(doc, a.file)));
   }
   return 0;
 }

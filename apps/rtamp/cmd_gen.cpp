@@ -4,6 +4,7 @@
 #include <iostream>
 
 #include "command.hpp"
+#include "rtamp/util/output_file.hpp"
 #include "options.hpp"
 #include "rtamp/task/validate.hpp"
 #include "rtamp/util/error.hpp"
@@ -67,10 +68,7 @@ rtamp::cli::Registrar reg{
           std::cout.flush();
           if (!std::cout) throw rtamp::Error("cannot write to standard output");
         } else {
-          std::ofstream out(args->output, std::ios::binary);
-          out << yaml;
-          out.close();
-          if (!out) throw rtamp::Error("--output: cannot write '" + args->output + "'");
+          rtamp::write_output_file(args->output, "--output", yaml);
         }
         return 0;
       };

@@ -1,8 +1,10 @@
 // rtamp log to-mcap — convert an episode's JSON Lines log (from `rtamp run|serve
 // --log`, `rtamp batch --log-dir`) to MCAP for Foxglove and other MCAP viewers
 // (episode/episode_mcap.hpp). The scene's regions come from --scenario, else
-// from the built-in scenario the log's `episode` record names. A malformed
-// record: "LOG:LINE: what", exit 2, and no output file.
+// from the built-in scenario the log's `episode` record names. The log is
+// checked whole first, with the check of `serve --replay` (episode/log_check.hpp):
+// a log that breaks it is "LOG:LINE: what", exit 2, and OUT is not touched.
+// OUT is written as every output is (util/output_file.hpp); one that is LOG is refused.
 #include <iostream>
 #include <memory>
 #include <optional>
@@ -10,6 +12,8 @@
 #include "command.hpp"
 #include "options.hpp"
 #include "rtamp/episode/episode_mcap.hpp"
+#include "rtamp/util/file_set.hpp"
+#include "rtamp/util/text_file.hpp"
 #include "rtamp/world/scenario_io.hpp"
 
 namespace {
@@ -21,6 +25,12 @@ struct ToMcapArgs {
 };
 
 int run_to_mcap(const ToMcapArgs& a) {
+  {  // OUT may not be LOG (nor the scenario): checked by device and inode before anything is read
+    rtamp::FileSet files;
+    files.input("LOG", a.log);
+    if (!a.scenario.empty() && rtamp::path_exists(a.scenario)) files.input("--scenario", a.scenario);
+    files.output("OUT", a.out);
+  }
   rtamp::cli::check_output_file("OUT", a.out);
   std::optional<rtamp::world::Scenario> scenario;
   if (!a.scenario.empty()) scenario = rtamp::world::load_scenario(a.scenario);

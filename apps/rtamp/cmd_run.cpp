@@ -12,7 +12,9 @@
 #include "rtamp/episode/episode.hpp"
 #include "rtamp/exec/episode_log.hpp"
 #include "rtamp/task/validate.hpp"
+#include "rtamp/util/file_set.hpp"
 #include "rtamp/util/format.hpp"
+#include "rtamp/util/text_file.hpp"
 #include "rtamp/world/scenario_io.hpp"
 
 namespace {
@@ -50,6 +52,13 @@ rtamp::cli::Registrar reg{
         // Outputs, before ffmpeg or the episode starts, named by their option.
         if (!o->video.empty()) rtamp::cli::check_output_file("--video", o->video);
         episode::EpisodeOptions opt = rtamp::cli::episode_options(*o);
+        {  // no output is an input or another output (by device and inode), each writable
+          FileSet files;
+          if (path_exists(o->scenario)) files.input("SCENARIO", o->scenario);
+          if (!opt.outputs.log.empty()) files.output("--log", opt.outputs.log);
+          if (!opt.outputs.mcap.empty()) files.output("--mcap", opt.outputs.mcap);
+          if (!o->video.empty()) files.output("--video", o->video);
+        }
         if (!opt.outputs.log.empty()) rtamp::cli::check_output_file("--log", opt.outputs.log);
         if (!opt.outputs.mcap.empty()) rtamp::cli::check_output_file("--mcap", opt.outputs.mcap);
         if (!opt.outputs.trees.empty()) rtamp::cli::check_output_dir("--trees", opt.outputs.trees);

@@ -19,7 +19,9 @@
 #include "rtamp/serve/server.hpp"
 #include "rtamp/task/validate.hpp"
 #include "rtamp/util/error.hpp"
+#include "rtamp/util/file_set.hpp"
 #include "rtamp/util/format.hpp"
+#include "rtamp/util/text_file.hpp"
 #include "rtamp/world/scenario_io.hpp"
 
 namespace {
@@ -38,7 +40,11 @@ std::string default_web_root() {
 
 void check_input_file(const std::string& option, const std::string& path) {
   std::error_code ec;
-  if (!std::filesystem::is_regular_file(path, ec)) throw rtamp::Error(option + ": cannot read '" + path + "': no such file");
+  if (std::filesystem::is_regular_file(path, ec)) return;
+  const bool exists = std::filesystem::exists(path, ec);
+  throw rtamp::Error(option + ": cannot read '" + path + "': " +
+                     (!exists ? "no such file" : std::filesystem::is_directory(path, ec) ? "it is a directory"
+                                                                                         : "it is not a regular file"));
 }
 
 rtamp::cli::Registrar reg{
@@ -87,6 +93,13 @@ rtamp::cli::Registrar reg{
         const world::Scenario scenario = world::load_scenario(o->scenario);
         task::validate_task(scenario);
         const episode::EpisodeOptions episode_options = rtamp::cli::episode_options(*o);
+        {  // no output is an input or another output (by device and inode)
+          FileSet files;
+          if (path_exists(o->scenario)) files.input("SCENARIO", o->scenario);
+          if (!o->replay.empty()) files.input("--replay", o->replay);
+          if (!episode_options.outputs.log.empty()) files.output("--log", episode_options.outputs.log);
+          if (!episode_options.outputs.mcap.empty()) files.output("--mcap", episode_options.outputs.mcap);
+        }
         if (!episode_options.outputs.log.empty()) rtamp::cli::check_output_file("--log", episode_options.outputs.log);
         if (!episode_options.outputs.mcap.empty()) rtamp::cli::check_output_file("--mcap", episode_options.outputs.mcap);
         if (!episode_options.outputs.trees.empty())
@@ -148,7 +161,15 @@ rtamp::cli::Registrar reg{
           live->start();
           while (!live->ended() && g_signal.load() == 0) std::this_thread::sleep_for(std::chrono::milliseconds(20));
           if (g_signal.load() != 0) live->stop();
-          const exec::EpisodeMetrics m = live->wait();
+          exec::EpisodeMetrics m;
+          try {
+            m = live->wait();
+          } catch (...) {  // a lost --log or --mcap: the server stops before the episode goes, then exit 2
+            server.stop();
+            std::signal(SIGINT, SIG_DFL);
+            std::signal(SIGTERM, SIG_DFL);
+            throw;
+          }
           if (!o->quiet) {
             const std::string completion = m.completion_time ? format_number(*m.completion_time) + " s" : "none";
             std::printf("\n%s: %s\n  completion %s (world time), %d replans, %d interventions (%d applied, %d refused)\n",

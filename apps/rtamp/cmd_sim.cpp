@@ -16,6 +16,9 @@
 #include <nlohmann/json.hpp>
 
 #include "command.hpp"
+#include "rtamp/util/file_set.hpp"
+#include "rtamp/util/output_file.hpp"
+#include "rtamp/util/text_file.hpp"
 #include "episode_args.hpp"
 #include "options.hpp"
 #include "rtamp/episode/world_registry.hpp"
@@ -47,12 +50,7 @@ struct SimArgs {
   int width = 640, height = 480;
 };
 
-void write_file(const std::string& path, const std::string& text) {
-  std::ofstream out(path, std::ios::binary);
-  out << text;
-  out.close();
-  if (!out) throw rtamp::Error("cannot write '" + path + "'");
-}
+void write_file(const std::string& path, const std::string& text) { rtamp::write_output_file(path, "--mjcf", text); }
 
 rtamp::cli::Registrar reg{
     "sim", "Run actions in the MuJoCo simulation of a scenario (headless), or write its MJCF",
@@ -98,6 +96,14 @@ rtamp::cli::Registrar reg{
             scenario, episode::WorldSettings{.perception = a->perception, .perception_cameras = a->perception_cameras});
         if (perceiving.empty()) perceiving.push_back(camera_name);
         // Outputs first: a bad path is refused before the simulation starts.
+        {  // no output is the scenario or another output (by device and inode)
+          rtamp::FileSet files;
+          if (rtamp::path_exists(a->scenario)) files.input("SCENARIO", a->scenario);
+          for (const auto& [option, path] : {std::pair<const char*, const std::string*>{"--depth", &a->depth},
+                                             {"--segmentation", &a->segmentation}, {"--video", &a->video},
+                                             {"--snapshot", &a->snapshot}, {"--mjcf", &a->mjcf}})
+            if (!path->empty()) files.output(option, *path);
+        }
         if (!a->depth.empty()) rtamp::cli::check_output_file("--depth", a->depth);
         if (!a->segmentation.empty()) rtamp::cli::check_output_file("--segmentation", a->segmentation);
         if (!a->video.empty()) rtamp::cli::check_output_file("--video", a->video);

@@ -88,6 +88,8 @@ int main(int argc, char** argv) {
   // A reader that goes away (a pipe to `head`, an ffmpeg that failed) is a write
   // error the code reports, never a signal.
   std::signal(SIGPIPE, SIG_IGN);
+  // A file-size limit (ulimit -f) is a write error that names the file (util/output_file.hpp), not a signal.
+  std::signal(SIGXFSZ, SIG_IGN);
   // Mesa's llvmpipe (the CPU renderer of the cameras and pictures here) renders on the
   // calling thread unless the user's LP_NUM_THREADS says otherwise: a camera episode
   // costs less so, alone or in a batch (docs/benchmarks.md "Camera frames at 10x").

@@ -1,5 +1,7 @@
 #include "options.hpp"
 
+#include "rtamp/util/output_file.hpp"
+
 #include <unistd.h>
 
 #include <algorithm>
@@ -238,25 +240,7 @@ CLI::Option* add_scenario(CLI::App& app, std::string& target) {
       ->type_name("SCENARIO");
 }
 
-void check_output_file(const std::string& option, const std::string& path) {
-  namespace fs = std::filesystem;
-  auto fail = [&](const std::string& why) {
-    throw Error(option + ": cannot write " + shown(path) + ": " + why);
-  };
-  if (path.empty()) fail("empty path");
-  std::error_code ec;
-  const fs::path p(path);
-  const auto st = fs::status(p, ec);
-  if (fs::is_directory(st)) fail("it is a directory");
-  fs::path dir = p.parent_path();
-  if (dir.empty()) dir = ".";
-  if (!fs::is_directory(dir, ec)) fail("no directory " + shown(dir.string()));
-  if (fs::exists(st)) {
-    if (::access(path.c_str(), W_OK) != 0) fail(std::error_code(errno, std::generic_category()).message());
-  } else if (::access(dir.c_str(), W_OK | X_OK) != 0) {
-    fail(std::error_code(errno, std::generic_category()).message());
-  }
-}
+void check_output_file(const std::string& option, const std::string& path) { rtamp::check_output(path, option); }
 
 void check_output_dir(const std::string& option, const std::string& dir) {
   namespace fs = std::filesystem;

@@ -96,9 +96,10 @@ world::TaskChange parse_new_task(std::string_view text, int occurrence = 1);
 // Repeatable --new-task TIME@LTL into `target`.
 CLI::Option* add_new_task(CLI::App& app, std::vector<world::TaskChange>& target);
 
-// Output files: throws rtamp::Error "OPTION: cannot write 'PATH': WHY" unless
-// `path` can be created or replaced (its directory exists and is writable, and
-// it is not a directory). Nothing is created.
+// Output files: throws rtamp::OutputError "OPTION: cannot write 'PATH': WHY"
+// unless `path` can be written as util/output_file.hpp writes it (a new file in
+// a writable directory, a writable regular file no other process is writing,
+// a FIFO or a character device). Nothing is created or changed.
 void check_output_file(const std::string& option, const std::string& path);
 
 // Output directories: throws rtamp::Error "OPTION: cannot write into 'DIR': WHY"

@@ -165,7 +165,11 @@ void bind_episode(py::module_& m) {
           "or (time, formula, {name: expression}) (as `rtamp run --new-task TIME@LTL`)")
       .def_property(
           "log", [](const EpisodeOptions& o) { return o.outputs.log; },
-          [](EpisodeOptions& o, std::string v) { o.outputs.log = std::move(v); }, "JSON Lines log file ('': none)")
+          [](EpisodeOptions& o, std::string v) {
+            o.outputs.log = std::move(v);
+            o.outputs.log_option = "log";  // errors name the keyword (log: cannot write 'x': ...)
+          },
+          "JSON Lines log file ('': none)")
       .def_property(
           "trees", [](const EpisodeOptions& o) { return o.outputs.trees; },
           [](EpisodeOptions& o, std::string v) { o.outputs.trees = std::move(v); },

@@ -104,3 +104,39 @@ def test_dask_batch_equals_one_process_run(dask_cluster, tmp_path):
                "--change", "add", "--bt", "online-action", "--output", str(ref), "--quiet"]
         subprocess.run(cmd, check=False, stdout=subprocess.DEVNULL, timeout=300)
         assert columns(ref.read_text(), DETERMINISTIC) == columns(merged, DETERMINISTIC)
+
+
+def interrupted(path, whole, rows_kept):
+    """The CSV a batch killed after `rows_kept` rows leaves: those rows and a torn line."""
+    lines = whole.splitlines(keepends=True)
+    path.write_text("".join(lines[:1 + rows_kept]) + lines[1 + rows_kept][:25], encoding="utf-8")
+    return lines[1:1 + rows_kept]
+
+
+def test_resume_keeps_whole_rows_and_runs_the_missing_trials(tmp_path):
+    out = tmp_path / "r.csv"
+    whole = rtamp.batch.run("3-block-tray", output=str(out), **GRID)
+    assert out.read_text() == whole
+    kept = interrupted(out, whole, 5)
+    resumed = rtamp.batch.run("3-block-tray", output=str(out), resume=True, **GRID)
+    assert out.read_text() == resumed
+    assert columns(resumed, DETERMINISTIC) == columns(whole, DETERMINISTIC)
+    assert set(kept) <= set(resumed.splitlines(keepends=True))  # kept as they were, wall times too
+    # A CSV of another batch: refused at its line, the file as it was.
+    before = out.read_bytes()
+    with pytest.raises(rtamp.Error, match=r"r\.csv:2: resume: the row .* \(another seed\)"):
+        rtamp.batch.run("3-block-tray", output=str(out), resume=True, **{**GRID, "seed": 8})
+    with pytest.raises(rtamp.Error, match=r"r\.csv:\d+: resume: the row .* is not a trial of this batch"):
+        rtamp.batch.run("3-block-tray", output=str(out), resume=True, **{**GRID, "changes": ["relocate"]})
+    assert out.read_bytes() == before
+    with pytest.raises(rtamp.Error, match="give output"):
+        rtamp.batch.run("3-block-tray", resume=True, **GRID)
+
+
+def test_dask_batch_resumes(dask_cluster, tmp_path):
+    out = tmp_path / "d.csv"
+    whole = rtamp.batch.run("3-block-tray", **GRID)
+    interrupted(out, whole, 4)
+    resumed = rtamp.batch.run("3-block-tray", client=dask_cluster, chunk=2, output=str(out), resume=True, **GRID)
+    assert out.read_text() == resumed
+    assert columns(resumed, DETERMINISTIC) == columns(whole, DETERMINISTIC)

@@ -2,12 +2,16 @@
 // "How it is checked"): scenario files (malformed, hostile and wrong YAML;
 // operator scripts), the LTL task and its quoted atoms through plan, run,
 // batch and sim, `plan --change`, `sim --do`, `gen --task` / `--prop`, and
-// hostile LTL for ltl2ba. For every case the binary must exit with status 2
-// (not a signal, not a crash), say `rtamp: error: WHERE: WHAT` on stderr with
-// the expected location (file:line:col, or option #occurrence:1:col) as its
-// first line (further lines only the input and its caret), print nothing on
-// stdout, and create none of the output files it was given (so nothing was
-// written and no episode started: an episode's log would exist).
+// hostile LTL for ltl2ba, outputs (one that is an input or another output, a
+// locked file, a FIFO without a reader, an unwritable --log-dir, --resume of
+// another batch) and logs `log to-mcap` must refuse. For every case the
+// binary must exit with status 2 (not a signal, not a crash), say `rtamp:
+// error: WHERE: WHAT` on stderr with the expected location (file:line:col, or
+// option #occurrence:1:col) as its first line (further lines only the input
+// and its caret), print nothing on stdout, create none of the output files it
+// was given (so nothing was written and no episode started: an episode's log
+// would exist), and change no existing file it names (kind and contents
+// hashed before and after).
 //
 // The binary runs through fork/exec with an argument vector (no shell), so
 // arguments carry control bytes and quotes as they are; a child that runs
@@ -15,6 +19,8 @@
 #include <fcntl.h>
 #include <gtest/gtest.h>
 #include <signal.h>
+#include <sys/file.h>
+#include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -77,7 +83,16 @@ struct Case {
   std::string where;  // in the first line of stderr, e.g. "c3.yaml:13:12:" or "--change #2:1:14:"
   std::string what;   // in the first line too (optional)
   std::vector<std::string> not_created;  // names in the scratch directory that must not exist afterwards
+  std::vector<std::string> unchanged;    // paths whose kind and contents must be the same afterwards
 };
+
+// What a path is, for "no existing file changed": its type and its contents' hash.
+std::string fingerprint(const std::string& path) {
+  struct stat st{};
+  if (::lstat(path.c_str(), &st) != 0) return "absent";
+  if (!S_ISREG(st.st_mode)) return "mode " + std::to_string(st.st_mode) + " rdev " + std::to_string(st.st_rdev);
+  return "file " + std::to_string(std::hash<std::string>{}(slurp(path))) + " size " + std::to_string(st.st_size);
+}
 
 // ---------------------------------------------------------------- inputs
 
@@ -775,8 +790,177 @@ void bt_cases(std::vector<Case>& t) {
       "<?xml", "names encoding \"UTF-16\"");
 }
 
+// A log rtamp wrote (the 3-block scenario, symbolic), line by line, to break.
+std::vector<std::string> good_log() {
+  static const std::vector<std::string> lines = [] {
+    const fs::path p = scratch() / "good.jsonl";
+    const std::string cmd = std::string("'") + RTAMP_BIN + "' run 3-block --world symbolic --quiet --log '" +
+                            p.string() + "' >/dev/null 2>&1";
+    EXPECT_EQ(std::system(cmd.c_str()), 0);
+    std::vector<std::string> out;
+    std::ifstream in(p);
+    for (std::string l; std::getline(in, l);) out.push_back(l);
+    EXPECT_GE(out.size(), 5u);
+    return out;
+  }();
+  return lines;
+}
+
+std::string joined(const std::vector<std::string>& lines) {
+  std::string s;
+  for (const std::string& l : lines) s += l + "\n";
+  return s;
+}
+
+// Outputs that are inputs or other outputs, held by another writer, a FIFO
+// without a reader, and logs `log to-mcap` must refuse (the check of serve --replay).
+void output_cases(std::vector<Case>& t) {
+  const fs::path dir = scratch();
+  const std::vector<std::string> log = good_log();
+  const std::string ep = file(joined(log), ".jsonl");
+  const std::string mcap_name = "out.mcap";
+  // The same file twice, by name, by a hard link, by another spelling.
+  t.push_back({"outputs", {"log", "to-mcap", ep, ep}, "OUT: cannot write", "it is also the input LOG", {}, {ep}});
+  const std::string link = (dir / "hard.jsonl").string();
+  fs::remove(link);
+  fs::create_hard_link(ep, link);
+  t.push_back({"outputs", {"log", "to-mcap", ep, link}, "OUT: cannot write", "it is also the input LOG", {}, {ep}});
+  t.push_back({"outputs", {"log", "to-mcap", ep, (dir / "." / name_of(ep)).string()}, "OUT: cannot write",
+               "it is also the input LOG", {}, {ep}});
+  // The arguments swapped: an MCAP file is no log, and the log given as OUT is kept.
+  const std::string an_mcap = file("\x89MCAP0\r\n not a log", ".mcap");
+  t.push_back({"outputs", {"log", "to-mcap", an_mcap, ep}, name_of(an_mcap) + ":1:", "not a JSON object", {},
+               {ep, an_mcap}});
+  const std::vector<std::string> run = {"run", "3-block", "--world", "symbolic", "--quiet"};
+  auto with = [&](std::vector<std::string> args, const std::vector<std::string>& more) {
+    args.insert(args.end(), more.begin(), more.end());
+    return args;
+  };
+  t.push_back({"outputs", with(run, {"--log", "same.x", "--mcap", "same.x"}), "--mcap: cannot write",
+               "it is also the output --log", {"same.x"}});
+  t.push_back({"outputs", with(run, {"--log", ep, "--mcap", link}), "--mcap: cannot write",
+               "it is also the output --log", {}, {ep}});
+  {
+    const std::string yaml = file(scenario());
+    t.push_back({"outputs", {"run", yaml, "--world", "symbolic", "--log", yaml}, "--log: cannot write",
+                 "it is also the input SCENARIO", {}, {yaml}});
+    t.push_back({"outputs", {"batch", yaml, "--world", "symbolic", "-o", yaml}, "--output: cannot write",
+                 "it is also the input SCENARIO", {}, {yaml}});
+  }
+  // A log another process is writing (this test holds its lock).
+  {
+    static int held = -1;
+    const std::string locked = file("{\"another\":\"writer\"}\n", ".jsonl");
+    held = ::open(locked.c_str(), O_RDONLY | O_CLOEXEC);
+    EXPECT_EQ(::flock(held, LOCK_EX | LOCK_NB), 0);
+    t.push_back({"outputs", with(run, {"--log", locked}), "--log: cannot write",
+                 "being written by another process", {}, {locked}});
+    t.push_back({"outputs", {"log", "to-mcap", ep, locked}, "OUT: cannot write", "being written by another process",
+                 {}, {locked, ep}});
+    t.push_back({"outputs", {"batch", "3-block", "--world", "symbolic", "--trials", "1", "-o", locked},
+                 "--output: cannot write", "being written by another process", {}, {locked}});
+  }
+  // A FIFO nobody reads: refused, not waited on, and still a FIFO.
+  {
+    const std::string fifo = (dir / "nobody.fifo").string();
+    fs::remove(fifo);
+    EXPECT_EQ(::mkfifo(fifo.c_str(), 0644), 0);
+    t.push_back({"outputs", with(run, {"--log", fifo}), "--log: cannot write", "a FIFO with no reader", {}, {fifo}});
+    t.push_back({"outputs", {"log", "to-mcap", ep, fifo}, "OUT: cannot write", "a FIFO with no reader", {}, {fifo, ep}});
+  }
+  // batch: an unwritable --log-dir is refused before a CSV exists; --merge into one of its inputs.
+  {
+    const std::string a_file = file("a file, not a directory\n", ".txt");
+    t.push_back({"outputs",
+                 {"batch", "3-block", "--world", "symbolic", "--trials", "1", "-o", "b1.csv", "--log-dir",
+                  a_file + "/logs"},
+                 "--log-dir: cannot write into", "is not a directory", {"b1.csv"}, {a_file}});
+    const std::string csv = file("scenario,algorithm,bt,change,trial,seed,success,reason,first_plan_s,replan_s,"
+                                 "replans,tree_changes,completion_s,motion_cost,interventions,wall_s,rtf\n",
+                                 ".csv");
+    t.push_back({"outputs", {"batch", "--merge", csv, "-o", csv}, "--output: cannot write",
+                 "it is also the input --merge", {}, {csv}});
+    // --resume of a CSV another batch wrote (another --seed): refused, the CSV as it was.
+    const std::string other = (dir / "other-seed.csv").string();
+    const std::string cmd = std::string("'") + RTAMP_BIN + "' batch 3-block --world symbolic --trials 2 --change " +
+                            "none --algo astar --seed 7 -q -o '" + other + "' >/dev/null 2>&1";
+    EXPECT_EQ(std::system(cmd.c_str()), 0);
+    t.push_back({"outputs",
+                 {"batch", "3-block", "--world", "symbolic", "--trials", "2", "--change", "none", "--algo", "astar",
+                  "--resume", "-o", other},
+                 name_of(other) + ":2:", "(another --seed)", {}, {other}});
+    t.push_back({"outputs", {"batch", "3-block", "--world", "symbolic", "--resume", "-o", other, "--change", "add"},
+                 name_of(other) + ":2:", "is not a trial of this batch", {}, {other}});
+  }
+  // bt check: the schema to write is the file checked.
+  {
+    const std::string xml = file("<root BTCPP_format=\"4\">\n<BehaviorTree ID=\"T\"><Go/></BehaviorTree>\n"
+                                 "<TreeNodesModel><Action ID=\"Go\"/></TreeNodesModel>\n</root>\n",
+                                 ".xml");
+    t.push_back({"outputs", {"bt", "check", xml, "--xsd", xml}, "--xsd: cannot write", "it is also the input FILE",
+                 {}, {xml}});
+  }
+  // serve: the log to write is the log replayed.
+  t.push_back({"outputs", {"serve", "3-block", "--replay", ep, "--log", link}, "--log: cannot write",
+               "it is also the input --replay", {}, {ep}});
+
+  // Logs `log to-mcap` refuses with the check of `serve --replay`; OUT neither created nor changed.
+  const std::string existing = file("an existing OUT\n", ".mcap");
+  auto refused = [&](const std::string& text, const std::string& where_in_log, const std::string& what) {
+    const std::string p = file(text, ".jsonl");
+    t.push_back({"to-mcap", {"log", "to-mcap", p, mcap_name}, name_of(p) + where_in_log, what, {mcap_name}, {p}});
+    t.push_back({"to-mcap", {"log", "to-mcap", p, existing}, name_of(p) + where_in_log, what, {}, {p, existing}});
+  };
+  refused("", ":", "the log is empty");
+  refused("\n  \n", ":", "the log is empty");
+  auto edited = [&](std::size_t line, const std::string& from, const std::string& to) {
+    std::vector<std::string> l = log;
+    const std::size_t at = l[line].find(from);
+    EXPECT_NE(at, std::string::npos) << l[line];
+    l[line].replace(at, from.size(), to);
+    return joined(l);
+  };
+  const std::size_t last = log.size() - 1;
+  refused(edited(last, "\"t\":", "\"t\":1e300,\"x\":"), ":" + std::to_string(log.size()) + ":",
+          "\"t\" must be a time in world seconds");
+  refused(edited(1, "\"t\":0.0", "\"t\":-1"), ":2:", "\"t\" must be a time");
+  refused(edited(0, "\"version\":1", "\"version\":2"), ":1:", "format version 2");
+  refused(edited(0, "\"version\":1", "\"version\":\"1\""), ":1:", "\"version\" must be a version");
+  {
+    std::vector<std::string> l = log;  // out of order: a late record first
+    l.insert(l.begin() + 1, "{\"ev\":\"replan\",\"why\":\"x\",\"t\":5000}");
+    refused(joined(l), ":3:", "out of time order");
+  }
+  refused(joined(log) + joined(log), ":" + std::to_string(log.size() + 1) + ":", "after the `end` record");
+  {
+    std::vector<std::string> l = log;  // an `end` mid-log
+    l.insert(l.begin() + 2, l[last]);
+    l[2].replace(l[2].find("\"t\":"), 4, "\"t\":0,\"u\":");
+    refused(joined(l), ":4:", "after the `end` record");
+  }
+  {
+    std::vector<std::string> l = log;
+    l.insert(l.begin() + 1, "{\"ev\":\"frame\",\"q\":[0,0,0,0,0],\"tool\":[0,0,0],\"things\":[],\"t\":0}");
+    refused(joined(l), ":2:", "\"q\" must be 6 numbers");
+  }
+  {
+    std::vector<std::string> l = log;
+    l.pop_back();
+    refused(joined(l), ":", "no `end` record");
+  }
+  refused(log[0] + "\n" + std::string((8u << 20) + 10, '0'), ":2:", "a line longer than 8 MiB");
+  refused(std::string(9u << 20, '\0'), ":1:", "a line longer than 8 MiB");
+  {
+    const std::string d = (dir / "a_log_dir").string();
+    fs::create_directories(d);
+    t.push_back({"to-mcap", {"log", "to-mcap", d, mcap_name}, d + ": cannot read the episode log:",
+                 "it is a directory", {mcap_name}});
+  }
+}
+
 std::vector<Case> table() {
   std::vector<Case> t;
+  output_cases(t);
   bt_cases(t);
   yaml_cases(t);
   colour_cases(t);
@@ -805,7 +989,11 @@ TEST(CliBadInput, EveryBadInputIsRefusedWithItsLocationBeforeAnythingRuns) {
   for (const Case& c : cases) {
     SCOPED_TRACE(c.group + ": " + shown(c.args));
     for (const std::string& f : c.not_created) fs::remove_all(scratch() / f);
+    std::vector<std::string> before;
+    for (const std::string& f : c.unchanged) before.push_back(fingerprint(f));
     const Outcome r = run_argv(c.args);
+    for (std::size_t i = 0; i < c.unchanged.size(); ++i)
+      EXPECT_EQ(fingerprint(c.unchanged[i]), before[i]) << c.unchanged[i] << " was changed";
     EXPECT_EQ(r.signal, 0) << "killed by signal " << r.signal;
     EXPECT_TRUE(r.exited);
     EXPECT_EQ(r.code, 2) << r.err;

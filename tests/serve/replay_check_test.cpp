@@ -22,7 +22,7 @@
 
 #include "rtamp/episode/episode.hpp"
 #include "rtamp/serve/live_episode.hpp"
-#include "rtamp/serve/detail/log_check.hpp"
+#include "rtamp/episode/log_check.hpp"
 #include "rtamp/serve/replay.hpp"
 #include "rtamp/serve/server.hpp"
 #include "rtamp/util/error.hpp"
@@ -124,8 +124,8 @@ TEST_F(ReplayCheck, LinesBeyondTheLimitsAreRefusedWithTheirLine) {
   r["ev"] = "replan";
   ls[1] = r.dump();
   EXPECT_EQ(refusal("brackets.jsonl", ls), "");
-  ls[1] = std::string("{\"ev\":\"replan\",\"why\":\"") + std::string(kMaxLineBytes, 'x') + "\",\"t\":0}";
-  expect_refused("long.jsonl", ls, 2, "bytes (the limit is 8 MiB)");
+  ls[1] = std::string("{\"ev\":\"replan\",\"why\":\"") + std::string(episode::kMaxLineBytes, 'x') + "\",\"t\":0}";
+  expect_refused("long.jsonl", ls, 2, "a line longer than 8 MiB");
 }
 
 TEST_F(ReplayCheck, BrokenLogsAreRefusedWithTheirLine) {

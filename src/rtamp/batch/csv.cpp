@@ -1,5 +1,9 @@
 #include "rtamp/batch/csv.hpp"
 
+#include <sstream>
+
+#include "rtamp/util/output_file.hpp"
+
 #include <charconv>
 #include <cmath>
 #include <fstream>
@@ -219,12 +223,10 @@ void write_csv(std::ostream& out, const std::vector<EpisodeRecord>& records) {
   for (const auto& r : records) write_record(out, r);
 }
 
-void write_csv_file(const std::string& path, const std::vector<EpisodeRecord>& records) {
-  std::ofstream out(path, std::ios::binary | std::ios::trunc);
-  if (!out) throw Error("cannot write '" + path + "'");
-  write_csv(out, records);
-  out.flush();
-  if (!out) throw Error("error writing '" + path + "'");
+void write_csv_file(const std::string& path, const std::vector<EpisodeRecord>& records, const std::string& what) {
+  std::ostringstream text;
+  write_csv(text, records);
+  write_output_file(path, what, text.str());
 }
 
 std::vector<EpisodeRecord> read_csv(const std::string& text, const std::string& file) {
@@ -285,7 +287,7 @@ std::vector<EpisodeRecord> read_csv(const std::string& text, const std::string& 
 }
 
 std::vector<EpisodeRecord> read_csv_file(const std::string& path) {
-  return read_csv(read_text_file(path, "the CSV file"), path);
+  return read_csv(read_text_file(path, "the CSV file", kMaxCsvBytes), path);
 }
 
 }  // namespace rtamp::batch

@@ -14,6 +14,7 @@
 // variant / change kind, a malformed or non-finite number, a broken quote.
 #pragma once
 
+#include <cstddef>
 #include <iosfwd>
 #include <string>
 #include <vector>
@@ -21,6 +22,9 @@
 #include "rtamp/batch/record.hpp"
 
 namespace rtamp::batch {
+
+// The largest CSV file read (--merge, --resume): a million rows take about 200 MB.
+inline constexpr std::size_t kMaxCsvBytes = std::size_t(1) << 30;
 
 const std::vector<std::string>& csv_columns();
 
@@ -41,8 +45,10 @@ CsvRows parse_csv(const std::string& text, const std::string& file = {});
 void write_header(std::ostream& out);
 void write_record(std::ostream& out, const EpisodeRecord& r);
 void write_csv(std::ostream& out, const std::vector<EpisodeRecord>& records);
-// Writes to `path` (replacing it); throws rtamp::Error if it cannot.
-void write_csv_file(const std::string& path, const std::vector<EpisodeRecord>& records);
+// Writes to `path` as every output is written (util/output_file.hpp: locked,
+// checked); throws rtamp::OutputError "WHAT: cannot write 'PATH': WHY" if it cannot.
+void write_csv_file(const std::string& path, const std::vector<EpisodeRecord>& records,
+                    const std::string& what = "--output");
 
 // Parses CSV text written by write_csv (the header must be exactly
 // csv_columns()). `file` is used in error messages only.

@@ -53,7 +53,7 @@ std::vector<EpisodeRecord> merge_slices(const std::vector<CsvSource>& sources) {
 std::vector<EpisodeRecord> merge_files(const std::vector<std::string>& paths) {
   std::vector<CsvSource> sources;
   for (const auto& p : paths) {
-    sources.push_back({p, read_text_file(p, "the CSV file")});
+    sources.push_back({p, read_text_file(p, "the CSV file", kMaxCsvBytes)});
   }
   return merge_slices(sources);
 }

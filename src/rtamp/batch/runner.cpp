@@ -8,6 +8,7 @@
 #include <thread>
 
 #include "rtamp/util/error.hpp"
+#include "rtamp/util/output_file.hpp"
 
 namespace rtamp::batch {
 
@@ -52,6 +53,7 @@ episode::EpisodeOptions episode_options(const Trial& t, const BatchOptions& o) {
     e.person.change = change;
   e.seed = t.seed;
   e.outputs.log = o.log_dir.empty() ? std::string() : (std::filesystem::path(o.log_dir) / log_file_name(t)).string();
+  e.outputs.log_option = e.outputs.mcap_option = "--log-dir";
   if (o.mcap && !e.outputs.log.empty())
     e.outputs.mcap = std::filesystem::path(e.outputs.log).replace_extension(".mcap").string();
   return e;
@@ -96,14 +98,24 @@ std::vector<EpisodeRecord> run_batch(const world::Scenario& scenario, const std:
   std::atomic<std::size_t> next{0};
   std::mutex done_mutex;
   std::exception_ptr callback_error;
+  const auto* interrupt = options.episode.loop.interrupt;
+  auto interrupted = [&] { return interrupt && interrupt->load() != 0; };
   auto worker = [&] {
     for (;;) {
+      if (interrupted()) return;
       const std::size_t i = next.fetch_add(1);
       if (i >= trials.size()) return;
       const Trial& t = trials[i];
       EpisodeRecord r;
       try {
-        r = make_record(scenario.name, t, episode::run_episode(scenario, episode_options(t, options)));
+        const exec::EpisodeMetrics m = episode::run_episode(scenario, episode_options(t, options));
+        if (m.end == exec::EndReason::Interrupted) return;  // not a trial's result: run again on --resume
+        r = make_record(scenario.name, t, m);
+      } catch (const OutputError&) {
+        std::lock_guard lock(done_mutex);
+        if (!callback_error) callback_error = std::current_exception();
+        next.store(trials.size());
+        return;
       } catch (const std::exception& e) {
         exec::EpisodeMetrics m;
         m.reason = std::string("error: ") + e.what();

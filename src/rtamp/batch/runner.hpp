@@ -13,7 +13,13 @@
 // time, so completion times move a little with machine load).
 //
 // An episode that throws is recorded as a failure with reason "error: ...";
-// the batch goes on.
+// the batch goes on — except for a lost output (rtamp::OutputError: a log or
+// MCAP file that could not be written), which stops the batch and is rethrown.
+// The episodes' interrupt flag (episode.loop.interrupt, set by a signal) stops
+// it too: no trial starts after it is set, the running episodes end
+// (interrupted, with complete logs and MCAP files) and are not reported —
+// they did not run to their end; their records in the result have an empty
+// scenario.
 #pragma once
 
 #include <cstddef>

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <exception>
 #include <memory>
 #include <random>
 
@@ -18,6 +19,7 @@
 #include "rtamp/exec/timeline.hpp"
 #include "rtamp/exec/tree_dump.hpp"
 #include "rtamp/robot/ik_motion_cost.hpp"
+#include "rtamp/util/file_set.hpp"
 #include "rtamp/world/geometry.hpp"
 
 namespace rtamp::episode {
@@ -118,10 +120,16 @@ Episode::Episode(const world::Scenario& input, const EpisodeOptions& opt, const 
   if (!(out.mcap_image_period >= 0))
     throw Error("the MCAP image period must be >= 0 s (0: every frame, inf: none), not " +
                 std::to_string(out.mcap_image_period));
-  if (!out.log.empty()) log_ = std::make_unique<exec::EpisodeLog>(out.log);
+  {  // two outputs that are one file: refused before either is opened
+    FileSet files;
+    if (!out.log.empty()) files.output(out.log_option, out.log);
+    if (!out.mcap.empty()) files.output(out.mcap_option, out.mcap);
+    if (!out.video.empty() && sim_world_) files.output("--video", out.video);
+  }
+  if (!out.log.empty()) log_ = std::make_unique<exec::EpisodeLog>(out.log, out.log_option);
   if (!out.mcap.empty()) {
     // The MCAP file gets the log's records as they are written (a log without a file if none).
-    mcap_ = std::make_unique<EpisodeMcap>(out.mcap, out.mcap_compression, &scenario_);
+    mcap_ = std::make_unique<EpisodeMcap>(out.mcap, out.mcap_compression, &scenario_, 1 << 20, out.mcap_option);
     if (!log_) log_ = std::make_unique<exec::EpisodeLog>();
     log_->add_sink([m = mcap_.get()](const std::string& record) { m->add(record); });
   }
@@ -169,8 +177,20 @@ Episode::Episode(const world::Scenario& input, const EpisodeOptions& opt, const 
 
 EpisodeMetrics Episode::run() {
   EpisodeMetrics m = loop_->run();
-  if (mcap_) mcap_->close();
-  if (video_) video_->close();
+  // Every output is closed; the first that failed is thrown (a lost log, MCAP file or video).
+  std::exception_ptr failed;
+  auto close = [&](auto& output) {
+    try {
+      if (output) output->close();
+    } catch (...) {
+      if (!failed) failed = std::current_exception();
+    }
+  };
+  close(log_);
+  close(mcap_);
+  close(trees_);
+  close(video_);
+  if (failed) std::rethrow_exception(failed);
   return m;
 }
 

@@ -10,9 +10,11 @@
 // Every input (the task, the world's name and settings, the person's and the
 // loop's numbers, the planner's names) is checked before any output file is
 // opened, and the outputs before the episode starts: a bad one is an
-// rtamp::Error thrown before anything is written or runs. Errors inside the
-// episode end it with EndReason::Error and a complete log; a video encoder
-// that failed then throws its rtamp::Error.
+// rtamp::Error thrown before anything is written or runs; two outputs that
+// are one file are refused (util/file_set.hpp). Errors inside the episode end
+// it with EndReason::Error and a complete log; a video encoder that failed,
+// or an output that was lost (a full disk: util/output_file.hpp), then throws
+// its rtamp::Error (rtamp::OutputError) when the episode ends.
 #pragma once
 
 #include <atomic>
@@ -46,6 +48,8 @@ struct EpisodeOutputs {
   double mcap_image_period = 1;
   std::string trees;  // directory: BehaviorTree.CPP XML of the tree after each change
   std::string video;  // MP4 of the run (worlds that film: MuJoCo)
+  // How errors name the log and the MCAP file (the option that gave them).
+  std::string log_option = "--log", mcap_option = "--mcap";
   std::function<void(const std::string&)> timeline;  // readable lines as they happen
 };
 

@@ -13,6 +13,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "rtamp/episode/log_check.hpp"
 #include "rtamp/exec/thing_layout.hpp"
 #include "rtamp/robot/ur5_kinematics.hpp"
 #include "rtamp/util/error.hpp"
@@ -330,8 +331,9 @@ struct EpisodeMcap::Impl {
   std::uint16_t log, timeline, interventions, replans, plan, tree_ch, task_ch, automaton, tracked, scene, joints, tf;
   std::map<std::string, std::uint16_t> observer_schemas;  // add_channel's, by name
 
-  Impl(const std::string& path, McapCompression c, const world::Scenario* s, std::size_t chunk_bytes)
-      : out(path, c, chunk_bytes) {
+  Impl(const std::string& path, McapCompression c, const world::Scenario* s, std::size_t chunk_bytes,
+       const std::string& what)
+      : out(path, c, chunk_bytes, what) {
     const auto json_schema = [&](const std::string& name, const std::string& data) {
       return out.add_schema(name, "jsonschema", data);
     };
@@ -663,8 +665,8 @@ struct EpisodeMcap::Impl {
 };
 
 EpisodeMcap::EpisodeMcap(const std::string& path, McapCompression compression, const world::Scenario* scenario,
-                         std::size_t chunk_bytes)
-    : impl_(std::make_unique<Impl>(path, compression, scenario, chunk_bytes)) {}
+                         std::size_t chunk_bytes, const std::string& what)
+    : impl_(std::make_unique<Impl>(path, compression, scenario, chunk_bytes, what)) {}
 
 EpisodeMcap::~EpisodeMcap() = default;
 
@@ -726,35 +728,30 @@ void EpisodeMcap::write(std::uint16_t channel, double t, std::string_view messag
 
 void EpisodeMcap::close() { impl_->out.close(); }
 
+void EpisodeMcap::discard() noexcept { impl_->out.discard(); }
+
 std::uint64_t log_to_mcap(const std::string& log_path, const std::string& mcap_path, McapCompression compression,
                           const world::Scenario* scenario, std::size_t chunk_bytes) {
-  std::ifstream in(log_path);
-  if (!in) throw Error("cannot read the episode log '" + log_path + "'");
-  std::string failure;
-  std::uint64_t records = 0;
-  {
-    EpisodeMcap out(mcap_path, compression, scenario, chunk_bytes);
-    std::string line;
-    std::uint64_t n = 0;
-    while (failure.empty() && std::getline(in, line)) {
-      ++n;
-      if (line.find_first_not_of(" \t\r") == std::string::npos) continue;
+  // The whole log is checked first (the check of `serve --replay`), so a log
+  // that is refused leaves the output as it was: not created, not truncated.
+  read_episode_log(log_path, scenario);
+  EpisodeMcap out(mcap_path, compression, scenario, chunk_bytes, "OUT");
+  try {
+    read_episode_log(log_path, scenario, [&](const nlohmann::json&, const std::string& text, int line) {
       try {
-        out.add(line);
+        out.add(text);
+      } catch (const OutputError&) {
+        throw;
       } catch (const Error& e) {
-        failure = log_path + ":" + std::to_string(n) + ": " + e.message();
-      } catch (const std::exception& e) {
-        failure = log_path + ":" + std::to_string(n) + ": " + e.what();
+        throw Error(e.message(), SourceLocation{log_path, line, 0});
       }
-    }
-    if (failure.empty()) out.close();
-    records = out.records();
+    });
+    out.close();
+  } catch (...) {
+    out.discard();  // no half-converted file (a FIFO or a device is never removed)
+    throw;
   }
-  if (!failure.empty()) {
-    std::remove(mcap_path.c_str());  // no half-converted file
-    throw Error(failure);
-  }
-  return records;
+  return out.records();
 }
 
 }  // namespace rtamp::episode

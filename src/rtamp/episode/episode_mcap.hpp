@@ -38,7 +38,7 @@ class EpisodeMcap {
   // null) gives the regions and where things start; without it, the scenario
   // the `episode` record names is used if it is a built-in one.
   EpisodeMcap(const std::string& path, McapCompression compression, const world::Scenario* scenario,
-              std::size_t chunk_bytes = 1 << 20);
+              std::size_t chunk_bytes = 1 << 20, const std::string& what = "--mcap");
   ~EpisodeMcap();
 
   // One record of the log (one JSON object with "ev" and "t", no newline);
@@ -56,6 +56,8 @@ class EpisodeMcap {
   void write(std::uint16_t channel, double t, std::string_view message);
   // Writes the summary and closes the file (the destructor does it quietly).
   void close();
+  // Closes quietly and removes the file if it is a regular one.
+  void discard() noexcept;
 
   std::uint64_t records() const { return records_; }
 
@@ -65,8 +67,11 @@ class EpisodeMcap {
   std::uint64_t records_ = 0;
 };
 
-// Converts the JSON Lines log at `log_path` to `mcap_path`; rtamp::Error
-// "LOG:LINE: what" for a malformed record. Returns the number of records.
+// Converts the JSON Lines log at `log_path` to `mcap_path`. The log is
+// checked whole first (log_check.hpp, the check of `serve --replay`):
+// rtamp::Error "LOG:LINE: what" for a log that breaks it, before the output
+// is opened. A write that fails: rtamp::OutputError, and no output left (a
+// regular file is removed). Returns the number of records.
 std::uint64_t log_to_mcap(const std::string& log_path, const std::string& mcap_path, McapCompression compression,
                           const world::Scenario* scenario = nullptr, std::size_t chunk_bytes = 1 << 20);
 

@@ -94,10 +94,9 @@ McapCompression parse_mcap_compression(const std::string& text) {
   throw Error("unknown MCAP compression '" + text + "' (zstd, lz4 or none)");
 }
 
-McapWriter::McapWriter(const std::string& path, McapCompression compression, std::size_t chunk_bytes)
-    : out_(path, std::ios::binary | std::ios::trunc), path_(path), compression_(compression),
-      chunk_bytes_(chunk_bytes) {
-  if (!out_) throw Error("cannot write the MCAP file '" + path + "'");
+McapWriter::McapWriter(const std::string& path, McapCompression compression, std::size_t chunk_bytes,
+                       const std::string& what)
+    : out_(path, what), path_(path), compression_(compression), chunk_bytes_(chunk_bytes) {
   std::string b(kMagic, kMagicSize);
   std::string h;
   str(h, "");  // profile: none of the well-known ones (JSON messages with JSON schemas)
@@ -114,8 +113,13 @@ McapWriter::~McapWriter() {
 }
 
 void McapWriter::emit(const std::string& bytes) {
-  out_.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
-  if (!out_) throw Error("cannot write the MCAP file '" + path_ + "'");
+  if (!lost_.empty()) throw OutputError(lost_);  // the file stopped at the first lost write
+  try {
+    out_.write(bytes);  // OutputError naming the file and why
+  } catch (const OutputError& e) {
+    lost_ = e.message();
+    throw;
+  }
   offset_ += bytes.size();
 }
 
@@ -233,6 +237,7 @@ void McapWriter::flush_chunk() {
 void McapWriter::close() {
   if (closed_) return;
   closed_ = true;
+  if (!lost_.empty()) throw OutputError(lost_);
   flush_chunk();
   std::string end;
   std::string c;
@@ -241,7 +246,6 @@ void McapWriter::close() {
   emit(end);  // the data section ends here: the data CRC covers everything before DataEnd
   write_summary();
   out_.close();
-  if (!out_) throw Error("cannot write the MCAP file '" + path_ + "'");
 }
 
 void McapWriter::write_summary() {

@@ -9,16 +9,19 @@
 // the first message that uses them; every chunk's message indexes list its
 // messages per channel in the order written, with offsets into the
 // uncompressed chunk; the file is valid only after close() (the destructor
-// closes, quietly). Errors writing or compressing throw rtamp::Error naming the file.
+// closes, quietly). The file is an OutputFile (util/output_file.hpp: locked
+// while written, every write checked); errors writing or compressing throw
+// rtamp::Error (rtamp::OutputError for a lost write) naming the file.
 #pragma once
 
 #include <cstdint>
-#include <fstream>
 #include <map>
 #include <string>
 #include <string_view>
 #include <utility>
 #include <vector>
+
+#include "rtamp/util/output_file.hpp"
 
 namespace rtamp::episode {
 
@@ -30,9 +33,9 @@ McapCompression parse_mcap_compression(const std::string& text);
 class McapWriter {
  public:
   // Opens `path` (rtamp::Error if it cannot be written). Chunks are closed when
-  // their uncompressed records reach `chunk_bytes`.
+  // their uncompressed records reach `chunk_bytes`. `what` names the file in errors.
   explicit McapWriter(const std::string& path, McapCompression compression = McapCompression::Zstd,
-                      std::size_t chunk_bytes = 1 << 20);
+                      std::size_t chunk_bytes = 1 << 20, const std::string& what = "--mcap");
   ~McapWriter();
   McapWriter(const McapWriter&) = delete;
   McapWriter& operator=(const McapWriter&) = delete;
@@ -44,6 +47,11 @@ class McapWriter {
   void write(std::uint16_t channel, std::uint64_t log_time, std::uint64_t publish_time, std::string_view data);
   // Writes the last chunk, the summary and the footer; idempotent.
   void close();
+  // Closes the file quietly and removes it if it is a regular file (a failed conversion).
+  void discard() noexcept {
+    closed_ = true;
+    out_.discard();
+  }
 
   std::uint64_t message_count() const { return message_count_; }
   const std::string& path() const { return path_; }
@@ -68,7 +76,8 @@ class McapWriter {
   void flush_chunk();
   void write_summary();
 
-  std::ofstream out_;
+  OutputFile out_;
+  std::string lost_;  // the first lost write (then nothing more is written)
   std::string path_;
   McapCompression compression_;
   std::size_t chunk_bytes_;

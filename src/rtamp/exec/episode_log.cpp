@@ -78,8 +78,16 @@ std::string automaton_json(const automata::Automaton& ba) {
   return automaton_value(ba).dump(-1, ' ', false, json::error_handler_t::replace);
 }
 
-EpisodeLog::EpisodeLog(const std::string& path) : out_(path), path_(path) {
-  if (!out_) throw Error("cannot write the episode log '" + path + "'");
+EpisodeLog::EpisodeLog(const std::string& path, const std::string& what) : out_(path, what) {}
+
+void EpisodeLog::close() {
+  if (!lost_.empty()) throw OutputError(lost_);
+  try {
+    out_.close();
+  } catch (const OutputError& e) {
+    lost_ = e.message();
+    throw;
+  }
 }
 
 void EpisodeLog::write(double t, const std::string& object) {
@@ -88,15 +96,19 @@ void EpisodeLog::write(double t, const std::string& object) {
   line += object.size() > 2 ? ",\"t\":" : "\"t\":";
   line += json(std::round(t * 1e4) / 1e4).dump();
   line += '}';
-  if (out_.is_open()) {
-    out_ << line << '\n';
-    out_.flush();
+  if (out_.is_open() && lost_.empty()) {
+    try {
+      out_.write(line + '\n');
+    } catch (const OutputError& e) {
+      lost_ = e.message();  // the episode goes on; close() reports it
+    }
   }
   for (const auto& sink : sinks_) sink(line);
 }
 
 void EpisodeLog::on_begin(const EpisodeInfo& i) {
   json j{{"ev", "episode"},
+         {"version", kEpisodeLogVersion},
          {"scenario", i.scenario},
          {"task", i.task},
          {"algorithm", i.algorithm},

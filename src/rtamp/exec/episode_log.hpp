@@ -4,24 +4,30 @@
 // of the observed run with the tracked automaton states, replan requests,
 // plans, tree changes, cycles, ticks — and an `end` record with the metrics.
 // Every record has "ev" (its kind) and "t" (world seconds, 1e-4 s resolution).
-// The file is opened by the constructor (rtamp::Error if it cannot be), so a
-// bad path is refused before an episode starts; each record is flushed when
-// written, so the log is complete up to the last event whatever ends the process.
+// The file is opened by the constructor as every output is (util/output_file.hpp:
+// locked while written, checked; rtamp::OutputError if it cannot be), so a
+// bad path is refused before an episode starts; each record is written when
+// it happens, so the log is complete up to the last event whatever ends the
+// process. A write that fails (a full disk) stops the file, not the episode;
+// close() then throws the OutputError naming the file and why.
 // Sinks (add_sink) receive every record as well, as the same one-line JSON text
 // without the newline — `rtamp serve` streams the log to its pages this way, so
 // a page sees exactly what the file holds. A log may have sinks and no file.
 // The record kinds are documented in docs/exec.md ("The episode log").
 #pragma once
 
-#include <fstream>
 #include <functional>
 #include <string>
 #include <utility>
 #include <vector>
 
 #include "rtamp/exec/episode_observer.hpp"
+#include "rtamp/util/output_file.hpp"
 
 namespace rtamp::exec {
+
+// The format version the `episode` record carries ("version"); readers refuse a newer one.
+inline constexpr int kEpisodeLogVersion = 1;
 
 // The metrics as one JSON object (`indent` < 0: one line).
 std::string to_json(const EpisodeMetrics& m, int indent = -1);
@@ -34,7 +40,8 @@ class EpisodeLog final : public EpisodeObserver {
  public:
   using Sink = std::function<void(const std::string& record)>;
 
-  explicit EpisodeLog(const std::string& path);
+  // `what` names the file in errors (the option that gave it).
+  explicit EpisodeLog(const std::string& path, const std::string& what = "--log");
   // No file: records go to the sinks only.
   EpisodeLog() = default;
 
@@ -52,6 +59,9 @@ class EpisodeLog final : public EpisodeObserver {
   // (a simulated world perceived imperfectly: its perceived `placement` may differ).
   void set_truth(std::function<world::Placement()> truth) { truth_ = std::move(truth); }
   bool ticks = true;  // write a record per tick
+
+  // Closes the file; throws rtamp::OutputError if any record was lost. Idempotent.
+  void close();
 
   void on_begin(const EpisodeInfo&) override;
   void on_action(double t, const char* what, const std::string& action, const std::string& why) override;
@@ -73,8 +83,8 @@ class EpisodeLog final : public EpisodeObserver {
  private:
   void write(double t, const std::string& json_object);
 
-  std::ofstream out_;
-  std::string path_;
+  OutputFile out_;
+  std::string lost_;  // why the file stopped (the first failed write), empty: nothing lost
   std::vector<Sink> sinks_;
   std::vector<std::pair<std::string, std::function<double()>>> end_fields_;
   std::function<world::Placement()> truth_;

@@ -1,5 +1,7 @@
 #include "rtamp/exec/tree_dump.hpp"
 
+#include "rtamp/util/output_file.hpp"
+
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
@@ -29,8 +31,17 @@ TreeDump::TreeDump(std::string dir) : dir_(std::move(dir)) {
 void TreeDump::on_tree_change(double, const ReconfigurationReport& r, const PlanTree& tree, bool) {
   if (!r.applied) return;
   char name[64];
+  if (!lost_.empty()) return;
   std::snprintf(name, sizeof name, "/tree_%03d.xml", files_++);
-  std::ofstream(dir_ + name) << bt::to_btcpp_xml(tree.tree());
+  try {
+    write_output_file(dir_ + name, "--trees", bt::to_btcpp_xml(tree.tree()));
+  } catch (const OutputError& e) {
+    lost_ = e.message();  // the episode goes on; close() reports it
+  }
+}
+
+void TreeDump::close() const {
+  if (!lost_.empty()) throw OutputError(lost_);
 }
 
 }  // namespace rtamp::exec

@@ -112,7 +112,11 @@ LiveEpisode::~LiveEpisode() {
 void LiveEpisode::start() {
   thread_ = std::thread([this] {
     emit_frame(true);
-    metrics_ = episode_->run();
+    try {
+      metrics_ = episode_->run();
+    } catch (...) {
+      failed_ = std::current_exception();
+    }
     ended_.store(true);
     // Requests that arrived after the last step.
     std::deque<Pending> left;
@@ -131,6 +135,7 @@ void LiveEpisode::stop() {
 
 exec::EpisodeMetrics LiveEpisode::wait() {
   if (thread_.joinable()) thread_.join();
+  if (failed_) std::rethrow_exception(std::exchange(failed_, nullptr));
   return metrics_;
 }
 

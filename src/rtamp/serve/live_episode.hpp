@@ -38,6 +38,7 @@
 #include <atomic>
 #include <chrono>
 #include <deque>
+#include <exception>
 #include <memory>
 #include <mutex>
 #include <string>
@@ -83,7 +84,9 @@ class LiveEpisode final : public RequestHandler {
 
   void start();                // the loop's thread
   void stop();                 // ends the episode at its next step (Interrupted)
-  exec::EpisodeMetrics wait(); // joins the loop's thread; the end metrics
+  // Joins the loop's thread; the end metrics. An output lost while the episode ran
+  // (Episode::run's rtamp::OutputError) is rethrown here.
+  exec::EpisodeMetrics wait();
   bool ended() const { return ended_.load(); }
   InterventionStats stats() const;
 
@@ -118,6 +121,7 @@ class LiveEpisode final : public RequestHandler {
   exec::EpisodeLog* log_ = nullptr;
   std::thread thread_;
   exec::EpisodeMetrics metrics_;
+  std::exception_ptr failed_;  // what Episode::run threw, for wait()
   std::atomic<bool> ended_{false};
 
   mutable std::mutex mu_;

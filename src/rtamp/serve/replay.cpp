@@ -12,7 +12,7 @@
 #include "rtamp/automata/translate.hpp"
 #include "rtamp/ltl/parser.hpp"
 #include "rtamp/serve/frame.hpp"
-#include "rtamp/serve/detail/log_check.hpp"
+#include "rtamp/episode/log_check.hpp"
 #include "rtamp/serve/detail/logged_tree.hpp"
 #include "rtamp/serve/scene_message.hpp"
 #include "rtamp/util/error.hpp"
@@ -57,26 +57,11 @@ world::Placement placement_of(const json& j, const world::Scenario& s, const Add
 
 Replay::Replay(const world::Scenario& scenario, const std::string& path, ReplayOptions options)
     : scenario_(scenario), layout_(scenario), playback_(options.speed, options.paused) {
-  std::ifstream in(path);
-  if (!in) throw Error("--replay: cannot read '" + path + "'");
-  std::string line;
-  int n = 0;
   world::Placement last = world::initial_placement(scenario);
   std::string world_name = "symbolic";
   Added added;
   LoggedTree tree(scenario);
-  LogCheck check(scenario);
-  while (std::getline(in, line)) {
-    ++n;
-    if (line.empty()) continue;
-    const std::string where = "--replay: " + path + ":" + std::to_string(n) + ": ";
-    json j;
-    try {
-      j = parse_log_line(line);
-      check.record(j);
-    } catch (const Error& e) {
-      throw Error(where + e.message());
-    }
+  auto each = [&](const json& j, const std::string&, int n) {
     Record r;
     r.t = j["t"].get<double>();
     r.text = j.dump();
@@ -86,7 +71,7 @@ Replay::Replay(const world::Scenario& scenario, const std::string& path, ReplayO
       world_name = j.value("world", "symbolic");
       const std::string sc = j.value("scenario", "");
       if (!sc.empty() && sc != scenario.name)
-        throw Error(where + "the log is of scenario '" + sc + "', not '" + scenario.name + "'");
+        throw Error("the log is of scenario '" + sc + "', not '" + scenario.name + "'", SourceLocation{path, n, 0});
     }
     if (ev == "intervention" && j.value("applied", false)) {
       const std::string kind = j.value("kind", "");
@@ -109,11 +94,11 @@ Replay::Replay(const world::Scenario& scenario, const std::string& path, ReplayO
     r.last_placement = r.placement ? i : before ? before->last_placement : kNone;
     r.last_tree = !r.tree.empty() ? i : before ? before->last_tree : kNone;
     records_.push_back(std::move(r));
-  }
-  try {
-    check.finish();
+  };
+  try {  // the one check of every log reader (episode/log_check.hpp), then each record
+    episode::read_episode_log(path, &scenario, each);
   } catch (const Error& e) {
-    throw Error("--replay: " + path + ": " + e.message());
+    throw Error(std::string("--replay: ") + e.what());
   }
   duration_ = records_.back().t;
   home_ = {scenario.robot.base[0], scenario.robot.base[1], scenario.robot.base[2] + 0.5};

@@ -18,7 +18,8 @@
 //
 // Invariants: the log is read and checked whole by the constructor before
 // anything is served (rtamp::Error "--replay: FILE:LINE: WHY" on a line beyond
-// the limits or breaking the record schema: serve/detail/log_check.hpp); reading it and
+// the limits or breaking the record schema: episode/log_check.hpp, the check
+// `rtamp log to-mcap` makes too); reading it and
 // every lookup by time are linear or better in the log's size (each record
 // keeps the index of the latest frame, placement and tree up to it); a seek
 // sticks (playback never resumes from the time before it); the replay never

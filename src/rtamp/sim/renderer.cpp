@@ -7,6 +7,7 @@
 
 #include "rtamp/sim/egl_context.hpp"
 #include "rtamp/util/error.hpp"
+#include "rtamp/util/output_file.hpp"
 
 namespace rtamp::sim {
 
@@ -134,10 +135,7 @@ std::string png_rows(const std::uint8_t* data, std::size_t row_bytes, int width,
 
 void write_file(const std::string& path, const std::string& png) {
   if (png.empty()) throw Error("cannot write PNG '" + path + "'");
-  std::FILE* f = std::fopen(path.c_str(), "wb");
-  if (!f) throw Error("cannot write '" + path + "': " + std::strerror(errno));
-  const bool written = std::fwrite(png.data(), 1, png.size(), f) == png.size();
-  if (std::fclose(f) != 0 || !written) throw Error("cannot write '" + path + "'");
+  write_output_file(path, "the PNG file", png);  // as every output is written (util/output_file.hpp)
 }
 
 }  // namespace

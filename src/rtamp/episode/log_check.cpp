@@ -1,11 +1,15 @@
-#include "rtamp/serve/detail/log_check.hpp"
+#include "rtamp/episode/log_check.hpp"
 
 #include <cmath>
+
+#include "rtamp/util/line_reader.hpp"
+#include "rtamp/world/builtin_scenarios.hpp"
+#include "rtamp/world/scenario_io.hpp"
 
 #include "rtamp/util/error.hpp"
 #include "rtamp/world/suggest.hpp"
 
-namespace rtamp::serve {
+namespace rtamp::episode {
 
 using nlohmann::json;
 
@@ -87,7 +91,12 @@ json parse_log_line(std::string_view line) {
   }
 }
 
-LogCheck::LogCheck(const world::Scenario& scenario) : scenario_(scenario) {
+LogCheck::LogCheck(const world::Scenario* scenario) {
+  if (scenario) use(*scenario);
+}
+
+void LogCheck::use(const world::Scenario& scenario) {
+  scenario_ = &scenario;
   for (const auto& o : scenario.objects) things_.insert(o.name);
   for (const auto& c : scenario.containers) things_.insert(c.name);
 }
@@ -95,7 +104,7 @@ LogCheck::LogCheck(const world::Scenario& scenario) : scenario_(scenario) {
 void LogCheck::thing(const json& name, const char* what) const {
   if (!name.is_string()) throw Error(std::string(what) + ": a thing's name must be a string");
   const std::string n = name.get<std::string>();
-  if (!things_.count(n))
+  if (scenario_ && !things_.count(n))
     throw Error(std::string(what) + ": no thing " + world::quoted(n) + " exists here" +
                 world::suggestion(n, {things_.begin(), things_.end()}));
 }
@@ -103,7 +112,7 @@ void LogCheck::thing(const json& name, const char* what) const {
 void LogCheck::location(const json& name, const char* what) const {
   if (!name.is_string()) throw Error(std::string(what) + ": a location must be a string");
   const std::string n = name.get<std::string>();
-  if (n == "hand" || n == "none" || things_.count(n) || scenario_.find_region(n)) return;
+  if (!scenario_ || n == "hand" || n == "none" || things_.count(n) || scenario_->find_region(n)) return;
   throw Error(std::string(what) + ": no location " + world::quoted(n) + " exists here");
 }
 
@@ -127,11 +136,12 @@ void LogCheck::record(const json& j) {
     throw Error("unknown record kind " + world::quoted(ev) +
                 world::suggestion(ev, {kKinds.begin(), kKinds.end()}));
   const json* t = field(j, "t");
-  if (!t || !is_finite_number(*t) || t->get<double>() < 0) bad(ev, "t", "must be a time (a number >= 0)");
+  if (!t || !is_finite_number(*t) || t->get<double>() < 0 || t->get<double>() > kMaxTime)
+    bad(ev, "t", "must be a time in world seconds, a number in [0, 1e8]");
   const double time = t->get<double>();
+  if (ended_) throw Error("a `" + ev + "` record after the `end` record (the end is the last line)");
   if (records_ > 0 && time < t_ - 1e-9)
     throw Error("records out of time order (t=" + std::to_string(time) + " after t=" + std::to_string(t_) + ")");
-  if (ended_) throw Error("a `" + ev + "` record after the `end` record (the end is the last line)");
   if ((records_ == 0) != (ev == "episode"))
     throw Error(records_ == 0 ? "the first record is `" + ev + "`, not `episode`"
                               : std::string("a second `episode` record (a log holds one episode)"));
@@ -139,7 +149,17 @@ void LogCheck::record(const json& j) {
   t_ = time;
   using J = json;
   if (ev == "episode") {
-    may(j, ev, "scenario", &J::is_string, "a string");
+    if (const json* v = field(j, "version")) {
+      if (!v->is_number_unsigned() || v->get<std::uint64_t>() < 1) bad(ev, "version", "must be a version (1, 2, ...)");
+      if (v->get<std::uint64_t>() > static_cast<std::uint64_t>(kLogVersion))
+        throw Error("a log of format version " + std::to_string(v->get<std::uint64_t>()) + "; this rtamp reads version " +
+                    std::to_string(kLogVersion) + " (a newer rtamp wrote it)");
+    }
+    const json* name = may(j, ev, "scenario", &J::is_string, "a string");
+    if (!scenario_ && name && world::builtin_scenario_text(name->get<std::string>())) {
+      builtin_ = world::load_scenario(name->get<std::string>());
+      use(*builtin_);
+    }
     may(j, ev, "world", &J::is_string, "a string");
     may(j, ev, "conditions", &J::is_string, "a string");
     may(j, ev, "automaton_states", &J::is_number_unsigned, "a count");
@@ -258,4 +278,27 @@ void LogCheck::finish() const {
   if (!ended_) throw Error("no `end` record (the log of a finished episode ends with one)");
 }
 
-}  // namespace rtamp::serve
+void read_episode_log(const std::string& path, const world::Scenario* scenario,
+                      const std::function<void(const json& record, const std::string& text, int line)>& each) {
+  LineReader in(path, "the episode log", kMaxLineBytes);
+  LogCheck check(scenario);
+  std::string line;
+  while (in.next(line)) {
+    if (line.find_first_not_of(" \t\r") == std::string::npos) continue;
+    json j;
+    try {
+      j = parse_log_line(line);
+      check.record(j);
+    } catch (const Error& e) {
+      throw Error(e.message(), SourceLocation{path, in.line_number(), 0});
+    }
+    if (each) each(j, line, in.line_number());
+  }
+  try {
+    check.finish();
+  } catch (const Error& e) {
+    throw Error(e.message(), SourceLocation{path});
+  }
+}
+
+}  // namespace rtamp::episode
