@@ -52,7 +52,7 @@ install(DIRECTORY ${PROJECT_SOURCE_DIR}/scenarios/ DESTINATION ${CMAKE_INSTALL_D
 install(FILES ${PROJECT_SOURCE_DIR}/models/ur5.xml DESTINATION ${CMAKE_INSTALL_DATADIR}/rtamp/models)
 
 # pkg-config: static libraries in link order (users before what they use).
-set(core_order batch_core exec bt robot plan task automata ltl world util)
+set(core_order batch_core exec bt robot plan task automata ltl world ros2 util)
 set(RTAMP_PC_CORE_LIBS "")
 foreach(l IN LISTS core_order)
   if(TARGET rtamp_${l})

@@ -12,6 +12,8 @@
 #include "rtamp/episode/episode_mcap.hpp"
 #include "rtamp/episode/mcap_arm.hpp"
 #include "rtamp/episode/mcap_camera.hpp"
+#include "rtamp/episode/mcap_ros2.hpp"
+#include "rtamp/episode/mcap_ros2_frames.hpp"
 #include "rtamp/exec/episode_log.hpp"
 #include "rtamp/exec/perception_errors.hpp"
 #include "rtamp/exec/person_world.hpp"
@@ -119,7 +121,13 @@ Episode::Episode(const world::Scenario& input, const EpisodeOptions& opt, const 
     throw Error("the MCAP image period must be >= 0 s (0: every frame, inf: none), not " +
                 std::to_string(out.mcap_image_period));
   if (!out.log.empty()) log_ = std::make_unique<exec::EpisodeLog>(out.log);
-  if (!out.mcap.empty()) {
+  if (!out.mcap.empty() && out.mcap_profile == McapProfile::Ros2) {
+    // The same in the ros2 profile; the scene from the world's frames, drawn from now on.
+    mcap_ros2_ = std::make_unique<McapRos2>(out.mcap, out.mcap_compression, &scenario_);
+    mcap_ros2_frames_ = std::make_unique<McapRos2Frames>(scenario_, *world_, *mcap_ros2_);
+    if (!log_) log_ = std::make_unique<exec::EpisodeLog>();
+    log_->add_sink([m = mcap_ros2_.get()](const std::string& record) { m->add(record); });
+  } else if (!out.mcap.empty()) {
     // The MCAP file gets the log's records as they are written (a log without a file if none).
     mcap_ = std::make_unique<EpisodeMcap>(out.mcap, out.mcap_compression, &scenario_);
     if (!log_) log_ = std::make_unique<exec::EpisodeLog>();
@@ -162,6 +170,7 @@ Episode::Episode(const world::Scenario& input, const EpisodeOptions& opt, const 
       });
     }
   }
+  if (mcap_ros2_frames_) loop_->add_observer(*mcap_ros2_frames_);  // after the log: a tick's record, then the scene
   if (timeline_) loop_->add_observer(*timeline_);
   if (trees_) loop_->add_observer(*trees_);
   if (video_) loop_->add_observer(*video_);
@@ -170,6 +179,7 @@ Episode::Episode(const world::Scenario& input, const EpisodeOptions& opt, const 
 EpisodeMetrics Episode::run() {
   EpisodeMetrics m = loop_->run();
   if (mcap_) mcap_->close();
+  if (mcap_ros2_) mcap_ros2_->close();
   if (video_) video_->close();
   return m;
 }

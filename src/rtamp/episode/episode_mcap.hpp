@@ -25,6 +25,7 @@
 #include <string>
 #include <string_view>
 
+#include "rtamp/episode/mcap_profile.hpp"
 #include "rtamp/episode/mcap_writer.hpp"
 #include "rtamp/world/scenario.hpp"
 
@@ -63,9 +64,10 @@ class EpisodeMcap {
   std::uint64_t records_ = 0;
 };
 
-// Converts the JSON Lines log at `log_path` to `mcap_path`; rtamp::Error
-// "LOG:LINE: what" for a malformed record. Returns the number of records.
+// Converts the JSON Lines log at `log_path` to `mcap_path` in `profile` (log_to_mcap.cpp);
+// rtamp::Error "LOG:LINE: what" for a malformed record, and no file. Returns the number of records.
 std::uint64_t log_to_mcap(const std::string& log_path, const std::string& mcap_path, McapCompression compression,
-                          const world::Scenario* scenario = nullptr, std::size_t chunk_bytes = 1 << 20);
+                          const world::Scenario* scenario = nullptr, std::size_t chunk_bytes = 1 << 20,
+                          McapProfile profile = McapProfile::Json);
 
 }  // namespace rtamp::episode
