@@ -173,6 +173,7 @@ struct McapRos2::Impl : detail::LogScene {  // the scenario, layout, arm and thi
   bool live = false;         // frame() was called: the scene comes from it
   bool statics = false;      // /robot_description, /tf_static and the regions are written
   bool metadata = false;     // the rtamp Metadata record is written
+  bool arm_statics = false;  // the flange and tool frames are on /tf_static (with the first joint angles)
   std::map<std::string, std::array<double, 4>> shown;  // things on /markers: size, container
   std::map<std::string, int> marker_ids;               // a thing's marker id (its label's: id + 1)
   msg::rtamp_msgs::TreeStatus tree;                    // the last tree record's fields and tick status
@@ -233,11 +234,6 @@ struct McapRos2::Impl : detail::LogScene {  // the scenario, layout, arm and thi
     put(robot_description, ns, description);
     msg::tf2_msgs::TFMessage fixed;
     fixed.transforms.push_back(transform(ns, "world", "ur5/base", arm->base()));
-    fixed.transforms.push_back(
-        transform(ns, "ur5/link6", "ur5/flange", robot::ur5_joint_origin(arm->config().dh, robot::kDof + 1)));
-    Eigen::Isometry3d tool = Eigen::Isometry3d::Identity();
-    tool.translation() = Eigen::Vector3d(0, 0, arm->tool_offset());
-    fixed.transforms.push_back(transform(ns, "ur5/flange", "ur5/tool", tool));
     put(tf_static, ns, fixed);
     // The regions: flat boxes with their names, in the world frame.
     msg::visualization_msgs::MarkerArray regions;
@@ -288,6 +284,17 @@ struct McapRos2::Impl : detail::LogScene {  // the scenario, layout, arm and thi
                                              "ur5/link" + std::to_string(k), t));
         }
         tool = arm->tool_pose(q);
+        if (!arm_statics) {
+          // The frames fixed to link6, once the arm's links are on /tf (so that none dangles).
+          arm_statics = true;
+          msg::tf2_msgs::TFMessage fixed;
+          fixed.transforms.push_back(
+              transform(ns, "ur5/link6", "ur5/flange", robot::ur5_joint_origin(arm->config().dh, robot::kDof + 1)));
+          Eigen::Isometry3d offset = Eigen::Isometry3d::Identity();
+          offset.translation() = Eigen::Vector3d(0, 0, arm->tool_offset());
+          fixed.transforms.push_back(transform(ns, "ur5/flange", "ur5/tool", offset));
+          put(tf_static, ns, fixed);
+        }
       }
     }
     msg::visualization_msgs::MarkerArray changes;

@@ -7,7 +7,8 @@
 //   /rtamp/log          std_msgs/String              every log record, as it is (count = the log's lines)
 //   /rosout             rcl_interfaces/Log           one line per event (not ticks, steps, percepts, frames, camera records)
 //   /robot_description  std_msgs/String              the UR5's URDF (robot/ur5_urdf.hpp), once, latched
-//   /tf_static          tf2_msgs/TFMessage           world -> ur5/base, ur5/link6 -> ur5/flange -> ur5/tool, latched
+//   /tf_static          tf2_msgs/TFMessage           world -> ur5/base; with the first joint angles
+//                                                    ur5/link6 -> ur5/flange -> ur5/tool; latched
 //   /joint_states       sensor_msgs/JointState       the arm's six joints, per frame with joint angles
 //   /tf                 tf2_msgs/TFMessage           per frame: the arm's joints (URDF links) and every
 //                                                    thing as frame thing/NAME (the centre of its base)
