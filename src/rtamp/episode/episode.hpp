@@ -81,6 +81,7 @@ class McapArm;
 class McapCamera;
 class McapRos2;
 class McapRos2Frames;
+class McapRos2Camera;
 class SimWorld;
 class VideoRecorder;
 
@@ -115,6 +116,7 @@ class Episode {
   std::unique_ptr<EpisodeMcap> mcap_;  // fed by log_'s sink
   std::unique_ptr<McapRos2> mcap_ros2_;  // the same, in the ros2 profile (--mcap-profile ros2)
   std::unique_ptr<McapRos2Frames> mcap_ros2_frames_;  // the world's frames into mcap_ros2_
+  std::vector<std::unique_ptr<McapRos2Camera>> mcap_ros2_cameras_;  // camera images into mcap_ros2_, per camera
   std::unique_ptr<exec::EpisodeLog> log_;
   std::unique_ptr<McapArm> mcap_arm_;  // the MuJoCo arm's joint angles into mcap_
   std::vector<std::unique_ptr<McapCamera>> mcap_cameras_;  // camera perception's images into mcap_, per camera

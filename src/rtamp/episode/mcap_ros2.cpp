@@ -201,9 +201,12 @@ struct McapRos2::Impl : detail::LogScene {  // the scenario, layout, arm and thi
 
   template <typename M>
   std::uint16_t channel(const std::string& topic, int depth, bool latched) {
-    const std::string name(M::ros2_name);
-    auto [it, added] = schemas.try_emplace(name, 0);
-    if (added) it->second = out.add_schema(name, "ros2msg", std::string(M::ros2msg()));
+    return add_channel(topic, std::string(M::ros2_name), std::string(M::ros2msg()), depth, latched);
+  }
+  std::uint16_t add_channel(const std::string& topic, const std::string& type, const std::string& text, int depth,
+                            bool latched) {
+    auto [it, added] = schemas.try_emplace(type, 0);
+    if (added) it->second = out.add_schema(type, "ros2msg", text);
     return out.add_channel(topic, it->second, "cdr", {{"offered_qos_profiles", qos(depth, latched)}});
   }
 
@@ -488,6 +491,18 @@ void McapRos2::frame(const exec::Frame& frame) {
   impl_->live = true;
   impl_->scene(nanos(frame.t), frame);
 }
+
+std::uint16_t McapRos2::add_channel(const std::string& topic, const std::string& type, const std::string& ros2msg,
+                                    int depth, bool latched) {
+  return impl_->add_channel(topic, type, ros2msg, depth, latched);
+}
+
+void McapRos2::write(std::uint16_t channel, double t, std::string_view cdr) {
+  const std::uint64_t ns = nanos(t);
+  impl_->out.write(channel, ns, ns, cdr);
+}
+
+std::uint16_t McapRos2::tf_channel() const { return impl_->tf; }
 
 void McapRos2::close() { impl_->out.close(); }
 

@@ -50,6 +50,19 @@ class McapRos2 {
   // The scene as the world draws it, at frame.t. Once called, `frame` records
   // and placements are not drawn (the scene comes from here only).
   void frame(const exec::Frame& frame);
+  // A channel of observers that write messages of their own (a camera's images:
+  // mcap_ros2_camera.hpp): message type M (a generated one, rtamp/ros2/messages.hpp),
+  // its schema written once per type, QoS keep-last `depth`, latched or volatile.
+  template <typename M>
+  std::uint16_t add_channel(const std::string& topic, int depth = 10, bool latched = false) {
+    return add_channel(topic, std::string(M::ros2_name), std::string(M::ros2msg()), depth, latched);
+  }
+  std::uint16_t add_channel(const std::string& topic, const std::string& type, const std::string& ros2msg, int depth,
+                            bool latched);
+  // One message of such a channel at world time `t` (s): its CDR bytes (ros2::encode).
+  void write(std::uint16_t channel, double t, std::string_view cdr);
+  // The /tf channel's id, for observers that place frames of their own (a camera).
+  std::uint16_t tf_channel() const;
   // Writes the summary and closes the file (the destructor does it quietly).
   void close();
 

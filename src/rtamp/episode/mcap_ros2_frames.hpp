@@ -3,9 +3,11 @@
 // takes the world's own frame (exec::FrameSource: MuJoCo's poses and joint
 // angles, the symbolic world's placement) — or, for a world that cannot draw
 // itself, the perceived placement laid out (exec/laid_out_frames.hpp) — and
-// gives it to McapRos2::frame (/joint_states, /tf, /markers). So the file shows
-// the world's poses at the loop's rate, the held thing in the gripper, not the
-// log's coarser records. Drawing reads the world only (FrameSource's rule).
+// gives it to McapRos2::frame (/joint_states, /tf, /markers). Things are labelled
+// with the world's true placement where it has one (exec::Intervenable), else
+// with what the loop perceived: the file shows what happened, every present
+// thing at the world's pose at the loop's rate, the held thing in the gripper,
+// not the log's coarser records. Drawing reads the world only (FrameSource's rule).
 #pragma once
 
 #include <memory>
@@ -13,6 +15,7 @@
 
 #include "rtamp/episode/mcap_ros2.hpp"
 #include "rtamp/exec/episode_observer.hpp"
+#include "rtamp/exec/intervenable.hpp"
 #include "rtamp/exec/laid_out_frames.hpp"
 #include "rtamp/exec/world.hpp"
 
@@ -23,6 +26,7 @@ class McapRos2Frames final : public exec::EpisodeObserver {
   // All must outlive this. Draws the scene as it is now.
   McapRos2Frames(const world::Scenario& scenario, exec::World& world, McapRos2& mcap)
       : mcap_(mcap) {
+    truth_ = world.intervenable();
     source_ = world.frames();
     if (!source_) {
       laid_out_ = std::make_unique<exec::LaidOutFrames>(scenario, world);
@@ -35,13 +39,14 @@ class McapRos2Frames final : public exec::EpisodeObserver {
 
  private:
   void draw(double t) {
-    exec::Frame f = source_->frame(perceived_);
+    exec::Frame f = source_->frame(truth_ ? truth_->true_placement() : perceived_);
     f.t = t;
     mcap_.frame(f);
   }
 
   McapRos2& mcap_;
   exec::FrameSource* source_ = nullptr;
+  exec::Intervenable* truth_ = nullptr;
   std::unique_ptr<exec::FrameSource> laid_out_;
   world::Placement perceived_;
 };
