@@ -241,6 +241,29 @@ async function check(file, logFile, { mujoco = false, holds = mujoco } = {}) {
       }
     }
     if (holds) assert.ok(held > 0, 'a held block hangs from ur5/tool');
+    // Where a thing changes hands (world -> ur5/tool at a grasp, back at a release), its
+    // world pose composed through the arm's chain (/tf_static, the frame's /tf) is where it
+    // was one tick before: the held transform is the world pose in the gripper's frame.
+    const statics = new Map(fixed.map((t) => [t.child_frame_id, t.transform]));
+    const toolInWorld = (m) => {
+      const links = new Map(m.value.transforms.map((t) => [t.child_frame_id, t.transform]));
+      let t = statics.get('ur5/base');
+      for (let k = 1; k <= 6; ++k) t = compose(t, links.get(`ur5/link${k}`));
+      return compose(compose(t, statics.get('ur5/flange')), statics.get('ur5/tool'));
+    };
+    const inWorld = (m, t) => (t.header.frame_id === 'world' ? t.transform : compose(toolInWorld(m), t.transform));
+    let handovers = 0;
+    for (let i = 1; i < sceneFrames.length; ++i) {
+      const before = scene(sceneFrames[i - 1]), after = scene(sceneFrames[i]);
+      for (const [thing, t] of after) {
+        const b = before.get(thing);
+        if (!b || b.header.frame_id === t.header.frame_id) continue;
+        ++handovers;
+        const p = inWorld(sceneFrames[i - 1], b).translation, q = inWorld(sceneFrames[i], t).translation;
+        assert.ok(Math.hypot(p.x - q.x, p.y - q.y, p.z - q.z) < 0.01, `${thing} moves ${Math.hypot(p.x - q.x, p.y - q.y, p.z - q.z)} m as it changes hands`);
+      }
+    }
+    if (holds) assert.ok(handovers >= 2, `${handovers} grasps and releases`);
   }
   return { byTopic, records };
 }
