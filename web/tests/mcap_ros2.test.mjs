@@ -11,8 +11,11 @@
 // JSON Lines log; message counts match the log's records; the arm's /tf is its URDF's
 // joints at the /joint_states angles; the transform tree has one root, `world`; at the
 // end every block sits in the region the log's end placement names; while the log
-// says a block is in the hand, it hangs from ur5/tool. Episodes: symbolic (live and
-// converted by `rtamp log to-mcap`) and MuJoCo. Bad input: --mcap-profile x, exit 2.
+// says a block is in the hand, it hangs from ur5/tool, and where a thing changes hands
+// its world pose composed through the arm's chain stays put; a converted served log's
+// joint angles and things' poses are its `frame` records'. Episodes: symbolic (live and
+// converted by `rtamp log to-mcap`), served (`rtamp serve --speed 0 --exit-at-end`, live
+// and converted), MuJoCo, MuJoCo with a camera. Bad input: --mcap-profile x, exit 2.
 import assert from 'node:assert/strict';
 import { execFileSync, spawnSync } from 'node:child_process';
 import fs from 'node:fs';
@@ -73,7 +76,10 @@ function urdfJoints(urdf) {
   return joints;
 }
 
-async function check(file, logFile, { mujoco = false, holds = mujoco } = {}) {
+// arm: 'ticks' (a live MuJoCo episode: the arm at every tick), 'frames' (a converted log with
+// `frame` records: the arm and things of those records) or null (no joint angles).
+async function check(file, logFile, { arm = null, holds = arm === 'ticks' } = {}) {
+  const mujoco = arm !== null;
   const bytes = new Uint8Array(fs.readFileSync(file));
   const lines = fs.readFileSync(logFile, 'utf8').split('\n').filter((l) => l.length > 0);
   const records = lines.map((l) => JSON.parse(l));
@@ -174,13 +180,21 @@ async function check(file, logFile, { mujoco = false, holds = mujoco } = {}) {
   for (const t of fixed.slice(1)) sameTransform(t.transform, joints.get(t.child_frame_id).origin, t.child_frame_id);
   const states = topic('/joint_states'), tfs = topic('/tf');
   if (mujoco) {
-    assert.equal(states.length, count('tick') + 1, 'a joint state where the arm starts and after each tick');
-    const arm = tfs.filter((m) => m.value.transforms.some((t) => t.child_frame_id === 'ur5/link1'));
-    assert.equal(arm.length, states.length);
+    if (arm === 'ticks') assert.equal(states.length, count('tick') + 1, 'a joint state where the arm starts and after each tick');
+    else {
+      const withQ = records.filter((r) => r.ev === 'frame' && Array.isArray(r.q));
+      assert.equal(states.length, withQ.length, 'a joint state per frame record');
+      for (const [i, s] of states.entries()) {
+        assert.deepEqual([...s.value.position], withQ[i].q, 'the frame record\'s joint angles');
+        assert.equal(s.logTime, BigInt(Math.round(withQ[i].t * 1e9)));
+      }
+    }
+    const armTfs = tfs.filter((m) => m.value.transforms.some((t) => t.child_frame_id === 'ur5/link1'));
+    assert.equal(armTfs.length, states.length);
     for (const [i, s] of states.entries()) {
-      assert.equal(arm[i].logTime, s.logTime);
+      assert.equal(armTfs[i].logTime, s.logTime);
       for (let k = 1; k <= 6; ++k) {
-        const t = arm[i].value.transforms.find((x) => x.child_frame_id === `ur5/link${k}`);
+        const t = armTfs[i].value.transforms.find((x) => x.child_frame_id === `ur5/link${k}`);
         const j = joints.get(`ur5/link${k}`);
         assert.equal(t.header.frame_id, j.parent);
         const q = s.value.position[s.value.name.indexOf(j.name)];
@@ -253,7 +267,7 @@ async function check(file, logFile, { mujoco = false, holds = mujoco } = {}) {
     };
     const inWorld = (m, t) => (t.header.frame_id === 'world' ? t.transform : compose(toolInWorld(m), t.transform));
     let handovers = 0;
-    for (let i = 1; i < sceneFrames.length; ++i) {
+    for (let i = 1; arm === 'ticks' && i < sceneFrames.length; ++i) {  // one tick apart (frame records are 0.5 s)
       const before = scene(sceneFrames[i - 1]), after = scene(sceneFrames[i]);
       for (const [thing, t] of after) {
         const b = before.get(thing);
@@ -263,7 +277,22 @@ async function check(file, logFile, { mujoco = false, holds = mujoco } = {}) {
         assert.ok(Math.hypot(p.x - q.x, p.y - q.y, p.z - q.z) < 0.01, `${thing} moves ${Math.hypot(p.x - q.x, p.y - q.y, p.z - q.z)} m as it changes hands`);
       }
     }
-    if (holds) assert.ok(handovers >= 2, `${handovers} grasps and releases`);
+    if (holds && arm === 'ticks') assert.ok(handovers >= 2, `${handovers} grasps and releases`);
+    // A converted log's things are where its frame records put them (held ones too, through the chain).
+    if (arm === 'frames') {
+      const frameRecords = records.filter((r) => r.ev === 'frame');
+      assert.equal(sceneFrames.length, frameRecords.length);
+      for (const [i, m] of sceneFrames.entries()) {
+        const things = scene(m);
+        for (const x of frameRecords[i].things.filter((x) => x.at !== 'none')) {
+          const t = things.get(x.name);
+          assert.ok(t, `${x.name} on /tf`);
+          const w = inWorld(m, t);
+          for (const [k, j] of [['x', 0], ['y', 1], ['z', 2]]) near(w.translation[k], x.pos[j], 1e-9, `${x.name}.${k}`);
+          assert.equal(t.header.frame_id, x.at === 'hand' ? 'ur5/tool' : 'world');
+        }
+      }
+    }
   }
   return { byTopic, records };
 }
@@ -280,11 +309,24 @@ async function check(file, logFile, { mujoco = false, holds = mujoco } = {}) {
   console.log(`ok symbolic: ${a.records.length} records, ${a.byTopic.get('/tf').length} /tf messages`);
 }
 
+// A served episode, live and its log converted: the converted file's arm and things are the
+// log's `frame` records (the symbolic world's arm is serve's inverse kinematics of the tool).
+{
+  const log = path.join(tmp, 'served.jsonl'), live = path.join(tmp, 'served.mcap'), conv = path.join(tmp, 'served-conv.mcap');
+  rtamp(['serve', '3-block-tray', '--world', 'symbolic', '--speed', '0', '--exit-at-end', '--port', '0', '--quiet',
+    '--web-root', tmp, '--log', log, '--mcap', live, '--mcap-profile', 'ros2'], 'ran');
+  assert.ok(fs.readFileSync(log, 'utf8').includes('"ev":"frame"'));
+  await check(live, log);
+  rtamp(['log', 'to-mcap', log, conv, '--mcap-profile', 'ros2']);
+  const r = await check(conv, log, { arm: 'frames', holds: true });
+  console.log(`ok serve: ${r.byTopic.get('/joint_states').length} joint states from frame records`);
+}
+
 // MuJoCo: the arm and the world's poses at every tick.
 {
   const log = path.join(tmp, 'mj.jsonl'), out = path.join(tmp, 'mj.mcap');
   rtamp(['run', '3-block', '--quiet', '--log', log, '--mcap', out, '--mcap-profile', 'ros2', '--mcap-compression', 'none'], 'ran');
-  const r = await check(out, log, { mujoco: true });
+  const r = await check(out, log, { arm: 'ticks' });
   console.log(`ok mujoco: ${r.byTopic.get('/joint_states').length} joint states`);
 }
 
@@ -294,7 +336,7 @@ async function check(file, logFile, { mujoco = false, holds = mujoco } = {}) {
   const log = path.join(tmp, 'cam.jsonl'), out = path.join(tmp, 'cam.mcap');
   rtamp(['run', '3-block-tray', '--perception', 'camera', '--max-time', '3', '--quiet', '--log', log, '--mcap', out,
     '--mcap-profile', 'ros2', '--mcap-image-period', '1'], 'ran');
-  const { byTopic, records } = await check(out, log, { mujoco: true, holds: false });  // 3 s: nothing picked yet
+  const { byTopic, records } = await check(out, log, { arm: 'ticks', holds: false });  // 3 s: nothing picked yet
   const { PNG } = await import('pngjs');
   const frames = records.filter((r) => r.ev === 'camera');
   const camera = frames[0].camera;

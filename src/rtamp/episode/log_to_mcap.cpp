@@ -1,6 +1,7 @@
 // rtamp log to-mcap: an episode's JSON Lines log converted to MCAP, in either
 // profile (EpisodeMcap: JSON; McapRos2: ros2), record by record; a malformed
-// record stops it with "LOG:LINE: what" and leaves no half-converted file.
+// record stops it with "LOG:LINE: what" and leaves no half-converted file. The ros2
+// profile looks for `frame` records first: if there are any, the scene is theirs only.
 #include <cstdio>
 #include <fstream>
 #include <memory>
@@ -20,9 +21,17 @@ std::uint64_t log_to_mcap(const std::string& log_path, const std::string& mcap_p
   {
     std::unique_ptr<EpisodeMcap> json;
     std::unique_ptr<McapRos2> ros2;
-    if (profile == McapProfile::Ros2)
+    if (profile == McapProfile::Ros2) {
       ros2 = std::make_unique<McapRos2>(mcap_path, compression, scenario, chunk_bytes);
-    else
+      // One source for the scene: a log with `frame` records has it from them only.
+      for (std::string line; std::getline(in, line);)
+        if (line.find("\"ev\":\"frame\"") != std::string::npos) {
+          ros2->scene_from_frame_records();
+          break;
+        }
+      in.clear();
+      in.seekg(0);
+    } else
       json = std::make_unique<EpisodeMcap>(mcap_path, compression, scenario, chunk_bytes);
     std::string line;
     std::uint64_t n = 0;

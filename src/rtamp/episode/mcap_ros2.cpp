@@ -504,6 +504,8 @@ void McapRos2::write(std::uint16_t channel, double t, std::string_view cdr) {
 
 std::uint16_t McapRos2::tf_channel() const { return impl_->tf; }
 
+void McapRos2::scene_from_frame_records() { impl_->frames_in_log = true; }
+
 void McapRos2::close() { impl_->out.close(); }
 
 }  // namespace rtamp::episode

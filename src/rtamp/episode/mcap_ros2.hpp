@@ -63,6 +63,9 @@ class McapRos2 {
   void write(std::uint16_t channel, double t, std::string_view cdr);
   // The /tf channel's id, for observers that place frames of their own (a camera).
   std::uint16_t tf_channel() const;
+  // The log has `frame` records (a converted `rtamp serve --log`): the scene comes
+  // from them only, not also from the placements before the first one.
+  void scene_from_frame_records();
   // Writes the summary and closes the file (the destructor does it quietly).
   void close();
 
