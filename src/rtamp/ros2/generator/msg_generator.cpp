@@ -9,8 +9,11 @@
 //     the order first used) after a line of 80 '=' and a line "MSG: PACKAGE/TYPE";
 //   - `write(CdrWriter&, const T&)`: the CDR encoding of the fields in order
 //     (cdr_writer.hpp has the alignment rules).
-// One definition (the .msg file) is the struct, the encoder and the schema; the
-// DDS types of a later bridge are to be generated here from the same parse.
+// With `--idl FILE` it also writes the same messages as OMG IDL in one file, in
+// dependency order, named as ROS 2's rmw_cyclonedds names them on the wire
+// (module PACKAGE::msg::dds_, struct TYPE_; constants in TYPE_Constants), for
+// Cyclone DDS's idlc. One definition (the .msg file) is the struct, the encoder,
+// the schema and the DDS type.
 // Bad input (an unknown type, a malformed line, a cycle, wstring): one line
 // "FILE:LINE: what" on stderr and exit 2, and no output file.
 #include <cstdlib>
@@ -237,17 +240,84 @@ std::string write_field(const Field& f) {
 
 }  // namespace
 
+// The IDL type of a field (the element type for arrays; `name` gets a fixed array's [N]).
+std::string idl_type(const Field& f) {
+  static const std::map<std::string, std::string> primitives = {
+      {"bool", "boolean"}, {"byte", "octet"},   {"char", "uint8"},   {"float32", "float"},   {"float64", "double"},
+      {"int8", "int8"},    {"uint8", "uint8"},  {"int16", "int16"},  {"uint16", "uint16"},   {"int32", "int32"},
+      {"uint32", "uint32"}, {"int64", "int64"}, {"uint64", "uint64"}, {"string", "string"}};
+  std::string base;
+  if (f.primitive) {
+    base = primitives.at(f.base);
+    if (f.base == "string" && f.string_bound) base += "<" + std::to_string(f.string_bound) + ">";
+  } else {
+    const auto s = f.base.find('/');
+    base = f.base.substr(0, s) + "::msg::dds_::" + f.base.substr(s + 1) + "_";
+  }
+  if (f.array == 1) return "sequence<" + base + ">";
+  if (f.array == 3) return "sequence<" + base + ", " + std::to_string(f.bound) + ">";
+  return base;
+}
+
+std::string idl(const std::vector<std::string>& order, const std::map<std::string, Message>& messages) {
+  std::ostringstream o;
+  o << "// Generated at build time by src/rtamp/ros2/generator/msg_generator.cpp from the .msg files\n"
+       "// in src/rtamp/ros2/msg: do not edit. The DDS types of ROS 2 messages as rmw_cyclonedds\n"
+       "// names them (PACKAGE::msg::dds_::TYPE_), in dependency order.\n";
+  for (const auto& name : order) {
+    const Message& m = messages.at(name);
+    o << "\nmodule " << m.package << " { module msg { module dds_ {\n";
+    bool constants = false;
+    for (const Field& f : m.fields)
+      if (f.constant) {
+        if (!constants) o << "  module " << m.type << "_Constants {\n";
+        constants = true;
+        const std::string value = f.base == "bool" ? (cpp_value(f, f.value, m.file) == "true" ? "TRUE" : "FALSE")
+                                                   : cpp_value(f, f.value, m.file);
+        o << "    const " << idl_type(f) << " " << f.name << " = " << value << ";\n";
+      }
+    if (constants) o << "  };\n";
+    o << "  @final struct " << m.type << "_ {\n";  // plain CDR, as ROS 2 sends it
+    bool any = false;
+    for (const Field& f : m.fields) {
+      if (f.constant) continue;
+      any = true;
+      o << "    " << idl_type(f) << " " << f.name << (f.array == 2 ? "[" + std::to_string(f.bound) + "]" : "")
+        << ";\n";
+    }
+    if (!any) o << "    uint8 structure_needs_at_least_one_member;\n";
+    o << "  };\n}; }; };\n";
+  }
+  return o.str();
+}
+
+void write_file(const std::string& path, const std::string& text) {
+  const std::string tmp = path + ".tmp";
+  {
+    std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
+    out << text;
+    if (!out) throw Failure{path + ": cannot write it"};
+  }
+  if (std::rename(tmp.c_str(), path.c_str()) != 0) throw Failure{path + ": cannot write it"};
+}
+
 int main(int argc, char** argv) {
-  if (argc < 3) {
-    std::cerr << "usage: msg_generator OUT.hpp PACKAGE/TYPE.msg...\n";
+  std::vector<std::string> args(argv + 1, argv + argc);
+  std::string idl_path;
+  if (args.size() >= 2 && args[0] == "--idl") {
+    idl_path = args[1];
+    args.erase(args.begin(), args.begin() + 2);
+  }
+  if (args.size() < 2) {
+    std::cerr << "usage: msg_generator [--idl OUT.idl] OUT.hpp PACKAGE/TYPE.msg...\n";
     return 2;
   }
-  const std::string out_path = argv[1];
+  const std::string out_path = args[0];
   try {
     std::map<std::string, Message> messages;
     std::vector<std::string> inputs;
-    for (int i = 2; i < argc; ++i) {
-      Message m = parse(argv[i]);
+    for (std::size_t i = 1; i < args.size(); ++i) {
+      Message m = parse(args[i]);
       const std::string name = m.full();
       if (messages.count(name)) throw Failure{m.file + ": " + name + " given twice"};
       inputs.push_back(name);
@@ -328,13 +398,8 @@ int main(int argc, char** argv) {
       o << "}\n\n}  // namespace " << m.package << "\n";
     }
     o << "\n}  // namespace rtamp::ros2\n";
-    const std::string tmp = out_path + ".tmp";
-    {
-      std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-      out << o.str();
-      if (!out) throw Failure{out_path + ": cannot write it"};
-    }
-    if (std::rename(tmp.c_str(), out_path.c_str()) != 0) throw Failure{out_path + ": cannot write it"};
+    write_file(out_path, o.str());
+    if (!idl_path.empty()) write_file(idl_path, idl(order, messages));
   } catch (const Failure& f) {
     std::cerr << "msg_generator: " << f.what << "\n";
     return 2;
