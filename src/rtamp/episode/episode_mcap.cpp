@@ -18,6 +18,7 @@
 #include "rtamp/robot/ur5_kinematics.hpp"
 #include "rtamp/util/error.hpp"
 #include "rtamp/util/json_text.hpp"
+#include "rtamp/util/version.hpp"
 #include "rtamp/world/builtin_scenarios.hpp"
 #include "rtamp/world/scenario_io.hpp"
 
@@ -241,7 +242,7 @@ struct EpisodeMcap::Impl : detail::LogScene {  // the scenario, layout, arm and 
   std::map<std::string, std::uint16_t> observer_schemas;  // add_channel's, by name
 
   Impl(const std::string& path, McapCompression c, const world::Scenario* s, std::size_t chunk_bytes)
-      : out(path, c, chunk_bytes) {
+      : out(path, c, chunk_bytes, "", std::string("rtamp ") + version()) {
     const auto json_schema = [&](const std::string& name, const std::string& data) {
       return out.add_schema(name, "jsonschema", data);
     };
@@ -442,6 +443,7 @@ struct EpisodeMcap::Impl : detail::LogScene {  // the scenario, layout, arm and 
     out.write(log, ns, ns, text);
     if (ev == "episode") {
       use_builtin(text_of(j, "scenario"));
+      out.add_metadata("rtamp", detail::episode_metadata(j));
       logline(timeline, ns, 2, ev,
               "episode " + text_of(j, "scenario") + ": " + text_of(j, "task") + " (world " + text_of(j, "world") +
                   ", seed " + text_of(j, "seed") + ")");

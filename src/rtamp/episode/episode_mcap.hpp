@@ -15,7 +15,9 @@
 //   /interventions  foxglove.Log           interventions (refused ones as warnings)
 //   /replans        foxglove.Log           replan requests
 // and the channels of observers that write their own (add_channel, write: a
-// camera's images, mcap_camera.hpp). Message times are the records' world times (ns). Used live, as a sink of the
+// camera's images, mcap_camera.hpp). Message times are the records' world times (ns).
+// The Header's library is "rtamp VERSION"; the `episode` record also gives a Metadata
+// record "rtamp" (version, scenario, task, world, seed, algorithm). Used live, as a sink of the
 // episode log (Episode, `--mcap`), and by `rtamp log to-mcap` on a finished log.
 #pragma once
 

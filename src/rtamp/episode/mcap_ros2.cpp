@@ -255,13 +255,7 @@ struct McapRos2::Impl : detail::LogScene {  // the scenario, layout, arm and thi
   void write_metadata(const json& episode) {
     if (metadata) return;
     metadata = true;
-    out.add_metadata("rtamp", {{"library", "rtamp"},
-                               {"version", version()},
-                               {"scenario", text_of(episode, "scenario")},
-                               {"task", text_of(episode, "task")},
-                               {"world", text_of(episode, "world")},
-                               {"seed", text_of(episode, "seed")},
-                               {"algorithm", text_of(episode, "algorithm")}});
+    out.add_metadata("rtamp", detail::episode_metadata(episode));
   }
 
   // One frame: /joint_states and the arm's joints on /tf (when it has joint

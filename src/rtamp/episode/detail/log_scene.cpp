@@ -3,6 +3,7 @@
 #include <vector>
 
 #include "rtamp/util/error.hpp"
+#include "rtamp/util/version.hpp"
 #include "rtamp/world/builtin_scenarios.hpp"
 #include "rtamp/world/scenario_io.hpp"
 
@@ -34,6 +35,15 @@ std::optional<exec::Frame> LogScene::laid_out(double t, const json& placement) {
   }
   const world::Vec3 hand{scenario->robot.base[0], scenario->robot.base[1], scenario->robot.base[2] + 0.5};
   return layout->frame(t, p, hand);
+}
+
+std::map<std::string, std::string> episode_metadata(const json& episode) {
+  std::map<std::string, std::string> m{{"library", "rtamp"}, {"version", version()}};
+  for (const char* key : {"scenario", "task", "world", "seed", "algorithm"}) {
+    const auto it = episode.find(key);
+    if (it != episode.end() && !it->is_null()) m[key] = it->is_string() ? it->get<std::string>() : it->dump();
+  }
+  return m;
 }
 
 exec::Frame frame_of_record(double t, const json& j) {

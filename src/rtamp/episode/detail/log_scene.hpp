@@ -35,6 +35,10 @@ struct LogScene {
   std::optional<exec::Frame> laid_out(double t, const nlohmann::json& placement);
 };
 
+// The MCAP Metadata record "rtamp" of an episode: library, version, and the
+// `episode` record's scenario, task, world, seed and algorithm.
+std::map<std::string, std::string> episode_metadata(const nlohmann::json& episode);
+
 // A `frame` record (rtamp serve --log) as a frame: joint angles when it has six.
 exec::Frame frame_of_record(double t, const nlohmann::json& record);
 
