@@ -9,6 +9,7 @@
 #                                          the built-in scenarios are compiled in)
 #   share/rtamp/scenarios/*.yaml           the built-in scenarios as files, to copy and edit
 #   share/rtamp/models/ur5.xml             the UR5's MuJoCo model (also compiled in)
+#   share/rtamp/ros2/msg/PKG/TYPE.msg      the ROS 2 message definitions (src/rtamp/ros2/msg)
 # Included by the top-level CMakeLists.txt after every layer and the CLI exist. Defines the
 # umbrella targets rtamp::rtamp (every layer without MuJoCo) and rtamp::rtamp_mujoco.
 include(CMakePackageConfigHelpers)
@@ -43,7 +44,8 @@ install(FILES ${PROJECT_BINARY_DIR}/rtampConfig.cmake ${PROJECT_BINARY_DIR}/rtam
 # Headers under a layer's detail/ are its internals (they may use the build-only
 # dependencies, e.g. nlohmann_json) and are not installed.
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/src/rtamp DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}
-        FILES_MATCHING PATTERN "*.hpp" PATTERN "detail" EXCLUDE)
+        FILES_MATCHING PATTERN "*.hpp" PATTERN "detail" EXCLUDE
+        PATTERN "ros2/generator" EXCLUDE PATTERN "ros2/msg" EXCLUDE)
 if(TARGET rtamp)
   install(TARGETS rtamp RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
 endif()
@@ -52,7 +54,7 @@ install(DIRECTORY ${PROJECT_SOURCE_DIR}/scenarios/ DESTINATION ${CMAKE_INSTALL_D
 install(FILES ${PROJECT_SOURCE_DIR}/models/ur5.xml DESTINATION ${CMAKE_INSTALL_DATADIR}/rtamp/models)
 
 # pkg-config: static libraries in link order (users before what they use).
-set(core_order batch_core exec bt robot plan task automata ltl world util)
+set(core_order batch_core exec bt robot plan task automata ltl world ros2 util)
 set(RTAMP_PC_CORE_LIBS "")
 foreach(l IN LISTS core_order)
   if(TARGET rtamp_${l})

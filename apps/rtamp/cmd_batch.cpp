@@ -68,6 +68,7 @@ struct BatchArgs {
   std::string log_dir;
   bool mcap = false;
   double mcap_image_period = 1;
+  rtamp::episode::McapProfile mcap_profile = rtamp::episode::McapProfile::Json;
   bool scripted = false;
   bool no_randomize = false;
   bool quiet = false;
@@ -199,6 +200,7 @@ int run_batch(const BatchArgs& a) {
   opt.episode.world_settings.perception_cameras = a.perception_cameras;
   episode::perception_cameras(scenario, opt.episode.world_settings);  // refused once, not run as failed trials
   opt.episode.outputs.mcap_image_period = a.mcap_image_period;
+  opt.episode.outputs.mcap_profile = a.mcap_profile;
   opt.episode.loop.max_time = a.max_time;
   opt.episode.loop.planner.cost = a.cost;
   opt.episode.randomize_initial = !a.no_randomize;
@@ -407,6 +409,10 @@ rtamp::cli::Registrar reg{
                    "Also write each episode as MCAP into --log-dir, beside its log (the same name, .mcap; zstd; "
                    "docs/formats.md)");
       rtamp::cli::add_mcap_image_period(sub, a->mcap_image_period);
+      rtamp::cli::add_choice_with(
+          sub, "--mcap-profile", rtamp::cli::mcap_profile_choices(), "json",
+          [a](const std::string& s) { a->mcap_profile = rtamp::episode::parse_mcap_profile(s); },
+          "Profile of the --mcap files (docs/formats.md):");
       rtamp::cli::add_choice(sub, "--world", a->world, rtamp::cli::world_choices(), "World:");
       rtamp::cli::add_choice(sub, "--perception", a->perception, rtamp::cli::perception_choices(),
                              "How the robot perceives:");

@@ -21,6 +21,7 @@ namespace {
 struct ToMcapArgs {
   std::string log, out, scenario;
   rtamp::episode::McapCompression compression = rtamp::episode::McapCompression::Zstd;
+  rtamp::episode::McapProfile profile = rtamp::episode::McapProfile::Json;
   int chunk_kib = 1024;
 };
 
@@ -35,7 +36,7 @@ int run_to_mcap(const ToMcapArgs& a) {
   std::optional<rtamp::world::Scenario> scenario;
   if (!a.scenario.empty()) scenario = rtamp::world::load_scenario(a.scenario);
   const std::uint64_t n = rtamp::episode::log_to_mcap(a.log, a.out, a.compression, scenario ? &*scenario : nullptr,
-                                                         static_cast<std::size_t>(a.chunk_kib) * 1024);
+                                                         static_cast<std::size_t>(a.chunk_kib) * 1024, a.profile);
   std::cerr << a.out << ": " << n << " records\n";
   return 0;
 }
@@ -56,6 +57,10 @@ rtamp::cli::Registrar reg{
           *to, "--compression", rtamp::cli::mcap_compression_choices(), "zstd",
           [args](const std::string& s) { args->compression = rtamp::episode::parse_mcap_compression(s); },
           "Compression of the chunks:");
+      rtamp::cli::add_choice_with(
+          *to, "--mcap-profile", rtamp::cli::mcap_profile_choices(), "json",
+          [args](const std::string& s) { args->profile = rtamp::episode::parse_mcap_profile(s); },
+          "Profile of OUT (docs/formats.md):");
       rtamp::cli::add_integer(*to, "--chunk-kib", args->chunk_kib, 1, 1 << 20,
                               "Close a chunk when its uncompressed records reach this many KiB (default 1024)");
       to->add_option("--scenario", args->scenario,

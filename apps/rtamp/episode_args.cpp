@@ -68,6 +68,10 @@ void add_episode_options(CLI::App& app, EpisodeArgs& a, const std::string& log_h
       app, "--mcap-compression", mcap_compression_choices(), "zstd",
       [&o](const std::string& s) { o.outputs.mcap_compression = episode::parse_mcap_compression(s); },
       "Compression of the --mcap file's chunks:");
+  add_choice_with(
+      app, "--mcap-profile", mcap_profile_choices(), "json",
+      [&o](const std::string& s) { o.outputs.mcap_profile = episode::parse_mcap_profile(s); },
+      "Profile of the --mcap file (docs/formats.md):");
   add_mcap_image_period(app, o.outputs.mcap_image_period);
   app.add_option("--trees", o.outputs.trees, "Write the tree as BehaviorTree.CPP XML after each change into DIR");
 }

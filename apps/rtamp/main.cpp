@@ -18,6 +18,7 @@
 #include "rtamp/robot/ik_motion_cost.hpp"
 #include "rtamp/util/error.hpp"
 #include "rtamp/util/format.hpp"
+#include "rtamp/util/version.hpp"
 #include "rtamp/world/suggest.hpp"
 
 namespace rtamp::cli {
@@ -99,7 +100,7 @@ int main(int argc, char** argv) {
       "rtamp — reactive task and motion planning under linear temporal logic.\n"
       "Run 'rtamp COMMAND --help' for the options of a command."};
   app.require_subcommand(1);
-  app.set_version_flag("--version", std::string("rtamp 0.1.0"));
+  app.set_version_flag("--version", std::string("rtamp ") + rtamp::version());
   auto& cmds = commands();
   std::sort(cmds.begin(), cmds.end(), [](const Command& a, const Command& b) { return a.name < b.name; });
   std::vector<std::string> names;

@@ -257,6 +257,11 @@ void check_output_dir(const std::string& option, const std::string& dir) {
   if (::access(p.c_str(), W_OK | X_OK) != 0) fail(std::error_code(errno, std::generic_category()).message());
 }
 
+std::vector<Choice> mcap_profile_choices() {
+  return {{"json", "JSON messages with JSON Schemas, Foxglove's conventions (default)"},
+          {"ros2", "the MCAP ros2 profile: CDR messages, ros2msg schemas, ROS 2's topics (ros2 bag play)"}};
+}
+
 std::vector<Choice> mcap_compression_choices() {
   return {{"zstd", "Zstandard (default)"}, {"lz4", "LZ4 frames"}, {"none", "uncompressed chunks"}};
 }

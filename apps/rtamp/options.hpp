@@ -81,6 +81,8 @@ CLI::Option* add_choice_with(CLI::App& app, const std::string& name, const std::
 CLI::Option* add_choices(CLI::App& app, const std::string& name, std::vector<std::string>& target,
                          const std::vector<Choice>& choices, const std::string& description);
 
+// The MCAP profiles (episode/mcap_profile.hpp), for --mcap-profile.
+std::vector<Choice> mcap_profile_choices();
 // The MCAP compressions (mcap_writer.hpp), for --mcap-compression / --compression.
 std::vector<Choice> mcap_compression_choices();
 

@@ -652,6 +652,7 @@ void serve_cases(std::vector<Case>& t) {
   add({"--mcap-image-period", "-1"}, "--mcap-image-period:", ">= 0 or inf (no images)");
   add({"--mcap-image-period", "nan"}, "--mcap-image-period:", "");
   add({"--mcap-image-period", "1x"}, "--mcap-image-period:", "");
+  add({"--mcap", "sv.mcap", "--mcap-profile", "ros1"}, "--mcap-profile:", "unknown value 'ros1' (did you mean 'ros2'?)");
   add({"--world", "lego"}, "--world:", "lego");
   add({"--host", "localhost.invalid"}, "cannot listen on localhost.invalid:", "not an IP address");
   add({"--host", "203.0.113.7", "--port", "0"}, "cannot listen on 203.0.113.7:0:", "");
@@ -761,6 +762,13 @@ void option_cases(std::vector<Case>& t) {
                "is not a directory", {"ep2.jsonl"}});
   t.push_back({"options", with(run, {"--log", "ep3.jsonl", "--trees", a_file + "/below"}),
                "--trees: cannot write into", "is not a directory", {"ep3.jsonl"}});
+  // An MCAP profile that is not one, on every command that writes MCAP: nothing written.
+  t.push_back({"options", with(run, {"--mcap", "p.mcap", "--mcap-profile", "cdr"}), "--mcap-profile:",
+               "unknown value 'cdr'", {"p.mcap"}});
+  t.push_back({"options", {"batch", "3-block", "--world", "symbolic", "--log-dir", "pl", "--mcap", "--mcap-profile", "JSON"},
+               "--mcap-profile:", "unknown value 'JSON'", {"pl"}});
+  t.push_back({"options", {"log", "to-mcap", a_file, "pt.mcap", "--mcap-profile", "ros"}, "--mcap-profile:",
+               "unknown value 'ros'", {"pt.mcap"}});
   // A directory given where a file is read: said so, not a parser's "empty input".
   const std::string d = (dir / "a_dir").string();
   t.push_back({"options", {"plan", d}, d + ": cannot read scenario:", "it is a directory"});

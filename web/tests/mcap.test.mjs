@@ -88,6 +88,12 @@ async function check(file, logFile, compression, liveArm = false) {
   // Record by record.
   const records = streamRecords(bytes);
   assert.equal(records[0].type, 'Header');
+  assert.equal(records[0].profile, '');
+  assert.match(records[0].library, /^rtamp \d+\.\d+\.\d+$/, 'the library and its version');
+  const metadata = records.filter((r) => r.type === 'Metadata');
+  assert.equal(metadata.length, 1, 'one Metadata record');
+  assert.equal(metadata[0].name, 'rtamp');
+  assert.equal(`rtamp ${metadata[0].metadata.get('version')}`, records[0].library);
   assert.equal(records.at(-1).type, 'Footer');
   const schemas = new Map(), channels = new Map(), counts = new Map();
   const byTopic = new Map();

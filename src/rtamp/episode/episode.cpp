@@ -13,6 +13,9 @@
 #include "rtamp/episode/episode_mcap.hpp"
 #include "rtamp/episode/mcap_arm.hpp"
 #include "rtamp/episode/mcap_camera.hpp"
+#include "rtamp/episode/mcap_ros2.hpp"
+#include "rtamp/episode/mcap_ros2_camera.hpp"
+#include "rtamp/episode/mcap_ros2_frames.hpp"
 #include "rtamp/exec/episode_log.hpp"
 #include "rtamp/exec/perception_errors.hpp"
 #include "rtamp/exec/person_world.hpp"
@@ -65,6 +68,25 @@ void randomize_objects(world::Scenario& s, std::mt19937_64& rng) {
       return;
     }
   }
+}
+
+// Camera perception's frames into an MCAP file of either profile: one writer a
+// perceiving camera, each with its own channels and period (none for period inf).
+// Registered after the log's observer: a frame's `camera` record, then its image.
+template <typename Writer, typename Mcap>
+void film(SimWorld& world, Mcap& mcap, double period, std::vector<std::unique_ptr<Writer>>& store) {
+  sim::Perception& perception = world.session().perception();
+  if (!perception.camera() || !std::isfinite(period)) return;
+  std::vector<Writer*> writers;
+  for (const world::Camera& c : perception.camera()->cameras()) {
+    store.push_back(std::make_unique<Writer>(mcap, c.name, period));
+    writers.push_back(store.back().get());
+  }
+  perception.add_frame_observer([writers, sw = &world](const sim::CameraPerception& frame) {
+    const auto& cameras = frame.cameras();
+    for (std::size_t k = 0; k < cameras.size(); ++k)
+      if (cameras[k].name == frame.camera_name()) writers[k]->frame(sw->session().sim().time(), frame);
+  });
 }
 
 }  // namespace
@@ -127,7 +149,13 @@ Episode::Episode(const world::Scenario& input, const EpisodeOptions& opt, const 
     if (!out.video.empty() && sim_world_) files.output("--video", out.video);
   }
   if (!out.log.empty()) log_ = std::make_unique<exec::EpisodeLog>(out.log, out.log_option);
-  if (!out.mcap.empty()) {
+  if (!out.mcap.empty() && out.mcap_profile == McapProfile::Ros2) {
+    // The same in the ros2 profile; the scene from the world's frames, drawn from now on.
+    mcap_ros2_ = std::make_unique<McapRos2>(out.mcap, out.mcap_compression, &scenario_, 1 << 20, out.mcap_option);
+    mcap_ros2_frames_ = std::make_unique<McapRos2Frames>(scenario_, *world_, *mcap_ros2_);
+    if (!log_) log_ = std::make_unique<exec::EpisodeLog>();
+    log_->add_sink([m = mcap_ros2_.get()](const std::string& record) { m->add(record); });
+  } else if (!out.mcap.empty()) {
     // The MCAP file gets the log's records as they are written (a log without a file if none).
     mcap_ = std::make_unique<EpisodeMcap>(out.mcap, out.mcap_compression, &scenario_, 1 << 20, out.mcap_option);
     if (!log_) log_ = std::make_unique<exec::EpisodeLog>();
@@ -154,22 +182,10 @@ Episode::Episode(const world::Scenario& input, const EpisodeOptions& opt, const 
   if (mcap_ && sim_world_) {
     mcap_arm_ = std::make_unique<McapArm>(sim_world_->session().sim(), *mcap_);
     loop_->add_observer(*mcap_arm_);  // after the log: a tick's record, then the arm
-    sim::Perception& perception = sim_world_->session().perception();
-    if (perception.camera() && std::isfinite(out.mcap_image_period)) {
-      // After the log's observer: a frame's `camera` record, then its image.
-      // One writer a perceiving camera, each with its own channels and period.
-      std::vector<McapCamera*> writers;
-      for (const world::Camera& c : perception.camera()->cameras()) {
-        mcap_cameras_.push_back(std::make_unique<McapCamera>(*mcap_, c.name, out.mcap_image_period));
-        writers.push_back(mcap_cameras_.back().get());
-      }
-      perception.add_frame_observer([writers, sw = sim_world_](const sim::CameraPerception& frame) {
-        const auto& cameras = frame.cameras();
-        for (std::size_t k = 0; k < cameras.size(); ++k)
-          if (cameras[k].name == frame.camera_name()) writers[k]->frame(sw->session().sim().time(), frame);
-      });
-    }
+    film(*sim_world_, *mcap_, out.mcap_image_period, mcap_cameras_);
   }
+  if (mcap_ros2_ && sim_world_) film(*sim_world_, *mcap_ros2_, out.mcap_image_period, mcap_ros2_cameras_);
+  if (mcap_ros2_frames_) loop_->add_observer(*mcap_ros2_frames_);  // after the log: a tick's record, then the scene
   if (timeline_) loop_->add_observer(*timeline_);
   if (trees_) loop_->add_observer(*trees_);
   if (video_) loop_->add_observer(*video_);
@@ -188,6 +204,7 @@ EpisodeMetrics Episode::run() {
   };
   close(log_);
   close(mcap_);
+  close(mcap_ros2_);
   close(trees_);
   close(video_);
   if (failed) std::rethrow_exception(failed);

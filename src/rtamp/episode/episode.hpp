@@ -31,6 +31,7 @@
 #include "rtamp/exec/reactive_loop.hpp"
 #include "rtamp/exec/timeline.hpp"
 #include "rtamp/exec/tree_dump.hpp"
+#include "rtamp/episode/mcap_profile.hpp"
 #include "rtamp/episode/mcap_writer.hpp"
 #include "rtamp/episode/world_registry.hpp"
 #include "rtamp/world/person.hpp"
@@ -43,6 +44,8 @@ struct EpisodeOutputs {
   std::string log;    // JSON Lines episode log (docs/exec.md)
   std::string mcap;   // the same records as MCAP, with Foxglove channels (episode_mcap.hpp)
   McapCompression mcap_compression = McapCompression::Zstd;
+  // JSON channels (episode_mcap.hpp) or the ROS 2 profile: CDR on ROS 2's topics (mcap_ros2.hpp).
+  McapProfile mcap_profile = McapProfile::Json;
   // Camera perception: world seconds between the images written to the MCAP file
   // (mcap_camera.hpp); 0: every frame; inf: none. >= 0 (rtamp::Error otherwise).
   double mcap_image_period = 1;
@@ -80,6 +83,9 @@ EpisodeMetrics run_episode(const world::Scenario& scenario, const EpisodeOptions
 class EpisodeMcap;
 class McapArm;
 class McapCamera;
+class McapRos2;
+class McapRos2Frames;
+class McapRos2Camera;
 class SimWorld;
 class VideoRecorder;
 
@@ -112,6 +118,9 @@ class Episode {
  private:
   world::Scenario scenario_;
   std::unique_ptr<EpisodeMcap> mcap_;  // fed by log_'s sink
+  std::unique_ptr<McapRos2> mcap_ros2_;  // the same, in the ros2 profile (--mcap-profile ros2)
+  std::unique_ptr<McapRos2Frames> mcap_ros2_frames_;  // the world's frames into mcap_ros2_
+  std::vector<std::unique_ptr<McapRos2Camera>> mcap_ros2_cameras_;  // camera images into mcap_ros2_, per camera
   std::unique_ptr<exec::EpisodeLog> log_;
   std::unique_ptr<McapArm> mcap_arm_;  // the MuJoCo arm's joint angles into mcap_
   std::vector<std::unique_ptr<McapCamera>> mcap_cameras_;  // camera perception's images into mcap_, per camera

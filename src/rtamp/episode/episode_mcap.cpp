@@ -13,11 +13,12 @@
 
 #include <nlohmann/json.hpp>
 
-#include "rtamp/episode/log_check.hpp"
+#include "rtamp/episode/detail/log_scene.hpp"
 #include "rtamp/exec/thing_layout.hpp"
 #include "rtamp/robot/ur5_kinematics.hpp"
 #include "rtamp/util/error.hpp"
 #include "rtamp/util/json_text.hpp"
+#include "rtamp/util/version.hpp"
 #include "rtamp/world/builtin_scenarios.hpp"
 #include "rtamp/world/scenario_io.hpp"
 
@@ -313,12 +314,8 @@ std::string join(const json& a) {
 
 }  // namespace
 
-struct EpisodeMcap::Impl {
+struct EpisodeMcap::Impl : detail::LogScene {  // the scenario, layout, arm and things' kinds
   McapWriter out;
-  std::optional<world::Scenario> scenario;
-  std::optional<exec::ThingLayout> layout;
-  std::optional<robot::Ur5Kinematics> arm;
-  std::map<std::string, std::pair<std::string, bool>> kinds;  // thing -> class, container
   std::set<std::string> shown;                                // things on the scene now
   bool frames = false;                                        // the log has `frame` records
   bool live_arm = false;  // arm() was called: the arm comes from it, not from `frame` records
@@ -333,7 +330,7 @@ struct EpisodeMcap::Impl {
 
   Impl(const std::string& path, McapCompression c, const world::Scenario* s, std::size_t chunk_bytes,
        const std::string& what)
-      : out(path, c, chunk_bytes, what) {
+      : out(path, c, chunk_bytes, what, "", std::string("rtamp ") + version()) {
     const auto json_schema = [&](const std::string& name, const std::string& data) {
       return out.add_schema(name, "jsonschema", data);
     };
@@ -353,16 +350,6 @@ struct EpisodeMcap::Impl {
     joints = out.add_channel("/joint_states", json_schema("foxglove.JointStates", joint_states_schema()), "json");
     tf = out.add_channel("/tf", json_schema("foxglove.FrameTransforms", transforms_schema()), "json");
     if (s) use(*s);
-  }
-
-  void use(const world::Scenario& s) {
-    scenario = s;
-    layout.emplace(s);
-    robot::Ur5Kinematics::Config config;
-    config.base = robot::Ur5Kinematics::base_pose(s.robot);
-    arm.emplace(config);
-    for (const auto& o : s.objects) kinds[o.name] = {o.cls, false};
-    for (const auto& c : s.containers) kinds[c.name] = {c.cls, true};
   }
 
   void put(std::uint16_t channel, std::uint64_t ns, const json& j) {
@@ -437,36 +424,13 @@ struct EpisodeMcap::Impl {
 
   // A placement record ({thing: location}) laid out in its locations.
   void draw_placement(std::uint64_t ns, double t, const json& placement) {
-    if (frames || !layout || !placement.is_object()) return;
-    world::Placement p;
-    for (const auto& [name, where] : placement.items()) {
-      const auto k = kinds.find(name);
-      const bool container = k != kinds.end() && k->second.second;
-      p.set(name, where.is_string() ? where.get<std::string>() : "none", k != kinds.end() ? k->second.first : "block",
-            container);
-    }
-    world::Vec3 hand{0, 0, 0};
-    if (scenario) hand = {scenario->robot.base[0], scenario->robot.base[1], scenario->robot.base[2] + 0.5};
-    draw(ns, layout->frame(t, p, hand).things);
+    if (frames) return;
+    if (const auto f = laid_out(t, placement)) draw(ns, f->things);
   }
 
   void draw_frame(std::uint64_t ns, const json& j) {
     frames = true;
-    std::vector<exec::Frame::Thing> things;
-    for (const auto& x : j.value("things", json::array())) {
-      exec::Frame::Thing t;
-      t.name = x.value("name", "");
-      t.container = x.value("kind", "") == "container";
-      const auto pos = x.value("pos", std::vector<double>{0, 0, 0});
-      const auto q = x.value("quat", std::vector<double>{1, 0, 0, 0});
-      const auto size = x.value("size", std::vector<double>{0, 0, 0});
-      if (pos.size() == 3) t.pos = {pos[0], pos[1], pos[2]};
-      if (q.size() == 4) t.quat = {q[0], q[1], q[2], q[3]};
-      if (size.size() == 3) t.size = {size[0], size[1], size[2]};
-      t.at = x.value("at", "");
-      things.push_back(std::move(t));
-    }
-    draw(ns, things);
+    draw(ns, detail::frame_of_record(0, j).things);
     const auto q = j.find("q");
     if (live_arm || q == j.end() || !q->is_array() || q->size() != 6) return;
     std::array<double, 6> angles{};
@@ -582,10 +546,8 @@ struct EpisodeMcap::Impl {
     }
     out.write(log, ns, ns, text);
     if (ev == "episode") {
-      if (!scenario) {
-        const std::string name = text_of(j, "scenario");
-        if (world::builtin_scenario_text(name)) use(world::load_scenario(name));
-      }
+      use_builtin(text_of(j, "scenario"));
+      out.add_metadata("rtamp", detail::episode_metadata(j));
       logline(timeline, ns, 2, ev,
               "episode " + text_of(j, "scenario") + ": " + text_of(j, "task") + " (world " + text_of(j, "world") +
                   ", seed " + text_of(j, "seed") + ")");
@@ -699,13 +661,7 @@ void EpisodeMcap::add(std::string_view record) {
     ++records_;
     return;
   }
-  json j = json::parse(record, nullptr, false);
-  if (j.is_discarded() || !j.is_object()) throw Error("not a JSON object");
-  const auto ev = j.find("ev");
-  const auto t = j.find("t");
-  if (ev == j.end() || !ev->is_string()) throw Error("a record without \"ev\"");
-  if (t == j.end() || !t->is_number()) throw Error("a record without a time \"t\"");
-  impl_->add(j, record);
+  impl_->add(detail::parse_record(record), record);
   ++records_;
 }
 
@@ -729,29 +685,5 @@ void EpisodeMcap::write(std::uint16_t channel, double t, std::string_view messag
 void EpisodeMcap::close() { impl_->out.close(); }
 
 void EpisodeMcap::discard() noexcept { impl_->out.discard(); }
-
-std::uint64_t log_to_mcap(const std::string& log_path, const std::string& mcap_path, McapCompression compression,
-                          const world::Scenario* scenario, std::size_t chunk_bytes) {
-  // The whole log is checked first (the check of `serve --replay`), so a log
-  // that is refused leaves the output as it was: not created, not truncated.
-  read_episode_log(log_path, scenario);
-  EpisodeMcap out(mcap_path, compression, scenario, chunk_bytes, "OUT");
-  try {
-    read_episode_log(log_path, scenario, [&](const nlohmann::json&, const std::string& text, int line) {
-      try {
-        out.add(text);
-      } catch (const OutputError&) {
-        throw;
-      } catch (const Error& e) {
-        throw Error(e.message(), SourceLocation{log_path, line, 0});
-      }
-    });
-    out.close();
-  } catch (...) {
-    out.discard();  // no half-converted file (a FIFO or a device is never removed)
-    throw;
-  }
-  return out.records();
-}
 
 }  // namespace rtamp::episode

@@ -17,7 +17,9 @@
 //   /interventions  foxglove.Log           interventions (refused ones as warnings)
 //   /replans        foxglove.Log           replan requests
 // and the channels of observers that write their own (add_channel, write: a
-// camera's images, mcap_camera.hpp). Message times are the records' world times (ns). Used live, as a sink of the
+// camera's images, mcap_camera.hpp). Message times are the records' world times (ns).
+// The Header's library is "rtamp VERSION"; the `episode` record also gives a Metadata
+// record "rtamp" (version, scenario, task, world, seed, algorithm). Used live, as a sink of the
 // episode log (Episode, `--mcap`), and by `rtamp log to-mcap` on a finished log.
 #pragma once
 
@@ -27,6 +29,7 @@
 #include <string>
 #include <string_view>
 
+#include "rtamp/episode/mcap_profile.hpp"
 #include "rtamp/episode/mcap_writer.hpp"
 #include "rtamp/world/scenario.hpp"
 
@@ -67,12 +70,13 @@ class EpisodeMcap {
   std::uint64_t records_ = 0;
 };
 
-// Converts the JSON Lines log at `log_path` to `mcap_path`. The log is
-// checked whole first (log_check.hpp, the check of `serve --replay`):
-// rtamp::Error "LOG:LINE: what" for a log that breaks it, before the output
-// is opened. A write that fails: rtamp::OutputError, and no output left (a
-// regular file is removed). Returns the number of records.
+// Converts the JSON Lines log at `log_path` to `mcap_path` in `profile`
+// (log_to_mcap.cpp). The log is checked whole first (log_check.hpp, the check of
+// `serve --replay`): rtamp::Error "LOG:LINE: what" for a log that breaks it,
+// before the output is opened. A write that fails: rtamp::OutputError, and no
+// output left (a regular file is removed). Returns the number of records.
 std::uint64_t log_to_mcap(const std::string& log_path, const std::string& mcap_path, McapCompression compression,
-                          const world::Scenario* scenario = nullptr, std::size_t chunk_bytes = 1 << 20);
+                          const world::Scenario* scenario = nullptr, std::size_t chunk_bytes = 1 << 20,
+                          McapProfile profile = McapProfile::Json);
 
 }  // namespace rtamp::episode

@@ -25,6 +25,8 @@ enum Op : std::uint8_t {
   MessageIndex = 0x07,
   ChunkIndexOp = 0x08,
   Statistics = 0x0B,
+  MetadataOp = 0x0C,
+  MetadataIndexOp = 0x0D,
   SummaryOffset = 0x0E,
   DataEnd = 0x0F,
 };
@@ -72,14 +74,25 @@ std::string schema_record(const std::uint16_t id, const std::string& name, const
   return r;
 }
 
+// Map<string, string>: its byte length, then key and value of each pair (in key order).
+void string_map(std::string& b, const std::map<std::string, std::string>& m) {
+  std::string pairs;
+  for (const auto& [k, v] : m) {
+    str(pairs, k);
+    str(pairs, v);
+  }
+  le<std::uint32_t>(b, static_cast<std::uint32_t>(pairs.size()));
+  b += pairs;
+}
+
 std::string channel_record(std::uint16_t id, std::uint16_t schema, const std::string& topic,
-                           const std::string& encoding) {
+                           const std::string& encoding, const std::map<std::string, std::string>& metadata) {
   std::string c;
   le<std::uint16_t>(c, id);
   le<std::uint16_t>(c, schema);
   str(c, topic);
   str(c, encoding);
-  le<std::uint32_t>(c, 0);  // metadata: an empty map
+  string_map(c, metadata);
   std::string r;
   record(r, ChannelOp, c);
   return r;
@@ -95,12 +108,12 @@ McapCompression parse_mcap_compression(const std::string& text) {
 }
 
 McapWriter::McapWriter(const std::string& path, McapCompression compression, std::size_t chunk_bytes,
-                       const std::string& what)
+                       const std::string& what, const std::string& profile, const std::string& library)
     : out_(path, what), path_(path), compression_(compression), chunk_bytes_(chunk_bytes) {
   std::string b(kMagic, kMagicSize);
   std::string h;
-  str(h, "");  // profile: none of the well-known ones (JSON messages with JSON schemas)
-  str(h, "rtamp");
+  str(h, profile);  // "": none of the well-known ones (JSON messages with JSON schemas)
+  str(h, library);
   record(b, Header, h);
   emit_data(b);
 }
@@ -136,11 +149,23 @@ std::uint16_t McapWriter::add_schema(const std::string& name, const std::string&
 }
 
 std::uint16_t McapWriter::add_channel(const std::string& topic, std::uint16_t schema_id,
-                                      const std::string& message_encoding) {
+                                      const std::string& message_encoding,
+                                      const std::map<std::string, std::string>& metadata) {
   const auto id = static_cast<std::uint16_t>(channels_.size() + 1);
-  channels_.push_back({id, schema_id, topic, message_encoding});
-  chunk_ += channel_record(id, schema_id, topic, message_encoding);
+  channels_.push_back({id, schema_id, topic, message_encoding, metadata});
+  chunk_ += channel_record(id, schema_id, topic, message_encoding, metadata);
   return id;
+}
+
+void McapWriter::add_metadata(const std::string& name, const std::map<std::string, std::string>& values) {
+  flush_chunk();  // a Metadata record stands between chunks
+  std::string c;
+  str(c, name);
+  string_map(c, values);
+  std::string r;
+  record(r, MetadataOp, c);
+  metadata_indexes_.push_back({offset_, r.size(), name});
+  emit_data(r);
 }
 
 void McapWriter::write(std::uint16_t channel, std::uint64_t log_time, std::uint64_t publish_time,
@@ -262,7 +287,7 @@ void McapWriter::write_summary() {
   for (const auto& x : schemas_) g += schema_record(x.id, x.name, x.encoding, x.data);
   group(SchemaOp, g);
   g.clear();
-  for (const auto& x : channels_) g += channel_record(x.id, x.schema, x.topic, x.encoding);
+  for (const auto& x : channels_) g += channel_record(x.id, x.schema, x.topic, x.encoding, x.metadata);
   group(ChannelOp, g);
   g.clear();
   {
@@ -271,7 +296,7 @@ void McapWriter::write_summary() {
     le<std::uint16_t>(c, static_cast<std::uint16_t>(schemas_.size()));
     le<std::uint32_t>(c, static_cast<std::uint32_t>(channels_.size()));
     le<std::uint32_t>(c, 0);  // attachments
-    le<std::uint32_t>(c, 0);  // metadata
+    le<std::uint32_t>(c, static_cast<std::uint32_t>(metadata_indexes_.size()));
     le<std::uint32_t>(c, static_cast<std::uint32_t>(chunk_indexes_.size()));
     le<std::uint64_t>(c, first_time_);
     le<std::uint64_t>(c, last_time_);
@@ -283,6 +308,15 @@ void McapWriter::write_summary() {
     record(g, Statistics, c);
   }
   group(Statistics, g);
+  g.clear();
+  for (const auto& m : metadata_indexes_) {
+    std::string c;
+    le<std::uint64_t>(c, m.offset);
+    le<std::uint64_t>(c, m.length);
+    str(c, m.name);
+    record(g, MetadataIndexOp, c);
+  }
+  group(MetadataIndexOp, g);
   g.clear();
   for (const auto& ci : chunk_indexes_) {
     std::string c;

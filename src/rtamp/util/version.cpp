@@ -1,0 +1,7 @@
+#include "rtamp/util/version.hpp"
+
+namespace rtamp {
+
+const char* version() { return RTAMP_VERSION; }
+
+}  // namespace rtamp
