@@ -9,7 +9,8 @@
 // perception (built on this thread, rendered on the loop's) sends its camera images,
 // at most 5 a second, the latest to a page that joins late; a page that joins
 // an episode nobody watched gets the present (hello's time and first frame, the
-// tree's statuses).
+// tree's statuses); the tree's statuses are final at the end, logged, and
+// replayed at the time shown.
 #include <gtest/gtest.h>
 
 #include <atomic>
@@ -666,7 +667,8 @@ TEST(ServeServer, ReplayReachesTheLoggedEndStateAndSeeks) {
     hello = c.read_until([](const json& m) { return m["type"] == "hello"; });
     ASSERT_TRUE(hello);
     std::size_t expect = 0;
-    for (const auto& rec : log) expect += rec["t"].get<double>() <= mid + 1e-9 && rec["ev"] != "frame";
+    for (const auto& rec : log)
+      expect += rec["t"].get<double>() <= mid + 1e-9 && rec["ev"] != "frame" && rec["ev"] != "statuses";
     EXPECT_EQ((*hello)["history"].size(), expect);
     for (const auto& rec : (*hello)["history"]) EXPECT_LE(rec["t"].get<double>(), mid + 1e-9);
     // Play to the end: every record arrives, the last frame shows the end placement.
@@ -680,7 +682,7 @@ TEST(ServeServer, ReplayReachesTheLoggedEndStateAndSeeks) {
       if (m["type"] == "log") ++records;
     }
     std::size_t non_frame = 0;
-    for (const auto& rec : log) non_frame += rec["ev"] != "frame";
+    for (const auto& rec : log) non_frame += rec["ev"] != "frame" && rec["ev"] != "statuses";
     EXPECT_EQ(records, non_frame);
     ASSERT_FALSE(last_frame.is_null());
     std::map<std::string, std::string> at;
@@ -703,7 +705,7 @@ std::string tree_shape(const json& tree) {
 
 // A replay sends the behavior tree the live episode had after each change —
 // rebuilt from the log's plan and tree records (node names, kinds, categories,
-// parents; statuses are not logged) — and a hello after a seek holds the tree at
+// parents) — and a hello after a seek holds the tree at
 // that time; a thing added mid-episode has the class its intervention record
 // names (here a container of class "crate", not the default "tray"), in a log
 // with frame records and in one without. The handover scenario replans when the
@@ -803,6 +805,116 @@ TEST(ServeServer, ReplaySendsTheLoggedTreesAndAddedThingsClasses) {
   fs::remove_all(dir);
 }
 
+
+// The node statuses of a served episode: its log holds every status string the
+// pages were sent, in order (`statuses` records, after each tick that changed
+// some and each tree change); the end shows the tree's final statuses — those of
+// the end record — not the last running ones: a finished tree keeps its
+// statuses (the root SUCCESS), one cut by the time limit while a move runs is
+// halted (nothing RUNNING); and a replay of the log, seeked back and forth,
+// shows at each time the statuses the log has then.
+TEST(ServeServer, StatusesAreFinalAtTheEndAndReplayedAtTheTimeShown) {
+  const world::Scenario s = world::load_scenario("3-block-tray");
+  const fs::path dir = temp_dir("statuses");
+  for (const double max_time : {300.0, 3.0}) {
+    SCOPED_TRACE(max_time);
+    const fs::path log_path = dir / "served.jsonl";
+    std::vector<std::string> sent;  // the statuses the page was sent, in order
+    {
+      LiveOptions o;
+      o.episode = symbolic_options(log_path.string());
+      o.episode.loop.max_time = max_time;
+      o.speed = 0;
+      o.paused = true;
+      Served sv(s, o);
+      WsClient c(sv.port());
+      const auto hello = c.read();
+      ASSERT_TRUE(hello);
+      ASSERT_TRUE((*hello)["tree"].is_object()) << "the first plan is made before resuming";
+      sent.push_back(shown_statuses((*hello)["tree"]));
+      c.send(json{{"type", "control"}, {"id", 1}, {"action", "resume"}});
+      ASSERT_TRUE(c.read_until([&sent](const json& m) {
+        if (m["type"] == "tree") sent.push_back(shown_statuses(m));
+        if (m["type"] == "status") sent.push_back(m["s"]);
+        return m["type"] == "state" && m["ended"] == true;
+      }));
+      EXPECT_EQ(sv.episode.wait().success, max_time > 100);
+    }
+    const auto log = read_log(log_path);
+    std::vector<std::pair<double, std::string>> logged;
+    for (const auto& r : log)
+      if (r["ev"] == "statuses") logged.emplace_back(r["t"].get<double>(), r["s"].get<std::string>());
+    ASSERT_FALSE(logged.empty());
+    const std::string final = log.back()["statuses"];
+    // What the page last showed is the end's statuses.
+    EXPECT_EQ(sent.back(), final);
+    EXPECT_EQ(final.find('R'), std::string::npos) << final;
+    if (max_time > 100) {
+      EXPECT_EQ(final.front(), 'S') << "the finished tree keeps its statuses";
+    } else {
+      EXPECT_EQ(final.find_first_not_of('I'), std::string::npos) << "the running tree was halted: " << final;
+      EXPECT_NE(logged.back().second.find('R'), std::string::npos) << "a move ran when the time was up";
+    }
+    // The log's statuses are the ones sent (the page's first one came with hello's tree).
+    std::vector<std::string> from_log;
+    for (const auto& [t, st] : logged)
+      if (from_log.empty() || from_log.back() != st) from_log.push_back(st);
+    if (from_log.back() != final) from_log.push_back(final);
+    std::vector<std::string> shown;
+    for (const auto& st : sent)
+      if (shown.empty() || shown.back() != st) shown.push_back(st);
+    EXPECT_EQ(shown, from_log);
+
+    // The replay, seeked to times back and forth: hello's tree has the log's statuses then.
+    ReplayOptions ro;
+    ro.speed = 0;
+    ro.paused = true;
+    Replay replay(s, log_path.string(), ro);
+    Server server({"127.0.0.1", 0, ""}, replay);
+    server.start();
+    replay.start();
+    WsClient c(server.port());
+    ASSERT_TRUE(c.read());
+    const auto at = [&](double t) {
+      std::string st;
+      for (const auto& [tt, x] : logged)
+        if (tt <= t + 1e-9) st = x;
+      return t >= log.back()["t"].get<double>() ? final : st;
+    };
+    std::vector<double> times;
+    for (std::size_t i = logged.size(); i-- > 0;) times.push_back(logged[i].first + 1e-3);  // backwards
+    times.push_back(log.back()["t"].get<double>());
+    times.push_back(logged[logged.size() / 2].first);
+    int id = 2;
+    int with_running = 0;
+    for (const double t : times) {
+      c.send(json{{"type", "control"}, {"id", id++}, {"action", "seek"}, {"value", t}});
+      const auto hello = c.read_until([](const json& m) { return m["type"] == "hello"; });
+      ASSERT_TRUE(hello);
+      ASSERT_TRUE((*hello)["tree"].is_object()) << t;
+      EXPECT_EQ(shown_statuses((*hello)["tree"]), at(t)) << "at t = " << t;
+      with_running += at(t).find('R') != std::string::npos;
+    }
+    EXPECT_GT(with_running, 0) << "some time shown has a running node";
+    // Played from the start: the status messages are the log's, in order.
+    c.send(json{{"type", "control"}, {"id", id++}, {"action", "seek"}, {"value", 0}});
+    ASSERT_TRUE(c.read_until([](const json& m) { return m["type"] == "hello"; }));
+    const std::size_t from = c.seen.size();
+    c.send(json{{"type", "control"}, {"id", id++}, {"action", "resume"}});
+    ASSERT_TRUE(c.read_until([](const json& m) { return m["type"] == "state" && m["ended"] == true; }));
+    std::vector<std::string> replayed;
+    for (std::size_t i = from; i < c.seen.size(); ++i)
+      if (c.seen[i]["type"] == "status" && (replayed.empty() || replayed.back() != c.seen[i]["s"]))
+        replayed.push_back(c.seen[i]["s"]);
+    std::vector<std::string> expected;
+    for (const auto& [t, st] : logged)
+      if (expected.empty() || expected.back() != st) expected.push_back(st);
+    if (expected.back() != final) expected.push_back(final);
+    EXPECT_EQ(replayed, expected);
+    replay.stop();
+  }
+  fs::remove_all(dir);
+}
 
 // Server::drain, what `rtamp serve --exit-at-end` does before it stops: a page
 // attached from the start has been sent every record of the log, the end
