@@ -209,14 +209,14 @@ const cases = {
       assert.equal(await page.textContent('#task'), h.task);
       assert.equal(await page.locator('.ba-state').count(), h.automaton.states.length);
       assert.equal(await page.locator('#palette .class-button').count(), h.scene.classes.length);
-      await waitFor(() => page.locator('.bt-node').count(), 'the behavior tree panel');
+      await waitFor(() => page.locator('.bt-box').count(), 'the behavior tree panel');
       const tree = [...ws.received].reverse().find((m) => m.type === 'tree') || h.tree;
-      assert.equal(await page.locator('.bt-node').count(), tree.nodes.length);
+      assert.equal(await page.locator('.bt-box').count(), tree.nodes.length);
       await waitFor(() => page.locator('.plan-step').count(), 'the plan panel');
       const plan = logRecords(ws).filter((r) => r.ev === 'plan').at(-1);
       assert.equal(await page.locator('.plan-step').count(), plan.actions.length);
       const css = await (await fetch(new URL('assets/style.css', page.url()))).text();
-      assert.match(css, /\.bt-node/);
+      assert.match(css, /\.bt-box/);
     });
   },
 

@@ -38,6 +38,8 @@ export class TreePanel {
     this.userMovedAt = -Infinity;
     this.followTimer = null;
     this.followed = -1; // the node last kept in view
+    this.buildMs = 0; // what the last tree's layout and drawing took (ms), and the last status change
+    this.statusMs = 0;
 
     const bar = document.createElement('div');
     bar.className = 'bt-bar';
@@ -80,6 +82,7 @@ export class TreePanel {
     }
     this.empty.hidden = true;
     const nodes = tree.nodes;
+    const t0 = performance.now();
     this.layout = layoutTree(nodes, boxWidth);
     const { boxes } = this.layout;
     const edgeLayer = el('g', { class: 'bt-edges' });
@@ -113,6 +116,7 @@ export class TreePanel {
       this.boxes[n.id] = g;
     }
     this.g.append(edgeLayer, nodeLayer);
+    this.buildMs = performance.now() - t0;
     this.info.textContent = `${nodes.length} nodes`;
     // A new tree starts at its root (top left), unless the person is looking elsewhere.
     if (!this.userMovedRecently()) this.setView(0, 0, this.view.k);
@@ -121,6 +125,7 @@ export class TreePanel {
 
   setStatus(s) {
     if (!s || s.length !== this.boxes.length) return;
+    const t0 = performance.now();
     const before = this.shown;
     for (let i = 0; i < s.length; i++) {
       if (s[i] === before[i]) continue;
@@ -130,6 +135,7 @@ export class TreePanel {
     }
     this.shown = s;
     this.follow(false);
+    this.statusMs = performance.now() - t0;
   }
 
   // The deepest running node: the last R in pre-order (-1: none runs).
@@ -156,7 +162,10 @@ export class TreePanel {
     const topPx = b.y * k + y;
     const inside = left >= 0 && topPx >= 0 && left + b.w * k <= W && topPx + b.h * k <= H;
     if (inside && !force) return;
-    this.setView(W / 2 - (b.x + b.w / 2) * k, H / 2 - (b.y + b.h / 2) * k, k);
+    // Vertically centred; horizontally as far right as shows its ancestors to its left.
+    const margin = 8;
+    const nx = Math.min(margin, W - margin - (b.x + b.w) * k);
+    this.setView(Math.max(nx, margin - b.x * k), H / 2 - (b.y + b.h / 2) * k, k);
   }
 
   userMovedRecently() {
