@@ -274,6 +274,37 @@ TEST(ReactiveLoop, StopEndsTheEpisodeWithCompleteMetrics) {
   EXPECT_EQ(end.ends, 1);
 }
 
+// At the end a finished tree keeps its statuses (the root SUCCESS: what a page
+// shows last), and a tree still running when the time is up is halted: the move
+// stops, every node is INVALID, the world is not left busy with it.
+TEST(ReactiveLoop, TheEndHaltsOnlyARunningTree) {
+  const world::Scenario s = scene("F G all_in_r2", 3);
+  {
+    SymbolicWorld w(s);
+    ReactiveLoop loop(w, s, inline_options());
+    ASSERT_TRUE(loop.run().success);
+    EXPECT_EQ(loop.tree().tree().status(), bt::Status::Success);
+  }
+  SymbolicWorld w(s);
+  LoopOptions o = inline_options();
+  o.max_time = 1.0;  // within the first move
+  ReactiveLoop loop(w, s, o);
+  Moves moves;
+  struct Halted : EpisodeObserver {
+    int halted = 0;
+    void on_action(double, const char* what, const std::string&, const std::string&) override {
+      halted += std::string(what) == "halted";
+    }
+  } halted;
+  loop.add_observer(moves);
+  loop.add_observer(halted);
+  EXPECT_FALSE(loop.run().success);
+  EXPECT_EQ(loop.metrics().end, EndReason::TimeLimit);
+  ASSERT_EQ(moves.started.size(), 1u);
+  EXPECT_EQ(halted.halted, 1);
+  EXPECT_EQ(loop.tree().tree().status(), bt::Status::Invalid);
+}
+
 // A thing put outside every location, then taken away, is forgotten: the
 // episode does not wait for it (it used to wait until the time limit).
 TEST(ReactiveLoop, AThingOutsideThatIsRemovedIsForgotten) {

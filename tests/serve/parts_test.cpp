@@ -381,11 +381,11 @@ TEST(ServeHub, HelloNamesTheTaskInForce) {
   hub.join(c);
   EXPECT_EQ(c->got.at(0)["task"], "F d");
   // A seek: the history up to the time shown decides.
-  hub.reset({episode, applied}, "", "", {});
+  hub.reset({episode, applied}, "", "", "", {});
   EXPECT_EQ(task_of(), "F b");
   EXPECT_EQ(c->got.back()["type"], "hello");
   EXPECT_EQ(c->got.back()["task"], "F b");
-  hub.reset({}, "", "", {});
+  hub.reset({}, "", "", "", {});
   EXPECT_EQ(task_of(), "F a");
   EXPECT_EQ(automaton_of(), json::parse(R"({"states":[],"edges":[]})"));
 }

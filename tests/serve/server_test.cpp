@@ -9,7 +9,8 @@
 // perception (built on this thread, rendered on the loop's) sends its camera images,
 // at most 5 a second, the latest to a page that joins late; a page that joins
 // an episode nobody watched gets the present (hello's time and first frame, the
-// tree's statuses).
+// tree's statuses); the tree's statuses are final at the end, logged, and
+// replayed at the time shown.
 #include <gtest/gtest.h>
 
 #include <atomic>
@@ -666,7 +667,8 @@ TEST(ServeServer, ReplayReachesTheLoggedEndStateAndSeeks) {
     hello = c.read_until([](const json& m) { return m["type"] == "hello"; });
     ASSERT_TRUE(hello);
     std::size_t expect = 0;
-    for (const auto& rec : log) expect += rec["t"].get<double>() <= mid + 1e-9 && rec["ev"] != "frame";
+    for (const auto& rec : log)
+      expect += rec["t"].get<double>() <= mid + 1e-9 && rec["ev"] != "frame" && rec["ev"] != "statuses";
     EXPECT_EQ((*hello)["history"].size(), expect);
     for (const auto& rec : (*hello)["history"]) EXPECT_LE(rec["t"].get<double>(), mid + 1e-9);
     // Play to the end: every record arrives, the last frame shows the end placement.
@@ -680,7 +682,7 @@ TEST(ServeServer, ReplayReachesTheLoggedEndStateAndSeeks) {
       if (m["type"] == "log") ++records;
     }
     std::size_t non_frame = 0;
-    for (const auto& rec : log) non_frame += rec["ev"] != "frame";
+    for (const auto& rec : log) non_frame += rec["ev"] != "frame" && rec["ev"] != "statuses";
     EXPECT_EQ(records, non_frame);
     ASSERT_FALSE(last_frame.is_null());
     std::map<std::string, std::string> at;
@@ -703,7 +705,7 @@ std::string tree_shape(const json& tree) {
 
 // A replay sends the behavior tree the live episode had after each change —
 // rebuilt from the log's plan and tree records (node names, kinds, categories,
-// parents; statuses are not logged) — and a hello after a seek holds the tree at
+// parents) — and a hello after a seek holds the tree at
 // that time; a thing added mid-episode has the class its intervention record
 // names (here a container of class "crate", not the default "tray"), in a log
 // with frame records and in one without. The handover scenario replans when the
@@ -804,6 +806,129 @@ TEST(ServeServer, ReplaySendsTheLoggedTreesAndAddedThingsClasses) {
 }
 
 
+// The node statuses of a served episode: its log holds every status string the
+// pages were sent, in order (`statuses` records, after each tick that changed
+// some and each tree change); the end shows the tree's final statuses — those of
+// the end record — not the last running ones: a finished tree keeps its
+// statuses (the root SUCCESS), one cut by the time limit while a move runs is
+// halted (nothing RUNNING); and a replay of the log, seeked back and forth,
+// shows at each time the statuses the log has then.
+TEST(ServeServer, StatusesAreFinalAtTheEndAndReplayedAtTheTimeShown) {
+  const world::Scenario s = world::load_scenario("3-block-tray");
+  const fs::path dir = temp_dir("statuses");
+  for (const double max_time : {300.0, 3.0}) {
+    SCOPED_TRACE(max_time);
+    const fs::path log_path = dir / "served.jsonl";
+    std::vector<std::string> sent;  // the statuses the page was sent, in order
+    {
+      LiveOptions o;
+      o.episode = symbolic_options(log_path.string());
+      o.episode.loop.max_time = max_time;
+      o.speed = 0;
+      o.paused = true;
+      Served sv(s, o);
+      WsClient c(sv.port());
+      const auto hello = c.read();
+      ASSERT_TRUE(hello);
+      if ((*hello)["tree"].is_object()) sent.push_back(shown_statuses((*hello)["tree"]));
+      c.send(json{{"type", "control"}, {"id", 1}, {"action", "resume"}});
+      ASSERT_TRUE(c.read_until([&sent](const json& m) {
+        if (m["type"] == "tree") sent.push_back(shown_statuses(m));
+        if (m["type"] == "status") sent.push_back(m["s"]);
+        return m["type"] == "state" && m["ended"] == true;
+      }));
+      EXPECT_EQ(sv.episode.wait().success, max_time > 100);
+    }
+    const auto log = read_log(log_path);
+    std::vector<std::pair<double, std::string>> logged;
+    for (const auto& r : log)
+      if (r["ev"] == "statuses") logged.emplace_back(r["t"].get<double>(), r["s"].get<std::string>());
+    ASSERT_FALSE(logged.empty());
+    const std::string final = log.back()["statuses"];
+    // What the page last showed is the end's statuses.
+    EXPECT_EQ(sent.back(), final);
+    EXPECT_EQ(final.find('R'), std::string::npos) << final;
+    if (max_time > 100) {
+      EXPECT_EQ(final.front(), 'S') << "the finished tree keeps its statuses";
+    } else {
+      EXPECT_EQ(final.find_first_not_of('I'), std::string::npos) << "the running tree was halted: " << final;
+      EXPECT_NE(logged.back().second.find('R'), std::string::npos) << "a move ran when the time was up";
+    }
+    // The log's statuses are the ones sent, those of the paused start (t = 0) the page
+    // joined at shown as the latest of them (with hello's tree).
+    const auto changes = [&](const std::vector<std::string>& all) {
+      std::vector<std::string> v;
+      for (const auto& st : all)
+        if (v.empty() || v.back() != st) v.push_back(st);
+      if (v.back() != final) v.push_back(final);
+      return v;
+    };
+    std::vector<std::string> all;
+    std::size_t at_start = 0;  // changes logged at the start's time (before or after the page joined)
+    for (const auto& [t, st] : logged) all.push_back(st);
+    const std::vector<std::string> expected = changes(all);
+    for (const auto& [t, st] : logged) at_start += t <= logged.front().first && (at_start == 0 || st != expected[at_start - 1]);
+    // Whether `got` is the log's changes, less some of those at the start.
+    const auto matches = [&](const std::vector<std::string>& got) {
+      for (std::size_t skip = 0; skip < std::max<std::size_t>(at_start, 1); ++skip)
+        if (got == std::vector<std::string>(expected.begin() + static_cast<long>(skip), expected.end())) return true;
+      return false;
+    };
+    ASSERT_FALSE(sent.empty());
+    EXPECT_TRUE(matches(changes(sent))) << testing::PrintToString(changes(sent)) << " vs the log's "
+                                        << testing::PrintToString(expected);
+
+    // The replay, seeked to times back and forth: hello's tree has the log's statuses then.
+    ReplayOptions ro;
+    ro.speed = 0;
+    ro.paused = true;
+    Replay replay(s, log_path.string(), ro);
+    Server server({"127.0.0.1", 0, ""}, replay);
+    server.start();
+    replay.start();
+    WsClient c(server.port());
+    ASSERT_TRUE(c.read());
+    const auto at = [&](double t) {
+      std::string st;
+      for (const auto& [tt, x] : logged)
+        if (tt <= t + 1e-9) st = x;
+      return t >= log.back()["t"].get<double>() ? final : st;
+    };
+    std::vector<double> times;
+    for (std::size_t i = logged.size(); i-- > 0;) times.push_back(logged[i].first + 1e-3);  // backwards
+    times.push_back(log.back()["t"].get<double>());
+    times.push_back(logged[logged.size() / 2].first);
+    int id = 2;
+    int with_running = 0;
+    for (const double t : times) {
+      c.send(json{{"type", "control"}, {"id", id++}, {"action", "seek"}, {"value", t}});
+      const auto hello = c.read_until([](const json& m) { return m["type"] == "hello"; });
+      ASSERT_TRUE(hello);
+      ASSERT_TRUE((*hello)["tree"].is_object()) << t;
+      EXPECT_EQ(shown_statuses((*hello)["tree"]), at(t)) << "at t = " << t;
+      with_running += at(t).find('R') != std::string::npos;
+    }
+    EXPECT_GT(with_running, 0) << "some time shown has a running node";
+    // Played from the start: the status messages are the log's, in order.
+    c.send(json{{"type", "control"}, {"id", id++}, {"action", "seek"}, {"value", 0}});
+    const auto start = c.read_until([](const json& m) { return m["type"] == "hello"; });
+    ASSERT_TRUE(start);
+    const std::size_t from = c.seen.size();
+    c.send(json{{"type", "control"}, {"id", id++}, {"action", "resume"}});
+    ASSERT_TRUE(c.read_until([](const json& m) { return m["type"] == "state" && m["ended"] == true; }));
+    std::vector<std::string> replayed;
+    if ((*start)["tree"].is_object()) replayed.push_back(shown_statuses((*start)["tree"]));
+    for (std::size_t i = from; i < c.seen.size(); ++i)
+      if (c.seen[i]["type"] == "status" && (replayed.empty() || replayed.back() != c.seen[i]["s"]))
+        replayed.push_back(c.seen[i]["s"]);
+    ASSERT_FALSE(replayed.empty());
+    EXPECT_TRUE(matches(changes(replayed))) << testing::PrintToString(changes(replayed)) << " vs the log's "
+                                            << testing::PrintToString(expected);
+    replay.stop();
+  }
+  fs::remove_all(dir);
+}
+
 // Server::drain, what `rtamp serve --exit-at-end` does before it stops: a page
 // attached from the start has been sent every record of the log, the end
 // included, by the time the server goes (without it, what was still queued
@@ -839,7 +964,7 @@ TEST(ServeServer, DrainDeliversEveryRecordBeforeTheServerStops) {
     }
   EXPECT_TRUE(end);
   std::size_t expect = 0;
-  for (const auto& rec : read_log(log)) expect += rec["ev"] != "frame";
+  for (const auto& rec : read_log(log)) expect += rec["ev"] != "frame" && rec["ev"] != "statuses";
   EXPECT_EQ(records, expect);
   // The tick records (one a step) came in batches: fewer messages than records.
   EXPECT_LT(c.log_messages, static_cast<int>(records - (*hello)["history"].size()));

@@ -83,6 +83,23 @@ export function installTestHook(app) {
       const c = app.camera;
       return { received: c.received, drawn: c.drawn, last: c.last };
     },
+    // The behavior-tree panel as drawn: node count, the statuses shown (one letter a
+    // node, read from the boxes), the running node kept in view, the view (pan, zoom), and
+    // what the last tree's layout and drawing and the last status change cost (ms).
+    get tree() {
+      const t = app.tree;
+      const letters = { idle: 'I', running: 'R', success: 'S', failure: 'F' };
+      return {
+        nodes: t.boxes.length,
+        statuses: t.boxes.map((b) => letters[b.getAttribute('data-status')] ?? '?').join(''),
+        running: t.runningLeaf(),
+        followed: t.followed,
+        view: { ...t.view },
+        size: t.layout ? { width: t.layout.width, height: t.layout.height } : null,
+        buildMs: t.buildMs,
+        statusMs: t.statusMs,
+      };
+    },
     get latencies() {
       return app.latencies;
     },

@@ -18,6 +18,12 @@
 //   replaycontrols  pause, step and speed shown and working in a replay; scrubbing back
 //               while it plays sticks (the frames go on from the time sought); success
 //               and failure in different colours
+//   tree        the behavior tree drawn as a tree: while a later move runs (paused), the
+//               running node's box is inside the panel's view and every box shows the
+//               server's last statuses; a drag of the view moves it, "follow" brings the
+//               running node back; at the end every box shows the final statuses (the
+//               server's, the log's end record's); the log replayed and seeked back and
+//               forth shows the log's statuses at each time sought
 //   screenshot  the scene's layout at t = 0 (paused) against a committed reference PNG,
 //               drawn by the drawing worker (OffscreenCanvas)
 //   fallback    the same picture drawn on the main thread (?render=main), and a drag
@@ -203,14 +209,14 @@ const cases = {
       assert.equal(await page.textContent('#task'), h.task);
       assert.equal(await page.locator('.ba-state').count(), h.automaton.states.length);
       assert.equal(await page.locator('#palette .class-button').count(), h.scene.classes.length);
-      await waitFor(() => page.locator('.bt-node').count(), 'the behavior tree panel');
+      await waitFor(() => page.locator('.bt-box').count(), 'the behavior tree panel');
       const tree = [...ws.received].reverse().find((m) => m.type === 'tree') || h.tree;
-      assert.equal(await page.locator('.bt-node').count(), tree.nodes.length);
+      assert.equal(await page.locator('.bt-box').count(), tree.nodes.length);
       await waitFor(() => page.locator('.plan-step').count(), 'the plan panel');
       const plan = logRecords(ws).filter((r) => r.ev === 'plan').at(-1);
       assert.equal(await page.locator('.plan-step').count(), plan.actions.length);
       const css = await (await fetch(new URL('assets/style.css', page.url()))).text();
-      assert.match(css, /\.bt-node/);
+      assert.match(css, /\.bt-box/);
     });
   },
 
@@ -496,6 +502,130 @@ const cases = {
     // Success and failure are told apart by colour too.
     assert.notEqual(outcomeColours[0], outcomeColours[1], `success and failure both drawn ${outcomeColours[0]}`);
     rmSync(dir, { recursive: true, force: true });
+  },
+
+  async tree() {
+    skipUnlessReady();
+    const dir = scratchDir('tree');
+    const log = join(dir, 'served.jsonl');
+    const letters = (tree) => (tree ? tree.nodes.map((n) => ({ IDLE: 'I', RUNNING: 'R', SUCCESS: 'S', FAILURE: 'F' })[n.status]).join('') : null);
+    // The statuses the server sent last (raw frames: hello's tree, tree, status).
+    const sentStatuses = (ws) => {
+      let s = null;
+      for (const m of ws.received) {
+        if (m.type === 'hello') s = letters(m.tree);
+        if (m.type === 'tree') s = letters(m);
+        if (m.type === 'status') s = m.s;
+      }
+      return s;
+    };
+    const shown = (page) => page.evaluate(() => window.rtamp.tree);
+    // The page shows exactly what the server sent last (the page updates once per animation frame).
+    const showsSent = (page, ws, what) =>
+      waitFor(async () => (await shown(page)).statuses === sentStatuses(ws), what).catch(async (e) => {
+        throw new Error(`${e.message}: page ${(await shown(page)).statuses}, server ${sentStatuses(ws)}`);
+      });
+    // The box of node `id` lies inside the panel's drawing (page pixels, as Playwright measures them).
+    const inView = async (page, id) => {
+      await page.locator('#tree').scrollIntoViewIfNeeded();
+      const view = await page.locator('#tree svg').boundingBox();
+      const box = await page.locator(`#tree .bt-box[data-id="${id}"]`).boundingBox();
+      const ok = box && box.x >= view.x - 0.5 && box.y >= view.y - 0.5 && box.x + box.width <= view.x + view.width + 0.5 && box.y + box.height <= view.y + view.height + 0.5;
+      return { ok, view, box };
+    };
+    const server = await startServer([scenario('3-block-tray'), '--world', 'symbolic', '--no-operator', '--paused', '--speed', '2', '--log', log]);
+    const { context } = await launch();
+    try {
+      const { page, ws, errors } = await openPage(context, server.url);
+      const moves = () => logRecords(ws).filter((r) => r.ev === 'action' && r.what === 'start').length;
+      await page.click('#pause'); // resume
+      // Paused while the fourth move runs (its node is far down the tree, below the first view).
+      await waitFor(() => moves() >= 4, 'the fourth move');
+      let running = -1;
+      for (let tries = 0; tries < 10 && running < 0; tries++) {
+        if (tries > 0) {
+          await page.click('#pause'); // resume a little
+          const n = moves();
+          await waitFor(() => moves() > n, 'another move');
+        }
+        await page.click('#pause');
+        await waitFor(() => ws.received.some((m) => m.type === 'state' && m.paused) && (ws.received.findLast((m) => m.type === 'state')).paused, 'paused');
+        await showsSent(page, ws, 'the page showing the server\'s statuses while paused');
+        running = sentStatuses(ws).lastIndexOf('R');
+      }
+      assert.ok(running >= 0, `no node running while paused: ${sentStatuses(ws)}`);
+      const t = await shown(page);
+      assert.equal(t.nodes, sentStatuses(ws).length);
+      assert.equal(t.running, running);
+      const seen = await inView(page, running);
+      assert.ok(seen.ok, `the running node's box ${JSON.stringify(seen.box)} is outside the panel's view ${JSON.stringify(seen.view)}`);
+      assert.ok(t.size.height > seen.view.height, `the tree (${t.size.height} px) fits the view (${seen.view.height} px): nothing to follow`);
+      assert.ok(t.view.y < 0, `the view was not moved to the running node: ${JSON.stringify(t.view)}`);
+      // The person drags the view: it stays where they put it; "follow" brings the node back.
+      const from = { x: seen.view.x + seen.view.width / 2, y: seen.view.y + 20 };
+      await drag(page, from, { x: from.x, y: from.y + 250 });
+      const moved = await shown(page);
+      assert.ok(Math.abs(moved.view.y - (t.view.y + 250)) < 1, `the view after a drag of 250 px: ${JSON.stringify(moved.view)} (before ${JSON.stringify(t.view)})`);
+      assert.ok(!(await inView(page, running)).ok, 'the drag moved the running node out of view');
+      await page.click('#tree .bt-bar button:nth-child(2)'); // follow
+      assert.ok((await inView(page, running)).ok, '"follow" brought the running node back into view');
+      // To the end: every box shows the final statuses.
+      await page.selectOption('#speed', '8');
+      await page.click('#pause'); // resume
+      await waitFor(() => ws.received.some((m) => m.type === 'state' && m.ended), 'the end', 120000);
+      await showsSent(page, ws, 'the page showing the final statuses');
+      const present = await page.evaluate(() => fetch('/api/hello').then((r) => r.json()));
+      const end = readFileSync(log, 'utf8').trim().split('\n').map((l) => JSON.parse(l)).at(-1);
+      assert.equal(end.ev, 'end');
+      assert.ok(end.success, JSON.stringify(end));
+      const final = (await shown(page)).statuses;
+      assert.equal(final, letters(present.tree), 'the server\'s present tree');
+      assert.equal(final, end.statuses, 'the end record\'s statuses');
+      assert.ok(!final.includes('R') && final[0] === 'S', `final statuses ${final}`);
+      assert.deepEqual(errors, [], 'the page logged errors');
+    } catch (e) {
+      console.error('server stderr:\n' + server.stderr());
+      throw e;
+    } finally {
+      await context.close().catch(() => {});
+      server.proc.kill('SIGTERM');
+    }
+
+    // The replay, seeked back and forth: the statuses the log has at each time sought.
+    const records = readFileSync(log, 'utf8').trim().split('\n').map((l) => JSON.parse(l));
+    const end = records.at(-1);
+    const logged = records.filter((r) => r.ev === 'statuses');
+    const at = (time) => (time >= end.t ? end.statuses : logged.filter((r) => r.t <= time + 1e-9).at(-1)?.s);
+    const withR = logged.filter((r) => r.s.includes('R'));
+    assert.ok(withR.length >= 3, `statuses with a running node in the log: ${withR.length}`);
+    const times = [withR.at(-2).t + 0.01, withR[1].t + 0.01, end.t, withR[0].t + 0.01, withR.at(-1).t + 0.01];
+    const replay = await startServer([scenario('3-block-tray'), '--replay', log, '--paused']);
+    const { context: context2 } = await launch();
+    try {
+      const { page, ws, errors } = await openPage(context2, replay.url);
+      for (const time of times) {
+        const hellos = ws.received.filter((m) => m.type === 'hello').length;
+        await page.evaluate((v) => {
+          const s = document.querySelector('#scrub');
+          s.value = String(v);
+          s.dispatchEvent(new Event('change'));
+        }, time);
+        await waitFor(() => ws.received.filter((m) => m.type === 'hello').length > hellos, `the hello after seeking to ${time}`);
+        await waitFor(async () => (await shown(page)).statuses === at(time), `the log's statuses at ${time}`).catch(async (e) => {
+          throw new Error(`${e.message}: page ${(await shown(page)).statuses}, log ${at(time)}`);
+        });
+        const running = at(time).lastIndexOf('R');
+        if (running >= 0) assert.ok((await inView(page, running)).ok, `the running node at ${time} is in view`);
+      }
+      assert.deepEqual(errors, [], 'the replay page logged errors');
+    } catch (e) {
+      console.error('server stderr:\n' + replay.stderr());
+      throw e;
+    } finally {
+      await context2.close().catch(() => {});
+      replay.proc.kill('SIGTERM');
+      rmSync(dir, { recursive: true, force: true });
+    }
   },
 
   async screenshot() {

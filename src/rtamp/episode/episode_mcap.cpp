@@ -614,6 +614,8 @@ struct EpisodeMcap::Impl : detail::LogScene {  // the scenario, layout, arm and 
       logline(timeline, ns, 2, ev, "cycle " + text_of(j, "completed") + " completed");
     } else if (ev == "frame") {
       draw_frame(ns, j);
+    } else if (ev == "statuses") {
+      // Node statuses of a served episode (for its replay): in /log only.
     } else if (ev == "end") {
       draw_placement(ns, t, j.value("placement", json::object()));
       const bool success = j.value("success", false);

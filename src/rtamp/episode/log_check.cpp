@@ -69,9 +69,15 @@ void numbers(const json& a, const std::string& ev, const char* name, std::size_t
     if (!is_finite_number(x)) bad(ev, name, "must be " + std::to_string(n) + " numbers");
 }
 
+// A status string: one of I R S F a node.
+void node_statuses(const json& s, const std::string& ev, const char* name) {
+  if (s.get<std::string>().find_first_not_of("IRSF") != std::string::npos)
+    bad(ev, name, "must be node statuses (one of I, R, S, F a node)");
+}
+
 const std::set<std::string> kKinds = {"episode", "run",    "plan",   "tree",  "replan", "things",  "intervention",
                                       "perceived", "handled_by_tree", "action", "cycle", "tick", "frame", "camera", "end",
-                                      "task", "redirect"};
+                                      "task", "redirect", "statuses"};
 const std::set<std::string> kBeliefStates = {"visible", "occluded", "held", "out-of-view", "missing"};
 const std::set<std::string> kInterventions = {"relocate",         "add", "remove", "add-container",
                                               "remove-container", "take-from-gripper"};
@@ -223,6 +229,8 @@ void LogCheck::record(const json& j) {
     need(j, ev, "completed", &J::is_number_unsigned, "a count");
   } else if (ev == "tick") {
     need(j, ev, "status", &J::is_string, "a string");
+  } else if (ev == "statuses") {
+    node_statuses(need(j, ev, "s", &J::is_string, "a string"), ev, "s");
   } else if (ev == "frame") {
     const json* q = field(j, "q");
     if (q && !q->is_null()) numbers(*q, ev, "q", 6);
@@ -269,6 +277,7 @@ void LogCheck::record(const json& j) {
   } else if (ev == "end") {
     need(j, ev, "success", &J::is_boolean, "true or false");
     placement(need(j, ev, "placement", &J::is_object, "an object"), "`end` record: \"placement\"", false);
+    if (const json* s = may(j, ev, "statuses", &J::is_string, "a string")) node_statuses(*s, ev, "statuses");
     ended_ = true;
   }
 }

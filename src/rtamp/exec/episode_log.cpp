@@ -235,6 +235,7 @@ void EpisodeLog::on_end(double t, const EpisodeMetrics& m, const world::Placemen
          {"metrics", metrics_json(m)},
          {"placement", placement_json(p)}};
   for (const auto& [key, value] : end_fields_) j[key] = value();
+  for (const auto& [key, value] : end_texts_) j[key] = value();
   if (truth_) j["truth"] = placement_json(truth_());
   write(t, j.dump());
 }

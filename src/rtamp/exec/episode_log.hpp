@@ -55,6 +55,10 @@ class EpisodeLog final : public EpisodeObserver {
   void add_end_field(std::string key, std::function<double()> value) {
     end_fields_.emplace_back(std::move(key), std::move(value));
   }
+  // A text the end record also carries as a JSON string (e.g. the tree's final statuses), read at the end.
+  void add_end_text(std::string key, std::function<std::string()> value) {
+    end_texts_.emplace_back(std::move(key), std::move(value));
+  }
   // Where things truly were at the end, which the end record also carries as `truth`
   // (a simulated world perceived imperfectly: its perceived `placement` may differ).
   void set_truth(std::function<world::Placement()> truth) { truth_ = std::move(truth); }
@@ -87,6 +91,7 @@ class EpisodeLog final : public EpisodeObserver {
   std::string lost_;  // why the file stopped (the first failed write), empty: nothing lost
   std::vector<Sink> sinks_;
   std::vector<std::pair<std::string, std::function<double()>>> end_fields_;
+  std::vector<std::pair<std::string, std::function<std::string()>>> end_texts_;
   std::function<world::Placement()> truth_;
 };
 

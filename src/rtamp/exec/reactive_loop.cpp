@@ -283,8 +283,10 @@ void ReactiveLoop::finish(EndReason why, std::string reason, bool success) {
   } catch (const std::exception&) {  // the episode ends for `why` already
   }
   pending_.reset();
+  // A running tree is halted: a move still running stops (observers see it
+  // before the end). A finished one keeps its statuses (the page shows them).
   try {
-    tree_->tree().halt();  // stop a move still running (observers see it before the end)
+    if (tree_->tree().status() == bt::Status::Running) tree_->tree().halt();
   } catch (const std::exception&) {
   }
   metrics_.tree_changes = tree_->changes();

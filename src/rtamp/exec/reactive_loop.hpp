@@ -65,7 +65,8 @@
 // Invariants: at most one move runs; the tree is ticked only while the world
 // is not busy; observers see every intervention, plan and tree change; on
 // every way out — success, failure, stop() or an exception — on_end is called
-// exactly once with complete metrics.
+// exactly once with complete metrics. At the end a running tree is halted
+// (every node INVALID); a finished one keeps its last tick's statuses.
 #pragma once
 
 #include <atomic>

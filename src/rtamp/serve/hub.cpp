@@ -192,7 +192,8 @@ std::size_t Hub::history_size() const {
   return history_.size();
 }
 
-void Hub::reset(std::vector<std::string> history, std::string tree, std::string frame, const PlaybackState& s) {
+void Hub::reset(std::vector<std::string> history, std::string tree, std::string statuses, std::string frame,
+                const PlaybackState& s) {
   std::lock_guard lock(mu_);
   batch_.clear();  // the new hello has the history
   history_ = std::move(history);
@@ -200,7 +201,7 @@ void Hub::reset(std::vector<std::string> history, std::string tree, std::string 
   for (const auto& r : history_)
     if (auto task = task_members(r)) task_ = std::move(*task);
   tree_ = std::move(tree);
-  statuses_.clear();
+  statuses_ = std::move(statuses);
   frame_ = std::move(frame);
   state_ = s;
   if (clients_.empty()) return;

@@ -83,9 +83,10 @@ class Hub {
   // The playback state: kept (hello's speed, paused, t) and broadcast as `state`.
   void state(const PlaybackState& s);
   PlaybackState state() const;
-  // Replay seek: replaces the history (and so the task in force), tree and frame,
-  // and sends every client a new hello.
-  void reset(std::vector<std::string> history, std::string tree, std::string frame, const PlaybackState& s);
+  // Replay seek: replaces the history (and so the task in force), tree (with
+  // `statuses`, a status string, if not empty) and frame, and sends every client a new hello.
+  void reset(std::vector<std::string> history, std::string tree, std::string statuses, std::string frame,
+             const PlaybackState& s);
   // Number of log records kept.
   std::size_t history_size() const;
   // Messages handed to clients (and replies) not yet written to their sockets

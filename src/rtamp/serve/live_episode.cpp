@@ -22,11 +22,16 @@ using Clock = std::chrono::steady_clock;
 constexpr auto kFrameInterval = std::chrono::microseconds(1000000 / 30);
 constexpr auto kCameraInterval = std::chrono::milliseconds(200);  // at most 5 camera images a wall second
 bool is_frame_record(const std::string& r) { return r.rfind("{\"ev\":\"frame\"", 0) == 0; }
+// Pages get the node statuses as `status` messages, not as these records.
+bool is_statuses_record(const std::string& r) { return r.rfind("{\"ev\":\"statuses\"", 0) == 0; }
 // Tick records (one a loop step) go to pages in batches (Hub::log_record).
 bool is_tick_record(const std::string& r) { return r.rfind("{\"ev\":\"tick\"", 0) == 0; }
 }  // namespace
 
 // The loop's events a page sees besides the log: the tree, statuses, perception (for frames), the end.
+// With a log file, node statuses also go into it (`statuses` records, the end record's
+// "statuses"), so that a replay shows them: after every tick that changed some and
+// after every tree change (a reconfigured tree keeps the statuses of the subtrees it kept).
 class LiveEpisode::Observer final : public exec::EpisodeObserver {
  public:
   explicit Observer(LiveEpisode& e) : e_(e) {}
@@ -45,11 +50,17 @@ class LiveEpisode::Observer final : public exec::EpisodeObserver {
     if (s.size() != nodes_) {
       send_tree(t, tree);
     } else if (s != last_) {
-      e_.hub_->status(t, s);
-      last_ = std::move(s);
+      send_status(t, std::move(s));
     }
   }
-  void on_end(double, const exec::EpisodeMetrics&, const world::Placement&) override {
+  // The statuses the tree ends with (a tree running at the end was halted:
+  // ReactiveLoop::finish), after the end record (which carries them too).
+  void on_end(double t, const exec::EpisodeMetrics&, const world::Placement&) override {
+    std::string s = status_string(e_.episode_->loop().tree().tree());
+    if (s.size() == nodes_ && s != last_) {
+      last_ = s;
+      e_.hub_->status(t, s);
+    }
     e_.ended_.store(true);
     e_.emit_frame(true);
     e_.publish_state();
@@ -60,6 +71,15 @@ class LiveEpisode::Observer final : public exec::EpisodeObserver {
     last_ = status_string(tree);
     nodes_ = last_.size();
     e_.hub_->tree(tree_message(t, tree));
+    log_statuses(t);
+  }
+  void send_status(double t, std::string s) {
+    e_.hub_->status(t, s);
+    last_ = std::move(s);
+    log_statuses(t);
+  }
+  void log_statuses(double t) {
+    if (!e_.own_log_) e_.log_->record(t, "{\"ev\":\"statuses\",\"s\":\"" + last_ + "\"}");
   }
 
   LiveEpisode& e_;
@@ -91,8 +111,10 @@ LiveEpisode::LiveEpisode(const world::Scenario& scenario, LiveOptions options)
     episode_->loop().add_observer(*log_);
   }
   log_->add_sink([this](const std::string& record) {
-    if (!is_frame_record(record)) hub_->log_record(record, !is_tick_record(record));
+    if (!is_frame_record(record) && !is_statuses_record(record)) hub_->log_record(record, !is_tick_record(record));
   });
+  if (!own_log_)
+    log_->add_end_text("statuses", [this] { return status_string(episode_->loop().tree().tree()); });
   if (episode::SimWorld* sw = episode_->sim_world())
     if (sw->session().perception().camera())
       sw->session().perception().add_frame_observer([this](const sim::CameraPerception& f) { camera_frame(f); });

@@ -87,12 +87,17 @@ Replay::Replay(const world::Scenario& scenario, const std::string& path, ReplayO
       last = std::move(p);
     }
     if (auto m = tree.record(j, r.t, last)) r.tree = std::move(*m);
+    r.statuses_only = ev == "statuses";
+    if (ev == "statuses" || ev == "end")
+      if (const auto st = j.find(ev == "end" ? "statuses" : "s"); st != j.end() && st->is_string())
+        r.statuses = st->get<std::string>();
     // The latest frame, placement and tree up to this record (kNone: none yet).
     const std::size_t i = records_.size();
     const Record* before = records_.empty() ? nullptr : &records_.back();
     r.last_frame = r.frame ? i : before ? before->last_frame : kNone;
     r.last_placement = r.placement ? i : before ? before->last_placement : kNone;
     r.last_tree = !r.tree.empty() ? i : before ? before->last_tree : kNone;
+    r.last_statuses = !r.statuses.empty() ? i : before ? before->last_statuses : kNone;
     records_.push_back(std::move(r));
   };
   try {  // the one check of every log reader (episode/log_check.hpp), then each record
@@ -107,7 +112,7 @@ Replay::Replay(const world::Scenario& scenario, const std::string& path, ReplayO
   PlaybackState s;
   s.speed = options.speed;
   s.paused = options.paused;
-  hub_->reset({}, "", frame_at(0), s);
+  hub_->reset({}, "", "", frame_at(0), s);
 }
 
 Replay::~Replay() {
@@ -155,16 +160,21 @@ void Replay::seek_to(double t) {
   std::vector<std::string> history;
   history.reserve(next_);
   for (std::size_t i = 0; i < next_; ++i)
-    if (!records_[i].frame) history.push_back(records_[i].text);
-  // The tree at t: the latest change up to t.
-  std::string tree = next_ > 0 && records_[next_ - 1].last_tree != kNone ? records_[records_[next_ - 1].last_tree].tree : "";
+    if (!records_[i].frame && !records_[i].statuses_only) history.push_back(records_[i].text);
+  // The tree at t: the latest change up to t; its statuses: the latest logged since that change.
+  std::string tree, statuses;
+  if (next_ > 0 && records_[next_ - 1].last_tree != kNone) {
+    const Record& r = records_[next_ - 1];
+    tree = records_[r.last_tree].tree;
+    if (r.last_statuses != kNone && r.last_statuses >= r.last_tree) statuses = records_[r.last_statuses].statuses;
+  }
   ended_.store(next_ >= records_.size());
   PlaybackState s;
   s.speed = playback_.speed();
   s.paused = playback_.paused();
   s.t = t;
   s.ended = ended_.load();
-  hub_->reset(std::move(history), std::move(tree), frame_at(t), s);
+  hub_->reset(std::move(history), std::move(tree), std::move(statuses), frame_at(t), s);
 }
 
 void Replay::run() {
@@ -193,8 +203,10 @@ void Replay::run() {
     t_ = std::max(t_, target);
     bool sent = false;
     while (next_ < records_.size() && records_[next_].t <= t_ + 1e-9) {
-      if (!records_[next_].frame) hub_->log_record(records_[next_].text, false);  // sent with the frame below
-      if (!records_[next_].tree.empty()) hub_->tree(records_[next_].tree);
+      const Record& r = records_[next_];
+      if (!r.frame && !r.statuses_only) hub_->log_record(r.text, false);  // sent with the frame below
+      if (!r.tree.empty()) hub_->tree(r.tree);
+      if (!r.statuses.empty() && r.last_tree != kNone) hub_->status(r.t, r.statuses);
       ++next_;
       sent = true;
     }

@@ -8,12 +8,15 @@
 // ThingLayout) and the arm parked at home.
 //
 // The behavior tree is rebuilt from the log's `plan` and `tree` records
-// (LoggedTree): a `tree` message where the live episode sent one for a plan,
-// its statuses all IDLE (ticks' statuses are not logged). Things added by
+// (LoggedTree): a `tree` message where the live episode sent one for a plan.
+// Its node statuses are the log's `statuses` records (and the `end` record's
+// "statuses"), which `rtamp serve --log` writes, sent as `status` messages; a
+// log without them (`rtamp run`) shows every node IDLE. Things added by
 // interventions have the class their `intervention` record names.
 //
 // seek(t) re-sends every page a hello whose history holds the records with
-// time <= t and whose tree is the tree at t, then the frame at t. The end of the log is the episode's end
+// time <= t and whose tree is the tree at t with the statuses at t (the latest
+// statuses logged at or before t and after that tree's change), then the frame at t. The end of the log is the episode's end
 // state: the last frame shows the placement of the `end` record.
 //
 // Invariants: the log is read and checked whole by the constructor before
@@ -21,7 +24,7 @@
 // the limits or breaking the record schema: episode/log_check.hpp, the check
 // `rtamp log to-mcap` makes too); reading it and
 // every lookup by time are linear or better in the log's size (each record
-// keeps the index of the latest frame, placement and tree up to it); a seek
+// keeps the index of the latest frame, placement, tree and statuses up to it); a seek
 // sticks (playback never resumes from the time before it); the replay never
 // changes; interventions are refused (a replay cannot be changed).
 #pragma once
@@ -69,9 +72,11 @@ class Replay final : public RequestHandler {
     std::string text;
     bool frame = false;
     std::optional<world::Placement> placement;  // perceived / run / end: where things were
+    bool statuses_only = false;                 // a `statuses` record (not sent as a log record)
     std::string tree;                           // the tree message when this record changed the tree
-    // Indices of the latest frame, placement and tree change up to this record (kNone: none).
-    std::size_t last_frame = kNone, last_placement = kNone, last_tree = kNone;
+    std::string statuses;                       // the node statuses it logs (`statuses`, `end`), or ""
+    // Indices of the latest frame, placement, tree change and statuses up to this record (kNone: none).
+    std::size_t last_frame = kNone, last_placement = kNone, last_tree = kNone, last_statuses = kNone;
   };
 
   void run();

@@ -11,7 +11,8 @@
 // Exact: node names, kinds, categories and order are the live tree's (a tree
 // reconfigured online holds one subtree per tuple of the latest applied plan,
 // in plan order, each updated in place to that tuple: what a fresh build of
-// the same tuples is). Not logged, so not shown: statuses (every node IDLE).
+// the same tuples is). Statuses are not rebuilt: the tree message's nodes are
+// IDLE; the replay sends the log's `statuses` records over them (replay.hpp).
 // A log whose `plan` records have no "start" (written before it was logged)
 // gets the latest `run` state before the plan as the start (hand "home"): the
 // same tree whenever the plan started from the observed state.
