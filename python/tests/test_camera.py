@@ -76,7 +76,9 @@ def test_colours_of_classes(tray):
     s.colours = {"cup": (1, 0, 0)}
     with pytest.raises(rtamp.Error, match="unknown class 'cup'"):
         s.validate()
-    s.colours = {"block": (0.56, 0.37, 0.2)}  # the trays' wood
+    s.colours = {"block": (0.56, 0.37, 0.2)}  # the trays' wood: the trays' default colour moves away
+    rtamp.MujocoWorld(s, perception="camera")
+    s.colours = {"block": (0.56, 0.37, 0.2), "tray": (0.57, 0.38, 0.21)}  # two of the user's own alike
     s.validate()  # fine for the truth ...
     with pytest.raises(rtamp.Error, match="look alike to the camera"):
         rtamp.MujocoWorld(s, perception="camera")  # ... not for the camera
